@@ -1,0 +1,148 @@
+/* demill/common.h: export macro, ids, status codes, version and parameter keys.
+ *
+ * This header is part of the stable libdemill API; include <demill.h> rather
+ * than this file directly. All functions are C99-callable, take and return
+ * only fixed-width integers, doubles, pointers and opaque handles, and are
+ * usable unchanged from C++ and through FFI (for example Python ctypes).
+ *
+ * Thread safety: a world and everything it owns may be used by one thread at a
+ * time. Separate worlds share no state and may be used from separate threads
+ * concurrently. Functions that take no world (version, strings, parameter
+ * metadata) are safe to call from any thread at any time.
+ */
+#ifndef DEMILL_COMMON_H
+#define DEMILL_COMMON_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(_WIN32) && !defined(DEMILL_STATIC)
+#  if defined(DEMILL_BUILDING)
+#    define DEMILL_API __declspec(dllexport)
+#  else
+#    define DEMILL_API __declspec(dllimport)
+#  endif
+#elif defined(__GNUC__) || defined(__clang__)
+#  define DEMILL_API __attribute__((visibility("default")))
+#else
+#  define DEMILL_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------------ */
+/** @name Version
+ * The version of the headers a program was compiled with is given by the
+ * macros; the version of the library it runs with by the functions. Within
+ * the 0.x series a minor version may add to the API but never changes or
+ * removes anything; the shared library's SONAME is libdemill.so.0.
+ * @{ */
+#define DEMILL_VERSION_MAJOR 0
+#define DEMILL_VERSION_MINOR 1
+#define DEMILL_VERSION_PATCH 0
+/** MAJOR * 10000 + MINOR * 100 + PATCH, e.g. 100 for 0.1.0. */
+#define DEMILL_VERSION_NUMBER \
+    (DEMILL_VERSION_MAJOR * 10000 + DEMILL_VERSION_MINOR * 100 + DEMILL_VERSION_PATCH)
+#define DEMILL_VERSION_STRING "0.1.0"
+
+/** The version number of the library at run time (same encoding as
+ *  DEMILL_VERSION_NUMBER). */
+DEMILL_API uint32_t demill_version_number(void);
+
+/** The version of the library at run time as "MAJOR.MINOR.PATCH". The string
+ *  is static. */
+DEMILL_API const char *demill_version_string(void);
+
+/** Checks that the running library can serve a program compiled against
+ *  headers of version `header_version` (pass DEMILL_VERSION_NUMBER).
+ *  @return DEMILL_OK if the major versions match and the library is at least
+ *          as new as the headers; DEMILL_ERR_VERSION otherwise. */
+DEMILL_API int32_t demill_check_version(uint32_t header_version);
+/** @} */
+
+/* ------------------------------------------------------------------------ */
+/** @name Status codes
+ * Every fallible function returns one of these. Codes never change meaning
+ * and are never renumbered. A function that fails leaves the world exactly as
+ * it was before the call (the one exception, documented at
+ * demill_world_step(), is a failure in the middle of a multi-step run). The
+ * world's last-error message (demill_world_last_error()) says what was wrong.
+ * @{ */
+typedef int32_t demill_status;
+enum {
+    DEMILL_OK = 0,
+    DEMILL_ERR_NULL_POINTER = 1,     /**< a required pointer argument is NULL */
+    DEMILL_ERR_INVALID_VALUE = 2,    /**< a value is out of its allowed range */
+    DEMILL_ERR_NOT_FINITE = 3,       /**< a value is NaN or infinite */
+    DEMILL_ERR_UNKNOWN_KEY = 4,      /**< unknown parameter key, field or enum value */
+    DEMILL_ERR_INVALID_HANDLE = 5,   /**< id removed, of another world or of the wrong kind; or not a world */
+    DEMILL_ERR_NO_CONTACT_MODEL = 6, /**< two materials that may touch have no contact model */
+    DEMILL_ERR_OVERLAP = 7,          /**< inserted particles overlap and the caller asked for none */
+    DEMILL_ERR_OUT_OF_MEMORY = 8,    /**< an allocation failed */
+    DEMILL_ERR_BUFFER_TOO_SMALL = 9, /**< the caller's buffer holds fewer items than needed */
+    DEMILL_ERR_READ_ONLY = 10,       /**< the parameter or field can be read but not written */
+    DEMILL_ERR_DIMENSION = 11,       /**< the value is not allowed in a world of this dimension */
+    DEMILL_ERR_VERSION = 12          /**< the library is not compatible with the headers */
+};
+
+/** A static, generic description of a status code ("invalid value", ...).
+ *  Never NULL; unknown codes give "unknown status code". */
+DEMILL_API const char *demill_strerror(demill_status code);
+/** @} */
+
+/* ------------------------------------------------------------------------ */
+/** @name Ids
+ * Materials, particles and walls are named by 64-bit ids. An id encodes the
+ * kind of object, the world it belongs to and a generation counter, so an id
+ * of a removed object, of another world or of the wrong kind is rejected with
+ * DEMILL_ERR_INVALID_HANDLE instead of touching the wrong object.
+ * DEMILL_ID_NONE (0) is never a valid id.
+ * @{ */
+typedef uint64_t demill_id;
+#define DEMILL_ID_NONE ((demill_id)0)
+
+/** The kind of object an id names (see demill_id_kind()). */
+enum {
+    DEMILL_KIND_NONE = 0,
+    DEMILL_KIND_MATERIAL = 1,
+    DEMILL_KIND_PARTICLE = 2,
+    DEMILL_KIND_WALL = 3
+};
+
+/** The kind encoded in an id (DEMILL_KIND_*), without checking that the
+ *  object still exists. */
+DEMILL_API int32_t demill_id_kind(demill_id id);
+/** @} */
+
+/* ------------------------------------------------------------------------ */
+/** @name Parameters
+ * Worlds, materials and material pairs are configured through numeric keys
+ * with one value type, double. Keys whose value is a choice (an enum) or a
+ * switch take whole numbers. Keys are grouped: 1xx world, 2xx material,
+ * 3xx material pair. New keys are added over time; existing ones never change
+ * meaning. The functions below describe a key without needing a world.
+ * @{ */
+
+/** The key's name, e.g. "world.time_step", or NULL for an unknown key. */
+DEMILL_API const char *demill_param_name(int32_t key);
+
+/** The unit of the key's value in SI, e.g. "s", "Pa", "1" (dimensionless),
+ *  "enum" or "bool", or NULL for an unknown key. */
+DEMILL_API const char *demill_param_unit(int32_t key);
+
+/** The allowed range [*lo, *hi] of a key and its default (for keys whose
+ *  default is derived from materials, the value used for an identical pair of
+ *  default materials). Any output pointer may be NULL.
+ *  Open bounds are reported as the nearest representable value inside them.
+ *  @return DEMILL_OK or DEMILL_ERR_UNKNOWN_KEY. */
+DEMILL_API demill_status demill_param_bounds(int32_t key, double *lo, double *hi,
+                                             double *default_value);
+/** @} */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DEMILL_COMMON_H */

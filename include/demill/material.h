@@ -1,0 +1,161 @@
+/* demill/material.h: materials and the contact model of each material pair. */
+#ifndef DEMILL_MATERIAL_H
+#define DEMILL_MATERIAL_H
+
+#include "world.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Material parameter keys (demill_material_set(), demill_material_get()). */
+enum {
+    /** Density ρ in kg/m³, > 0. Default 2500. */
+    DEMILL_MATERIAL_DENSITY = 200,
+    /** Young's modulus E in Pa, > 0, used by Hertz and Mindlin laws.
+     *  Default 1e8. */
+    DEMILL_MATERIAL_YOUNGS_MODULUS = 201,
+    /** Poisson ratio ν, in [0, 0.5). Default 0.3. */
+    DEMILL_MATERIAL_POISSON_RATIO = 202,
+    /** Spring stiffness k in N/m, > 0, used by linear laws; a pair's normal
+     *  stiffness is the series value k_a k_b / (k_a + k_b). Default 1e5. */
+    DEMILL_MATERIAL_STIFFNESS = 203,
+    /** Coefficient of restitution e, in (0, 1]. Default 0.5. */
+    DEMILL_MATERIAL_RESTITUTION = 204,
+    /** Sliding friction coefficient μ, >= 0. Default 0.5. */
+    DEMILL_MATERIAL_FRICTION = 205,
+    /** Rolling friction coefficient μ_r (dimensionless: the resisting torque
+     *  is μ_r R* |F_n|), >= 0. Default 0. */
+    DEMILL_MATERIAL_ROLLING_FRICTION = 206
+};
+
+/** Normal force laws, the values of DEMILL_PAIR_NORMAL. */
+enum {
+    /** No model: the pair may not touch (the default for every pair). */
+    DEMILL_NORMAL_NONE = 0,
+    /** Linear spring F = k_n δ (PHYSICS.md §2). */
+    DEMILL_NORMAL_LINEAR = 1,
+    /** Hertz F = 4/3 E* √R* δ^{3/2} (PHYSICS.md §2). */
+    DEMILL_NORMAL_HERTZ = 2
+};
+
+/** Normal damping laws, the values of DEMILL_PAIR_DAMPING. */
+enum {
+    /** No damping (default). */
+    DEMILL_DAMPING_NONE = 0,
+    /** Constant viscous damping F_d = -c_n v_n, c_n from
+     *  DEMILL_PAIR_VISCOUS_DAMPING. */
+    DEMILL_DAMPING_VISCOUS = 1,
+    /** Damping from the coefficient of restitution. Linear law: critical
+     *  damping ratio ξ, c_n = 2 ξ √(m* k_n). Hertz: the nonlinear Tsuji form
+     *  c_n = 2 √(5/6) ξ √(m* S_n), S_n = 2 E* √(R* δ). ξ is chosen so that
+     *  an isolated binary collision rebounds with exactly the pair's
+     *  restitution, with or without DEMILL_PAIR_CLAMP_NORMAL. */
+    DEMILL_DAMPING_RESTITUTION = 2
+};
+
+/** Tangential laws, the values of DEMILL_PAIR_TANGENTIAL. */
+enum {
+    /** Frictionless (default). */
+    DEMILL_TANGENTIAL_NONE = 0,
+    /** Regularised dynamic Coulomb friction (seed 000 eq. 8):
+     *  F_t = -min(μ |F_n|, γ_t |v_t|) v_t/|v_t|, γ_t from
+     *  DEMILL_PAIR_COULOMB_REGULARISATION. No history. */
+    DEMILL_TANGENTIAL_COULOMB = 1,
+    /** Spring-slider with history, linear spring: k_t = ratio × k_n where k_n
+     *  is the pair's linear stiffness (DEMILL_PAIR_NORMAL_STIFFNESS) and ratio
+     *  is DEMILL_PAIR_TANGENTIAL_STIFFNESS_RATIO. */
+    DEMILL_TANGENTIAL_SPRING = 2,
+    /** Spring-slider with history, Mindlin stiffness k_t = 8 G* √(R* δ). */
+    DEMILL_TANGENTIAL_MINDLIN = 3
+};
+
+/** Rolling resistance laws, the values of DEMILL_PAIR_ROLLING. */
+enum {
+    /** No rolling resistance (default). */
+    DEMILL_ROLLING_NONE = 0,
+    /** Constant torque (seed 000 eq. 11): M_r = -min(μ_r R* |F_n|, γ_r |ω_rel|)
+     *  ω_rel/|ω_rel| with ω_rel = ω_a - ω_b; γ_r from
+     *  DEMILL_PAIR_ROLLING_REGULARISATION. */
+    DEMILL_ROLLING_CONSTANT_TORQUE = 1
+};
+
+/** Material pair parameter keys (demill_pair_set(), demill_pair_get()).
+ *  The four law keys choose the contact model; the others tune it. Keys
+ *  marked "derived" take their value from the two materials until set for
+ *  the pair. */
+enum {
+    DEMILL_PAIR_NORMAL = 300,      /**< DEMILL_NORMAL_*; a pair with NONE may not touch */
+    DEMILL_PAIR_DAMPING = 301,     /**< DEMILL_DAMPING_* */
+    DEMILL_PAIR_TANGENTIAL = 302,  /**< DEMILL_TANGENTIAL_* */
+    DEMILL_PAIR_ROLLING = 303,     /**< DEMILL_ROLLING_* */
+    /** Restitution in (0, 1]; derived: mean of the two materials'. */
+    DEMILL_PAIR_RESTITUTION = 310,
+    /** Sliding friction μ >= 0; derived: mean of the two materials'. */
+    DEMILL_PAIR_FRICTION = 311,
+    /** Rolling friction μ_r >= 0; derived: mean of the two materials'. */
+    DEMILL_PAIR_ROLLING_FRICTION = 312,
+    /** Linear normal stiffness k_n in N/m; derived: k_a k_b / (k_a + k_b). */
+    DEMILL_PAIR_NORMAL_STIFFNESS = 313,
+    /** Viscous damping coefficient c_n in N s/m for DEMILL_DAMPING_VISCOUS,
+     *  >= 0. Default 0. */
+    DEMILL_PAIR_VISCOUS_DAMPING = 314,
+    /** k_t / k_n for DEMILL_TANGENTIAL_SPRING, > 0. Default 2/7. */
+    DEMILL_PAIR_TANGENTIAL_STIFFNESS_RATIO = 315,
+    /** Factor on the tangential dashpot of the spring-slider laws, >= 0.
+     *  The dashpot c_t follows the normal damping law with k_t in place of
+     *  the normal stiffness (viscous: c_t = factor × c_n). Default 1. */
+    DEMILL_PAIR_TANGENTIAL_DAMPING_FACTOR = 316,
+    /** Factor on the regularisation of DEMILL_TANGENTIAL_COULOMB, > 0:
+     *  γ_t = factor × 2 √(m* S_n), S_n the normal contact stiffness (k_n, or
+     *  2 E* √(R* δ) for Hertz). Default 1. */
+    DEMILL_PAIR_COULOMB_REGULARISATION = 317,
+    /** Factor on the regularisation of DEMILL_ROLLING_CONSTANT_TORQUE, > 0:
+     *  γ_r = factor × 2 R*² √(m* S_n). Default 1. */
+    DEMILL_PAIR_ROLLING_REGULARISATION = 318,
+    /** 1 (default): the normal force never pulls (F_n >= 0). 0: the damped
+     *  normal force may become slightly attractive at the end of a contact,
+     *  as in LIGGGHTS without limitForce. */
+    DEMILL_PAIR_CLAMP_NORMAL = 319
+};
+
+/** Creates a material with default parameters (see the DEMILL_MATERIAL_*
+ *  keys) and writes its id to *out.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_INVALID_VALUE (too many materials: 256 at most) or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_material_create(demill_world *world, demill_id *out);
+
+/** Sets a material parameter. Changing a material while particles of it
+ *  exist recomputes their masses (density) and the contact constants.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_NOT_FINITE or DEMILL_ERR_INVALID_VALUE. */
+DEMILL_API demill_status demill_material_set(demill_world *world, demill_id material,
+                                             int32_t key, double value);
+
+/** Reads a material parameter into *value.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER or
+ *          DEMILL_ERR_UNKNOWN_KEY. */
+DEMILL_API demill_status demill_material_get(const demill_world *world, demill_id material,
+                                             int32_t key, double *value);
+
+/** Sets a parameter of the contact between materials a and b (a may equal
+ *  b; the order does not matter). Setting a law key chooses that part of the
+ *  model; setting a derived key overrides the value taken from the
+ *  materials.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_NOT_FINITE or DEMILL_ERR_INVALID_VALUE. */
+DEMILL_API demill_status demill_pair_set(demill_world *world, demill_id a, demill_id b,
+                                         int32_t key, double value);
+
+/** Reads the effective value of a pair parameter (derived or set).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER or
+ *          DEMILL_ERR_UNKNOWN_KEY. */
+DEMILL_API demill_status demill_pair_get(const demill_world *world, demill_id a, demill_id b,
+                                         int32_t key, double *value);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DEMILL_MATERIAL_H */

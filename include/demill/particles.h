@@ -1,0 +1,117 @@
+/* demill/particles.h: adding, removing, reading and writing particles.
+ *
+ * Bulk functions move whole fields in and out as flat, caller-owned arrays of
+ * doubles: a vector field takes 3 doubles per particle (x, y, z; in a 2D
+ * world z is 0, and angular velocity has only its z component), a scalar
+ * field 1. Bulk reads and writes use "id order": the order in which
+ * demill_particles_read_ids() lists the particles. That order changes only
+ * when particles are added or removed.
+ */
+#ifndef DEMILL_PARTICLES_H
+#define DEMILL_PARTICLES_H
+
+#include "world.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Particle fields. */
+enum {
+    DEMILL_PARTICLE_POSITION = 1,         /**< 3 doubles, m; read/write */
+    DEMILL_PARTICLE_VELOCITY = 2,         /**< 3 doubles, m/s; read/write */
+    DEMILL_PARTICLE_ANGULAR_VELOCITY = 3, /**< 3 doubles, rad/s; read/write (2D: x = y = 0) */
+    DEMILL_PARTICLE_RADIUS = 4,           /**< 1 double, m, > 0; read/write (mass follows) */
+    DEMILL_PARTICLE_MASS = 5,             /**< 1 double, kg; read-only */
+    DEMILL_PARTICLE_FORCE = 6,            /**< 3 doubles, N: total force (contacts and gravity) at the last force evaluation; read-only */
+    DEMILL_PARTICLE_TORQUE = 7,           /**< 3 doubles, N m: total torque at the last force evaluation; read-only */
+    DEMILL_PARTICLE_ANGLE = 8             /**< 1 double, rad: 2D worlds only, rotation angle θ about z; read/write */
+};
+
+/** Id fields, for demill_particles_read_ids(). */
+enum {
+    DEMILL_PARTICLE_ID = 100,       /**< the particle's own id */
+    DEMILL_PARTICLE_MATERIAL = 101  /**< the id of the particle's material */
+};
+
+/** Flags for demill_particles_add(). */
+enum {
+    /** Reject the whole batch with DEMILL_ERR_OVERLAP if any new particle
+     *  overlaps an existing particle, another new particle or a wall. */
+    DEMILL_ADD_NO_OVERLAP = 1u
+};
+
+/** The number of doubles per particle of a field (1 or 3), or 0 for an
+ *  unknown field. */
+DEMILL_API int32_t demill_particle_field_size(int32_t field);
+
+/** Adds n particles of one material.
+ *  @param material   the particles' material.
+ *  @param n          number of particles (0 is allowed and does nothing).
+ *  @param positions  3n doubles: centres in m.
+ *  @param radii      n doubles: radii in m, > 0.
+ *  @param velocities 3n doubles in m/s, or NULL for rest.
+ *  @param flags      0 or DEMILL_ADD_NO_OVERLAP.
+ *  @param ids        n ids written on success, or NULL.
+ *  In a 2D world z components must be 0.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE,
+ *          DEMILL_ERR_DIMENSION, DEMILL_ERR_OVERLAP or
+ *          DEMILL_ERR_OUT_OF_MEMORY. On failure no particle is added and the
+ *          message names the first offending particle by its index in the
+ *          batch. */
+DEMILL_API demill_status demill_particles_add(demill_world *world, demill_id material, size_t n,
+                                              const double *positions, const double *radii,
+                                              const double *velocities, uint32_t flags,
+                                              demill_id *ids);
+
+/** Removes n particles. Their ids become invalid; contacts with them end.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (nothing removed; the
+ *          message names the first bad id), DEMILL_ERR_INVALID_VALUE (an id
+ *          listed twice) or DEMILL_ERR_NULL_POINTER. */
+DEMILL_API demill_status demill_particles_remove(demill_world *world, size_t n,
+                                                 const demill_id *ids);
+
+/** Reads a field of every particle, in id order, into out.
+ *  @param out      capacity × field size doubles, or NULL to ask the count.
+ *  @param capacity number of particles out can hold.
+ *  @param count    receives the number of particles (may be NULL if out is
+ *                  not).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_NULL_POINTER or DEMILL_ERR_BUFFER_TOO_SMALL (nothing
+ *          written, *count set). */
+DEMILL_API demill_status demill_particles_read(const demill_world *world, int32_t field,
+                                               double *out, size_t capacity, size_t *count);
+
+/** Reads ids (DEMILL_PARTICLE_ID) or material ids (DEMILL_PARTICLE_MATERIAL)
+ *  of every particle, in id order. Arguments as for demill_particles_read(). */
+DEMILL_API demill_status demill_particles_read_ids(const demill_world *world, int32_t field,
+                                                   demill_id *out, size_t capacity,
+                                                   size_t *count);
+
+/** Writes a field of every particle, in id order. n must equal the number of
+ *  particles. Values are checked first; on failure nothing is written and the
+ *  message names the first bad particle by its position in id order.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE or
+ *          DEMILL_ERR_DIMENSION. */
+DEMILL_API demill_status demill_particles_write(demill_world *world, int32_t field,
+                                                const double *in, size_t n);
+
+/** Reads one particle's field into out (1 or 3 doubles).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY or
+ *          DEMILL_ERR_NULL_POINTER. */
+DEMILL_API demill_status demill_particle_get(const demill_world *world, demill_id particle,
+                                             int32_t field, double *out);
+
+/** Writes one particle's field from in (1 or 3 doubles). Errors as for
+ *  demill_particles_write(). */
+DEMILL_API demill_status demill_particle_set(demill_world *world, demill_id particle,
+                                             int32_t field, const double *in);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DEMILL_PARTICLES_H */

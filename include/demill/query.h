@@ -1,0 +1,78 @@
+/* demill/query.h: contacts and the energy account of a world. */
+#ifndef DEMILL_QUERY_H
+#define DEMILL_QUERY_H
+
+#include "world.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Contact fields, read with demill_contacts_read(). Every contact has a
+ *  first body a (always a particle) and a second body b (a particle or a
+ *  wall); forces and torques are those b exerts on a. */
+enum {
+    DEMILL_CONTACT_POINT = 1,            /**< 3 doubles: contact point, m */
+    DEMILL_CONTACT_NORMAL = 2,           /**< 3 doubles: unit normal from a towards b */
+    DEMILL_CONTACT_OVERLAP = 3,          /**< 1 double: overlap δ > 0, m */
+    DEMILL_CONTACT_NORMAL_FORCE = 4,     /**< 3 doubles: normal force on a (elastic + damping), N */
+    DEMILL_CONTACT_TANGENTIAL_FORCE = 5, /**< 3 doubles: tangential (friction) force on a, N */
+    DEMILL_CONTACT_ROLLING_TORQUE = 6    /**< 3 doubles: rolling-resistance torque on a, N m */
+};
+
+/** The number of doubles per contact of a contact field (1 or 3), or 0 for an
+ *  unknown field. */
+DEMILL_API int32_t demill_contact_field_size(int32_t field);
+
+/** Reads a field of every contact (overlap > 0) at the current state:
+ *  particle-particle contacts first, then particle-wall contacts, in an
+ *  order that stays the same between calls as long as the world is not
+ *  stepped or changed. Forces are evaluated from the current positions,
+ *  velocities and contact history without changing anything.
+ *  @param out      capacity × field size doubles, or NULL to ask the count.
+ *  @param capacity number of contacts out can hold.
+ *  @param count    receives the number of contacts.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NO_CONTACT_MODEL or
+ *          DEMILL_ERR_BUFFER_TOO_SMALL (nothing written, *count set). */
+DEMILL_API demill_status demill_contacts_read(demill_world *world, int32_t field, double *out,
+                                              size_t capacity, size_t *count);
+
+/** Reads the ids of both bodies of every contact, in the order of
+ *  demill_contacts_read(). a or b may be NULL to skip it. Errors as for
+ *  demill_contacts_read(). */
+DEMILL_API demill_status demill_contacts_read_ids(demill_world *world, demill_id *a,
+                                                  demill_id *b, size_t capacity, size_t *count);
+
+/** Energy terms, read with demill_world_energy(), all in J. The dissipated
+ *  terms and the wall work are running totals since the world was created
+ *  (tallied only while DEMILL_WORLD_ENERGY_TRACKING is on); the others
+ *  describe the current state. */
+enum {
+    DEMILL_ENERGY_KINETIC_TRANSLATIONAL = 1, /**< Σ 1/2 m v² */
+    DEMILL_ENERGY_KINETIC_ROTATIONAL = 2,    /**< Σ 1/2 I ω² */
+    DEMILL_ENERGY_POTENTIAL = 3,             /**< gravitational, -Σ m g·x (zero at the origin) */
+    DEMILL_ENERGY_ELASTIC_NORMAL = 4,        /**< stored in normal springs: k δ²/2 or 8/15 E* √R* δ^{5/2} */
+    DEMILL_ENERGY_ELASTIC_TANGENTIAL = 5,    /**< stored in tangential springs: k_t |ξ|²/2 */
+    DEMILL_ENERGY_WALL_WORK = 6,             /**< work done on the particles by moving walls */
+    DEMILL_ENERGY_DISSIPATED_NORMAL = 7,     /**< by normal damping (and by the normal-force clamp) */
+    DEMILL_ENERGY_DISSIPATED_TANGENTIAL = 8, /**< by the tangential dashpot and the Coulomb regularisation below the cap */
+    DEMILL_ENERGY_DISSIPATED_FRICTION = 9,   /**< by sliding friction (slip at the Coulomb cap) */
+    DEMILL_ENERGY_DISSIPATED_ROLLING = 10,   /**< by rolling resistance */
+    DEMILL_ENERGY_DISSIPATED = 11,           /**< sum of terms 7 to 10 */
+    /** Balance: kinetic + potential + elastic + dissipated - wall work. It
+     *  stays constant up to integration error between changes made through
+     *  the API (adding, removing or writing particles). */
+    DEMILL_ENERGY_TOTAL = 12
+};
+
+/** Reads one energy term (DEMILL_ENERGY_*) into *value.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_NULL_POINTER or DEMILL_ERR_NO_CONTACT_MODEL. */
+DEMILL_API demill_status demill_world_energy(demill_world *world, int32_t term, double *value);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DEMILL_QUERY_H */

@@ -1,0 +1,386 @@
+/* nlist.c: the neighbour build (PHYSICS.md §9). Particles are sorted by cell
+ * of a uniform grid, then every pair closer than the sum of radii plus the
+ * skin is listed once (i < j in storage order) in the bucket of its contact
+ * kernel, with the history of contacts that were already touching carried
+ * over. Cost O(N); the lists stay valid until some particle has moved half
+ * the skin (or a wall has moved so far that a gap could close). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../core/internal.h"
+
+static int grow(void **p, size_t elem, uint32_t *cap, uint64_t need)
+{
+    if (need <= *cap)
+        return 0;
+    uint64_t c = *cap ? *cap : 256;
+    while (c < need)
+        c *= 2;
+    if (c > UINT32_MAX)
+        return -1;
+    void *q = realloc(*p, (size_t)c * elem);
+    if (!q)
+        return -1;
+    *p = q;
+    *cap = (uint32_t)c;
+    return 0;
+}
+
+static int bucket_push(dm_bucket *b, uint32_t i, uint32_t j)
+{
+    if (b->n == b->cap) {
+        uint32_t cap = b->cap;
+        uint32_t cap_i = cap, cap_j = cap;
+        if (grow((void **)&b->i, sizeof *b->i, &cap_i, (uint64_t)b->n + 1) ||
+            grow((void **)&b->j, sizeof *b->j, &cap_j, (uint64_t)b->n + 1))
+            return -1;
+        if (b->hs) {
+            void *h = realloc(b->hist, (size_t)cap_i * b->hs * sizeof *b->hist);
+            if (!h)
+                return -1;
+            b->hist = h;
+        }
+        b->cap = cap_i;
+    }
+    b->i[b->n] = i;
+    b->j[b->n] = j;
+    for (int c = 0; c < b->hs; c++)
+        b->hist[(size_t)b->hs * b->n + c] = 0.0;
+    b->n++;
+    return 0;
+}
+
+static void clist_empty(dm_clist *l, int dim)
+{
+    for (int k = 0; k < DM_KERNELS; k++) {
+        l->b[k].kernel = k;
+        l->b[k].hs = dm_kernel_hist_size(k, dim);
+        l->b[k].n = 0;
+    }
+}
+
+void dm_clist_clear(demill_world *w)
+{
+    clist_empty(&w->pp, w->dim);
+    clist_empty(&w->pw, w->dim);
+}
+
+void dm_clist_drop_wall(demill_world *w, uint32_t wall_slot)
+{
+    for (int k = 0; k < DM_KERNELS; k++) {
+        dm_bucket *b = &w->pw.b[k];
+        uint32_t m = 0;
+        for (uint32_t p = 0; p < b->n; p++) {
+            if (b->j[p] == wall_slot)
+                continue;
+            b->i[m] = b->i[p];
+            b->j[m] = b->j[p];
+            memmove(b->hist + (size_t)b->hs * m, b->hist + (size_t)b->hs * p,
+                    (size_t)b->hs * sizeof *b->hist);
+            m++;
+        }
+        b->n = m;
+    }
+}
+
+static void clist_free(dm_clist *l)
+{
+    for (int k = 0; k < DM_KERNELS; k++) {
+        free(l->b[k].i);
+        free(l->b[k].j);
+        free(l->b[k].hist);
+    }
+}
+
+void dm_nlist_free(demill_world *w)
+{
+    dm_grid *g = &w->grid;
+    clist_free(&w->pp);
+    clist_free(&w->pw);
+    free(g->cell_start);
+    free(g->cell_of);
+    free(g->order);
+    free(g->inv);
+    free(g->row);
+    free(g->scratch);
+    free(g->ci);
+    free(g->cj);
+    free(g->ck);
+    free(g->ch);
+    free(w->wg.nrm);
+    free(w->wg.delta);
+    free(w->wg.vw);
+    free(w->wg.cp);
+}
+
+/* Sizes the per-particle scratch for n particles. */
+int dm_grid_reserve(dm_grid *g, uint32_t n)
+{
+    if (n + 1 <= g->cap)
+        return 0;
+    uint32_t cap = g->cap ? g->cap : 256;
+    while (cap < n + 1)
+        cap *= 2;
+    uint32_t **arrays[] = {&g->cell_of, &g->order, &g->inv, &g->row};
+    for (size_t a = 0; a < sizeof arrays / sizeof arrays[0]; a++) {
+        uint32_t *q = realloc(*arrays[a], (size_t)cap * sizeof *q);
+        if (!q)
+            return -1;
+        *arrays[a] = q;
+    }
+    double *sc = realloc(g->scratch, (size_t)cap * 3 * sizeof *sc);
+    if (!sc)
+        return -1;
+    g->scratch = sc;
+    g->cap = cap;
+    return 0;
+}
+
+/* Remembers every contact with a non-zero history, in storage indices. */
+static int carry_collect(demill_world *w)
+{
+    dm_grid *g = &w->grid;
+    g->nc = 0;
+    for (int side = 0; side < 2; side++) {
+        const dm_clist *l = side ? &w->pw : &w->pp;
+        for (int k = 0; k < DM_KERNELS; k++) {
+            const dm_bucket *b = &l->b[k];
+            for (uint32_t p = 0; b->hs && p < b->n; p++) {
+                const double *h = b->hist + (size_t)b->hs * p;
+                int any = 0;
+                for (int c = 0; c < b->hs; c++)
+                    any |= h[c] != 0.0;
+                if (!any)
+                    continue;
+                if (g->nc == g->ccap) {
+                    uint32_t cap = g->ccap, c1 = cap, c2 = cap, c3 = cap;
+                    uint64_t need = (uint64_t)g->nc + 1;
+                    if (grow((void **)&g->ci, sizeof *g->ci, &c1, need) ||
+                        grow((void **)&g->cj, sizeof *g->cj, &c2, need) ||
+                        grow((void **)&g->ck, sizeof *g->ck, &c3, need))
+                        return -1;
+                    double *ch = realloc(g->ch, (size_t)c1 * 3 * sizeof *ch);
+                    if (!ch)
+                        return -1;
+                    g->ch = ch;
+                    g->ccap = c1;
+                }
+                g->ci[g->nc] = b->i[p];
+                g->cj[g->nc] = b->j[p];
+                g->ck[g->nc] = (uint16_t)(k + side * DM_KERNELS);
+                memcpy(g->ch + 3 * (size_t)g->nc, h, (size_t)b->hs * sizeof *h);
+                g->nc++;
+            }
+        }
+    }
+    return 0;
+}
+
+/* Puts carried histories back into the new lists. Pairs are listed in
+ * increasing i, so a row index finds (i, j) among i's few pairs. */
+static void carry_restore(demill_world *w)
+{
+    dm_grid *g = &w->grid;
+    const uint32_t n = w->p.n;
+    for (int side = 0; side < 2; side++) {
+        dm_clist *l = side ? &w->pw : &w->pp;
+        for (int k = 0; k < DM_KERNELS; k++) {
+            dm_bucket *b = &l->b[k];
+            if (!b->hs || !b->n)
+                continue;
+            uint16_t key = (uint16_t)(k + side * DM_KERNELS);
+            int have = 0;
+            for (uint32_t c = 0; c < g->nc && !have; c++)
+                have = g->ck[c] == key;
+            if (!have)
+                continue;
+            uint32_t p = 0;
+            for (uint32_t i = 0; i <= n; i++) {
+                g->row[i] = p;
+                while (p < b->n && b->i[p] == i)
+                    p++;
+            }
+            for (uint32_t c = 0; c < g->nc; c++) {
+                if (g->ck[c] != key)
+                    continue;
+                uint32_t i = g->inv[g->ci[c]], j = side ? g->cj[c] : g->inv[g->cj[c]];
+                double sign = 1.0;
+                if (!side && i > j) {
+                    uint32_t t = i;
+                    i = j;
+                    j = t;
+                    sign = w->dim == 3 ? -1.0 : 1.0; /* 2D: the scalar keeps its sign */
+                }
+                for (uint32_t q = g->row[i]; q < g->row[i + 1]; q++)
+                    if (b->j[q] == j) {
+                        for (int d = 0; d < b->hs; d++)
+                            b->hist[(size_t)b->hs * q + d] = sign * g->ch[3 * (size_t)c + d];
+                        break;
+                    }
+            }
+        }
+    }
+}
+
+/* Forward half of the 3x3(x3) stencil: offsets with a positive linear index. */
+static const int stencil3[13][3] = {
+    {1, 0, 0}, {-1, 1, 0}, {0, 1, 0}, {1, 1, 0}, {-1, -1, 1}, {0, -1, 1}, {1, -1, 1},
+    {-1, 0, 1}, {0, 0, 1}, {1, 0, 1}, {-1, 1, 1}, {0, 1, 1}, {1, 1, 1}};
+
+demill_status dm_nlist_build(demill_world *w)
+{
+    const int D = w->dim;
+    dm_particles *P = &w->p;
+    dm_grid *g = &w->grid;
+    const uint32_t n = P->n;
+
+    if (dm_grid_reserve(g, n))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory building neighbour lists");
+    if (carry_collect(w))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory building neighbour lists");
+
+    /* grid over the bounding box; cells at least as large as the largest
+     * interaction distance, and not many more cells than particles */
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, rmax = 0.0;
+    for (uint32_t i = 0; i < n; i++) {
+        for (int c = 0; c < D; c++) {
+            double xc = P->x[D * i + c];
+            if (i == 0 || xc < lo[c])
+                lo[c] = xc;
+            if (i == 0 || xc > hi[c])
+                hi[c] = xc;
+        }
+        if (P->r[i] > rmax)
+            rmax = P->r[i];
+    }
+    w->skin = w->skin_fraction * rmax;
+    double h = 2.0 * rmax + w->skin;
+    if (!(h > 0.0))
+        h = 1.0;
+    int64_t nc[3] = {1, 1, 1};
+    for (;;) {
+        uint64_t total = 1;
+        for (int c = 0; c < D; c++) {
+            nc[c] = (int64_t)((hi[c] - lo[c]) / h) + 1;
+            total *= (uint64_t)nc[c];
+        }
+        if (total <= 4 * (uint64_t)n + 64)
+            break;
+        h *= 1.5;
+    }
+    memcpy(g->lo, lo, sizeof lo);
+    memcpy(g->hi, hi, sizeof hi);
+    const uint64_t ncells = (uint64_t)nc[0] * nc[1] * nc[2];
+    if (ncells + 1 > g->cap_cells) {
+        uint32_t *cs = realloc(g->cell_start, (size_t)(ncells + 1) * sizeof *cs);
+        if (!cs)
+            return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory building the cell grid");
+        g->cell_start = cs;
+        g->cap_cells = ncells + 1;
+    }
+
+    /* counting sort by cell */
+    const double inv_h = 1.0 / h;
+    memset(g->cell_start, 0, (size_t)(ncells + 1) * sizeof *g->cell_start);
+    for (uint32_t i = 0; i < n; i++) {
+        uint64_t cell = 0, stride = 1;
+        for (int c = 0; c < D; c++) {
+            int64_t q = (int64_t)((P->x[D * i + c] - lo[c]) * inv_h);
+            if (q >= nc[c])
+                q = nc[c] - 1;
+            cell += (uint64_t)q * stride;
+            stride *= (uint64_t)nc[c];
+        }
+        g->cell_of[i] = (uint32_t)cell;
+        g->cell_start[cell + 1]++;
+    }
+    for (uint64_t c = 0; c < ncells; c++)
+        g->cell_start[c + 1] += g->cell_start[c];
+    for (uint32_t i = 0; i < n; i++)
+        g->order[g->cell_start[g->cell_of[i]]++] = i;
+    for (uint64_t c = ncells; c > 0; c--)
+        g->cell_start[c] = g->cell_start[c - 1];
+    g->cell_start[0] = 0;
+    for (uint32_t k = 0; k < n; k++)
+        g->inv[g->order[k]] = k;
+    dm_particles_permute(w, g->order);
+
+    /* pairs within reach, each once, into the bucket of their kernel */
+    clist_empty(&w->pp, D);
+    clist_empty(&w->pw, D);
+    const dm_pairparam *tab = w->ptab;
+    const uint32_t nm = w->nmat_tab;
+    const double skin = w->skin;
+    const int nst = D == 3 ? 13 : 4;
+    int64_t cxyz[3] = {0, 0, 0};
+    for (uint64_t cell = 0; cell < ncells; cell++) {
+        cxyz[0] = (int64_t)(cell % (uint64_t)nc[0]);
+        cxyz[1] = (int64_t)(cell / (uint64_t)nc[0] % (uint64_t)nc[1]);
+        cxyz[2] = (int64_t)(cell / ((uint64_t)nc[0] * (uint64_t)nc[1]));
+        const uint32_t b0 = g->cell_start[cell], b1 = g->cell_start[cell + 1];
+        for (uint32_t i = b0; i < b1; i++) {
+            for (int s = -1; s < nst; s++) {
+                uint32_t j0, j1;
+                if (s < 0) {
+                    j0 = i + 1;
+                    j1 = b1;
+                } else {
+                    uint64_t nb = 0, stride = 1;
+                    int inside = 1;
+                    for (int c = 0; c < D; c++) {
+                        int64_t q = cxyz[c] + stencil3[s][c];
+                        inside &= q >= 0 && q < nc[c];
+                        nb += (uint64_t)q * stride;
+                        stride *= (uint64_t)nc[c];
+                    }
+                    if (!inside)
+                        continue;
+                    j0 = g->cell_start[nb];
+                    j1 = g->cell_start[nb + 1];
+                }
+                for (uint32_t j = j0; j < j1; j++) {
+                    double r2 = 0.0, reach = P->r[i] + P->r[j] + skin;
+                    for (int c = 0; c < D; c++) {
+                        double d = P->x[D * j + c] - P->x[D * i + c];
+                        r2 += d * d;
+                    }
+                    if (r2 >= reach * reach)
+                        continue;
+                    int kern = tab[P->mat[i] * nm + P->mat[j]].kernel;
+                    if (kern >= 0 && bucket_push(&w->pp.b[kern], i, j))
+                        goto oom;
+                }
+            }
+        }
+    }
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t k = 0; k < w->nwalls; k++) {
+            const dm_wall *wall = &w->walls[k];
+            if (!wall->kind || dm_wall_distance(wall, P->x + D * i, D) >= P->r[i] + skin)
+                continue;
+            int kern = tab[P->mat[i] * nm + wall->material].kernel;
+            if (kern >= 0 && bucket_push(&w->pw.b[kern], i, k))
+                goto oom;
+        }
+    if (dm_wgeom_reserve(w))
+        goto oom;
+    carry_restore(w);
+    memcpy(P->x0, P->x, (size_t)D * n * sizeof *P->x);
+    dm_walls_mark_built(w);
+    w->rebuilds++;
+    w->nlist_valid = true;
+    return DEMILL_OK;
+oom:
+    dm_clist_clear(w);
+    w->nlist_valid = false;
+    return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory building contact lists");
+}
+
+bool dm_nlist_needs_rebuild(const demill_world *w, double max_disp2)
+{
+    if (!w->nlist_valid)
+        return true;
+    double d = sqrt(max_disp2), shift = dm_walls_max_shift(w);
+    return d + (shift > d ? shift : d) > w->skin;
+}

@@ -1,0 +1,57 @@
+/* errors.c: status code texts and the per-world last-error message. */
+#include <stdarg.h>
+#include <stdio.h>
+
+#include "internal.h"
+
+DEMILL_API const char *demill_strerror(demill_status code)
+{
+    switch (code) {
+    case DEMILL_OK: return "success";
+    case DEMILL_ERR_NULL_POINTER: return "a required pointer argument is NULL";
+    case DEMILL_ERR_INVALID_VALUE: return "a value is out of its allowed range";
+    case DEMILL_ERR_NOT_FINITE: return "a value is NaN or infinite";
+    case DEMILL_ERR_UNKNOWN_KEY: return "unknown parameter key, field or enum value";
+    case DEMILL_ERR_INVALID_HANDLE: return "invalid handle: removed, of another world, or of the wrong kind";
+    case DEMILL_ERR_NO_CONTACT_MODEL: return "a pair of materials that may touch has no contact model";
+    case DEMILL_ERR_OVERLAP: return "inserted particles overlap";
+    case DEMILL_ERR_OUT_OF_MEMORY: return "out of memory";
+    case DEMILL_ERR_BUFFER_TOO_SMALL: return "the buffer is too small";
+    case DEMILL_ERR_READ_ONLY: return "the parameter or field is read-only";
+    case DEMILL_ERR_DIMENSION: return "the value is not allowed in a world of this dimension";
+    case DEMILL_ERR_VERSION: return "the library version is not compatible with the headers";
+    default: return "unknown status code";
+    }
+}
+
+demill_status dm_fail(demill_world *w, demill_status code, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(w->error, sizeof w->error, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+void dm_clear_error(demill_world *w)
+{
+    w->error[0] = '\0';
+}
+
+demill_status dm_check_world(const demill_world *w)
+{
+    if (!w)
+        return DEMILL_ERR_NULL_POINTER;
+    if (w->magic != DM_WORLD_MAGIC)
+        return DEMILL_ERR_INVALID_HANDLE;
+    return DEMILL_OK;
+}
+
+DEMILL_API const char *demill_world_last_error(const demill_world *world)
+{
+    if (!world)
+        return "world is NULL";
+    if (world->magic != DM_WORLD_MAGIC)
+        return "not a demill world (destroyed or never created)";
+    return world->error;
+}

@@ -1,0 +1,139 @@
+/* ids.c: generation-counted ids and the handle tables behind them. */
+#include <stdlib.h>
+
+#include "internal.h"
+
+#define ID_INDEX(id) ((uint32_t)((id) & 0xffffffffu))
+#define ID_GEN(id) ((uint16_t)(((id) >> 32) & 0xffffu))
+#define ID_KIND(id) ((int)(((id) >> 48) & 0xfu))
+#define ID_TAG(id) ((uint16_t)(((id) >> 52) & 0xfffu))
+
+demill_id dm_id_make(uint16_t tag, int kind, uint16_t gen, uint32_t index)
+{
+    return ((uint64_t)(tag & 0xfffu) << 52) | ((uint64_t)kind << 48) | ((uint64_t)gen << 32) |
+           index;
+}
+
+DEMILL_API int32_t demill_id_kind(demill_id id)
+{
+    int k = ID_KIND(id);
+    return k >= DEMILL_KIND_MATERIAL && k <= DEMILL_KIND_WALL ? k : DEMILL_KIND_NONE;
+}
+
+/* Grows the table so that `extra` more handles can be issued without
+ * allocating. Returns 0 on success; on failure the table is unchanged. */
+int dm_handles_reserve(dm_handles *h, uint32_t extra)
+{
+    uint64_t need = (uint64_t)h->n + extra;
+    if (extra <= h->nfree || need <= h->cap)
+        return 0;
+    if (need > UINT32_MAX - 1)
+        return -1;
+    uint32_t cap = h->cap ? h->cap : 64;
+    while (cap < need)
+        cap = cap > UINT32_MAX / 2 ? UINT32_MAX - 1 : cap * 2;
+    uint32_t *slot = realloc(h->slot, (size_t)cap * sizeof *slot);
+    if (!slot)
+        return -1;
+    h->slot = slot;
+    uint16_t *gen = realloc(h->gen, (size_t)cap * sizeof *gen);
+    if (!gen)
+        return -1;
+    h->gen = gen;
+    uint32_t *fr = realloc(h->free, (size_t)cap * sizeof *fr);
+    if (!fr)
+        return -1;
+    h->free = fr;
+    h->cap = cap;
+    return 0;
+}
+
+/* Issues a handle pointing at `slot` (capacity must have been reserved). */
+uint32_t dm_handles_issue(dm_handles *h, uint32_t slot)
+{
+    uint32_t index;
+    if (h->nfree) {
+        index = h->free[--h->nfree];
+    } else {
+        index = h->n++;
+        h->gen[index] = 0;
+    }
+    h->slot[index] = slot;
+    return index;
+}
+
+/* Releases a handle; its generation moves on so old ids stop matching. */
+void dm_handles_release(dm_handles *h, uint32_t index)
+{
+    h->slot[index] = DM_FREE;
+    h->gen[index]++;
+    h->free[h->nfree++] = index;
+}
+
+void dm_handles_free(dm_handles *h)
+{
+    free(h->slot);
+    free(h->gen);
+    free(h->free);
+}
+
+static const char *kind_name(int kind)
+{
+    switch (kind) {
+    case DEMILL_KIND_MATERIAL: return "material";
+    case DEMILL_KIND_PARTICLE: return "particle";
+    case DEMILL_KIND_WALL: return "wall";
+    default: return "unknown";
+    }
+}
+
+/* Checks that `id` names a live object of `kind` in world w and returns its
+ * storage slot (particles: storage index; walls: wall slot; materials: index).
+ * `what` names the argument in the error message. */
+demill_status dm_resolve(const demill_world *cw, demill_id id, int kind, const char *what,
+                         uint32_t *slot)
+{
+    demill_world *w = (demill_world *)cw; /* the error message is mutable state */
+    if (id == DEMILL_ID_NONE)
+        return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: DEMILL_ID_NONE is not a %s id", what,
+                       kind_name(kind));
+    if (ID_KIND(id) != kind)
+        return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: id 0x%llx is a %s id, expected a %s id",
+                       what, (unsigned long long)id, kind_name(ID_KIND(id)), kind_name(kind));
+    if (ID_TAG(id) != w->tag)
+        return dm_fail(w, DEMILL_ERR_INVALID_HANDLE,
+                       "%s: %s id 0x%llx belongs to another world", what, kind_name(kind),
+                       (unsigned long long)id);
+    uint32_t index = ID_INDEX(id);
+    if (kind == DEMILL_KIND_MATERIAL) {
+        if (index >= w->nmat || ID_GEN(id) != 0)
+            return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: no material with id 0x%llx", what,
+                           (unsigned long long)id);
+        *slot = index;
+        return DEMILL_OK;
+    }
+    const dm_handles *h = kind == DEMILL_KIND_PARTICLE ? &w->ph : &w->wh;
+    if (index >= h->n || h->slot[index] == DM_FREE || h->gen[index] != ID_GEN(id))
+        return dm_fail(w, DEMILL_ERR_INVALID_HANDLE,
+                       "%s: %s id 0x%llx was removed or never existed", what, kind_name(kind),
+                       (unsigned long long)id);
+    *slot = h->slot[index];
+    return DEMILL_OK;
+}
+
+demill_id dm_particle_id(const demill_world *w, uint32_t storage)
+{
+    uint32_t h = w->p.hid[storage];
+    return dm_id_make(w->tag, DEMILL_KIND_PARTICLE, w->ph.gen[h], h);
+}
+
+demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot)
+{
+    uint32_t h = w->walls[wall_slot].handle;
+    return dm_id_make(w->tag, DEMILL_KIND_WALL, w->wh.gen[h], h);
+}
+
+demill_id dm_material_id(const demill_world *w, uint32_t material)
+{
+    return dm_id_make(w->tag, DEMILL_KIND_MATERIAL, 0, material);
+}

@@ -1,0 +1,268 @@
+/* internal.h: the world's internal layout, shared by all library sources.
+ * Nothing here is visible to users; internal symbols are prefixed dm_. */
+#ifndef DM_INTERNAL_H
+#define DM_INTERNAL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "demill.h"
+
+#define DM_MAX_MATERIALS 256
+#define DM_FREE UINT32_MAX
+#define DM_PI 3.14159265358979323846
+
+/* ---- ids (ids.c) ------------------------------------------------------- */
+/* Bits 63..52 world tag, 51..48 kind, 47..32 generation, 31..0 index. */
+demill_id dm_id_make(uint16_t tag, int kind, uint16_t gen, uint32_t index);
+
+/* A table of generation-counted handles mapping to storage slots. */
+typedef struct dm_handles {
+    uint32_t *slot; /* handle index -> storage index, DM_FREE if unused */
+    uint16_t *gen;  /* generation of each handle index */
+    uint32_t *free; /* stack of free handle indices */
+    uint32_t nfree, n, cap; /* n: handle indices ever issued */
+} dm_handles;
+
+/* ---- materials and pairs (material.c) ---------------------------------- */
+typedef struct dm_material {
+    double density, youngs, poisson, stiffness, restitution, friction, rolling_friction;
+} dm_material;
+
+/* Derived pair keys the user may override; bit i of dm_pair_user.set. */
+enum {
+    DM_PK_RESTITUTION, DM_PK_FRICTION, DM_PK_ROLLING_FRICTION, DM_PK_NORMAL_STIFFNESS,
+    DM_PK_VISCOUS, DM_PK_KT_RATIO, DM_PK_CT_FACTOR, DM_PK_COULOMB_REG, DM_PK_ROLLING_REG,
+    DM_PK_CLAMP, DM_PK_COUNT
+};
+
+/* What the user chose for one material pair (a <= b). */
+typedef struct dm_pair_user {
+    uint32_t a, b;
+    int32_t normal, damping, tangential, rolling;
+    double value[DM_PK_COUNT];
+    uint32_t set; /* bit mask of DM_PK_* overridden */
+} dm_pair_user;
+
+/* The four laws of a contact model, and the kernel they compile to. */
+typedef struct dm_laws {
+    int normal, damping, tangential, rolling;
+} dm_laws;
+
+#define DM_KERNELS (2 * 3 * 4 * 2)
+int dm_kernel_index(dm_laws laws);
+dm_laws dm_kernel_laws(int kernel);
+int dm_kernel_hist_size(int kernel, int dim);
+
+/* Resolved constants of one material pair, read by the contact kernels. */
+typedef struct dm_pairparam {
+    int kernel;          /* -1: no model */
+    int clamp;           /* 1: F_n >= 0 */
+    double kn;           /* linear normal stiffness */
+    double e_star;       /* E* (Hertz), 4/3 E* √R* δ^{3/2} */
+    double g8;           /* 8 G* (Mindlin) */
+    double cn;           /* viscous damping coefficient */
+    double dcoef;        /* restitution damping: 2ξ (linear) or 2√(5/6)ξ (Hertz) */
+    double kt;           /* linear tangential stiffness */
+    double ct_factor;
+    double mu, mu_r;
+    double coul_reg, roll_reg; /* 2 × factor */
+    double restitution, xi;
+} dm_pairparam;
+
+/* ---- walls (wall.c) ---------------------------------------------------- */
+typedef struct dm_wall {
+    uint32_t handle;       /* handle index */
+    uint32_t material;     /* material slot */
+    int kind;              /* DM_WALL_PLANE */
+    /* reference geometry at time t0 and motion */
+    double p0[3], n0[3], c0[3];
+    double vel[3], omega[3];
+    double t0;
+    /* current geometry (at world time) */
+    double p[3], n[3], c[3];
+    double rot[9];         /* rotation since t0 */
+    /* geometry at the last neighbour build, for the skin criterion */
+    double c_build[3], rot_build[9];
+    /* results of the last force evaluation */
+    double force[3], torque[3];
+} dm_wall;
+
+enum { DM_WALL_PLANE = 1 };
+
+/* ---- particles (particles.c) ------------------------------------------- */
+/* Structure of arrays in storage order (sorted by cell at each neighbour
+ * build). Vectors have D = dim components, angular ones W = 1 (2D) or 3. */
+typedef struct dm_particles {
+    uint32_t n, cap;
+    double *x, *v, *f, *x0;  /* D per particle; x0: position at the last build */
+    double *vp;              /* D: predicted end-of-step velocity (velocity Verlet) */
+    double *w, *t, *wp;      /* W per particle: angular velocity, torque, predicted ω */
+    double *theta;           /* 2D rotation angle */
+    double *r, *m, *im, *iinv; /* radius, mass, 1/m, 1/I */
+    uint16_t *mat;           /* material slot */
+    uint32_t *hid;           /* handle index */
+} dm_particles;
+
+/* ---- contact lists (broadphase/nlist.c) -------------------------------- */
+/* Pairs (i < j in storage order) within the skin, grouped by kernel. */
+typedef struct dm_bucket {
+    int kernel;
+    int hs;                  /* history doubles per pair */
+    uint32_t n, cap;
+    uint32_t *i, *j;         /* for walls: i = particle, j = wall slot */
+    double *hist;
+} dm_bucket;
+
+typedef struct dm_clist {
+    dm_bucket b[DM_KERNELS];
+} dm_clist;
+
+/* Scratch of the neighbour build, kept between builds so that a build
+ * allocates only when the world has grown. */
+typedef struct dm_grid {
+    uint32_t *cell_start;     /* ncells + 1 */
+    size_t cap_cells;
+    uint32_t *cell_of, *order, *inv, *row; /* per particle (row: n + 1) */
+    uint32_t cap;
+    double *scratch;          /* 3 doubles per particle */
+    /* contacts whose history is carried over a build */
+    uint32_t *ci, *cj;
+    uint16_t *ck;             /* kernel (pp) or kernel + DM_KERNELS (pw) */
+    double *ch;               /* 3 doubles each */
+    uint32_t nc, ccap;
+    double lo[3], hi[3];      /* particle bounding box at the last build */
+} dm_grid;
+
+/* Geometry of the particle-wall candidates for the law kernels. */
+typedef struct dm_wgeom {
+    uint32_t cap;
+    double *nrm;   /* D: unit normal from particle into the wall */
+    double *delta; /* overlap (<= 0: no contact) */
+    double *vw;    /* D: wall velocity at the contact point */
+    double *cp;    /* D: contact point */
+} dm_wgeom;
+
+/* ---- energy tallies ------------------------------------------------------ */
+typedef struct dm_tally {
+    double diss_normal, diss_tangential, diss_friction, diss_rolling, wall_work;
+} dm_tally;
+
+/* ---- the world ------------------------------------------------------------- */
+#define DM_WORLD_MAGIC 0x64656d696c6cu /* "demill" */
+
+struct demill_world {
+    uint64_t magic;
+    uint16_t tag;
+    int dim;
+    double dt, time, g[3];
+    uint64_t steps, rebuilds;
+    int integrator;
+    double skin_fraction;
+    double disc_thickness;
+    int energy_tracking;
+    char error[512];
+
+    /* materials */
+    dm_material mats[DM_MAX_MATERIALS];
+    uint32_t nmat;
+    uint32_t mat_particles[DM_MAX_MATERIALS]; /* particles per material */
+    uint32_t mat_walls[DM_MAX_MATERIALS];     /* walls per material */
+    dm_pair_user *pairs;
+    uint32_t npairs, cap_pairs;
+    dm_pairparam *ptab;      /* nmat_tab × nmat_tab, resolved */
+    uint32_t nmat_tab;
+    bool ptab_dirty;
+    bool rotation;           /* some law in use needs rotational DOF */
+
+    /* particles */
+    dm_particles p;
+    dm_handles ph;
+
+    /* walls */
+    dm_wall *walls;
+    uint32_t nwalls, cap_walls;
+    dm_handles wh;
+
+    /* contacts */
+    dm_clist pp, pw;
+    dm_wgeom wg;
+    dm_grid grid;
+    bool nlist_valid;        /* pair lists match the particles and walls */
+    bool forces_valid;       /* f, t hold the forces of the current state */
+    double skin;             /* absolute skin of the current lists */
+    uint32_t ncontacts, nwall_contacts;
+
+    dm_tally tally;
+};
+
+/* ---- shared internal functions -------------------------------------------- */
+/* errors.c */
+demill_status dm_fail(demill_world *w, demill_status code, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+demill_status dm_check_world(const demill_world *w);
+void dm_clear_error(demill_world *w);
+
+/* ids.c */
+int dm_handles_reserve(dm_handles *h, uint32_t extra);
+uint32_t dm_handles_issue(dm_handles *h, uint32_t slot);
+void dm_handles_release(dm_handles *h, uint32_t index);
+void dm_handles_free(dm_handles *h);
+demill_status dm_resolve(const demill_world *w, demill_id id, int kind, const char *what,
+                         uint32_t *slot);
+demill_id dm_particle_id(const demill_world *w, uint32_t storage);
+demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
+demill_id dm_material_id(const demill_world *w, uint32_t material);
+
+/* params.c */
+demill_status dm_check_value(demill_world *w, int32_t key, double value);
+
+/* particles.c */
+void dm_particles_permute(demill_world *w, const uint32_t *order);
+void dm_particles_free(demill_world *w);
+
+/* material.c */
+demill_status dm_resolve_pairs(demill_world *w, bool require_models);
+const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b);
+void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, double *inv_i);
+
+/* contact/restitution.c */
+double dm_damping_ratio(double e, int clamp);
+
+/* broadphase/nlist.c */
+demill_status dm_nlist_build(demill_world *w);
+bool dm_nlist_needs_rebuild(const demill_world *w, double max_disp2);
+void dm_nlist_free(demill_world *w);
+int dm_grid_reserve(dm_grid *g, uint32_t n);
+void dm_clist_clear(demill_world *w);
+void dm_clist_drop_wall(demill_world *w, uint32_t wall_slot);
+
+/* geometry/wall.c */
+void dm_walls_advance(demill_world *w, double time);
+void dm_walls_retime(demill_world *w, double time);
+void dm_wgeom_update(demill_world *w);
+int dm_wgeom_reserve(demill_world *w);
+double dm_wall_distance(const dm_wall *wall, const double *x, int dim);
+double dm_walls_max_shift(const demill_world *w);
+void dm_walls_mark_built(demill_world *w);
+
+/* contact/kernels.c */
+void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
+               int tally);
+typedef struct dm_contact_eval {
+    double point[3], normal[3], delta, fn[3], ft[3], mr[3];
+    double e_normal, e_tangential;
+    demill_id a, b;
+} dm_contact_eval;
+typedef void (*dm_contact_visitor)(void *ctx, const dm_contact_eval *c);
+void dm_contacts_visit(demill_world *w, dm_contact_visitor fn, void *ctx);
+
+/* integrate/integrate.c */
+demill_status dm_integrate(demill_world *w, uint64_t steps);
+demill_status dm_prepare_step(demill_world *w);
+
+#endif /* DM_INTERNAL_H */

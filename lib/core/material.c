@@ -1,0 +1,330 @@
+/* material.c: materials, the user's per-pair choices, and their resolution
+ * into the constants the contact kernels read (PHYSICS.md §2-5). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+static const dm_material default_material = {
+    .density = 2500, .youngs = 1e8, .poisson = 0.3, .stiffness = 1e5,
+    .restitution = 0.5, .friction = 0.5, .rolling_friction = 0};
+
+DEMILL_API demill_status demill_material_create(demill_world *w, demill_id *out)
+{
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (!out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "material_create: out is NULL");
+    if (w->nmat >= DM_MAX_MATERIALS)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "material_create: at most %d materials",
+                       DM_MAX_MATERIALS);
+    w->mats[w->nmat] = default_material;
+    *out = dm_material_id(w, w->nmat);
+    w->nmat++;
+    w->ptab_dirty = true;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+static double *material_field(dm_material *m, int32_t key)
+{
+    switch (key) {
+    case DEMILL_MATERIAL_DENSITY: return &m->density;
+    case DEMILL_MATERIAL_YOUNGS_MODULUS: return &m->youngs;
+    case DEMILL_MATERIAL_POISSON_RATIO: return &m->poisson;
+    case DEMILL_MATERIAL_STIFFNESS: return &m->stiffness;
+    case DEMILL_MATERIAL_RESTITUTION: return &m->restitution;
+    case DEMILL_MATERIAL_FRICTION: return &m->friction;
+    case DEMILL_MATERIAL_ROLLING_FRICTION: return &m->rolling_friction;
+    default: return NULL;
+    }
+}
+
+void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, double *inv_i)
+{
+    double rho = w->mats[mat].density, mass, inertia;
+    if (w->dim == 2 && w->disc_thickness > 0) {
+        mass = DM_PI * r * r * w->disc_thickness * rho;
+        inertia = 0.5 * mass * r * r;
+    } else {
+        mass = 4.0 / 3.0 * DM_PI * r * r * r * rho;
+        inertia = 0.4 * mass * r * r;
+    }
+    *m = mass;
+    *inv_i = 1.0 / inertia;
+}
+
+DEMILL_API demill_status demill_material_set(demill_world *w, demill_id material, int32_t key,
+                                             double value)
+{
+    uint32_t mi;
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if ((s = dm_resolve(w, material, DEMILL_KIND_MATERIAL, "material", &mi)))
+        return s;
+    double *field = material_field(&w->mats[mi], key);
+    if (!field)
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "material_set: %d is not a material key",
+                       (int)key);
+    if ((s = dm_check_value(w, key, value)))
+        return s;
+    *field = value;
+    if (key == DEMILL_MATERIAL_DENSITY) {
+        dm_particles *p = &w->p;
+        for (uint32_t i = 0; i < p->n; i++)
+            if (p->mat[i] == mi) {
+                dm_particle_mass(w, mi, p->r[i], &p->m[i], &p->iinv[i]);
+                p->im[i] = 1.0 / p->m[i];
+            }
+    }
+    w->ptab_dirty = true;
+    w->forces_valid = false;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_material_get(const demill_world *cw, demill_id material,
+                                             int32_t key, double *value)
+{
+    demill_world *w = (demill_world *)cw;
+    uint32_t mi;
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if ((s = dm_resolve(w, material, DEMILL_KIND_MATERIAL, "material", &mi)))
+        return s;
+    if (!value)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "material_get: value is NULL");
+    double *field = material_field(&w->mats[mi], key);
+    if (!field)
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "material_get: %d is not a material key",
+                       (int)key);
+    *value = *field;
+    return DEMILL_OK;
+}
+
+/* ---- pairs --------------------------------------------------------------- */
+
+static int pair_key_index(int32_t key)
+{
+    switch (key) {
+    case DEMILL_PAIR_RESTITUTION: return DM_PK_RESTITUTION;
+    case DEMILL_PAIR_FRICTION: return DM_PK_FRICTION;
+    case DEMILL_PAIR_ROLLING_FRICTION: return DM_PK_ROLLING_FRICTION;
+    case DEMILL_PAIR_NORMAL_STIFFNESS: return DM_PK_NORMAL_STIFFNESS;
+    case DEMILL_PAIR_VISCOUS_DAMPING: return DM_PK_VISCOUS;
+    case DEMILL_PAIR_TANGENTIAL_STIFFNESS_RATIO: return DM_PK_KT_RATIO;
+    case DEMILL_PAIR_TANGENTIAL_DAMPING_FACTOR: return DM_PK_CT_FACTOR;
+    case DEMILL_PAIR_COULOMB_REGULARISATION: return DM_PK_COULOMB_REG;
+    case DEMILL_PAIR_ROLLING_REGULARISATION: return DM_PK_ROLLING_REG;
+    case DEMILL_PAIR_CLAMP_NORMAL: return DM_PK_CLAMP;
+    default: return -1;
+    }
+}
+
+const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b)
+{
+    if (a > b) {
+        uint32_t t = a;
+        a = b;
+        b = t;
+    }
+    for (uint32_t k = 0; k < w->npairs; k++)
+        if (w->pairs[k].a == a && w->pairs[k].b == b)
+            return &w->pairs[k];
+    return NULL;
+}
+
+/* The effective values of every derived key of pair (a, b). */
+static void pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws,
+                        double v[DM_PK_COUNT])
+{
+    const dm_material *ma = &w->mats[a], *mb = &w->mats[b];
+    const dm_pair_user *u = dm_pair_find(w, a, b);
+    v[DM_PK_RESTITUTION] = 0.5 * (ma->restitution + mb->restitution);
+    v[DM_PK_FRICTION] = 0.5 * (ma->friction + mb->friction);
+    v[DM_PK_ROLLING_FRICTION] = 0.5 * (ma->rolling_friction + mb->rolling_friction);
+    v[DM_PK_NORMAL_STIFFNESS] = ma->stiffness * mb->stiffness / (ma->stiffness + mb->stiffness);
+    v[DM_PK_VISCOUS] = 0;
+    v[DM_PK_KT_RATIO] = 2.0 / 7.0;
+    v[DM_PK_CT_FACTOR] = 1;
+    v[DM_PK_COULOMB_REG] = 1;
+    v[DM_PK_ROLLING_REG] = 1;
+    v[DM_PK_CLAMP] = 1;
+    *laws = (dm_laws){0, 0, 0, 0};
+    if (!u)
+        return;
+    *laws = (dm_laws){u->normal, u->damping, u->tangential, u->rolling};
+    for (int k = 0; k < DM_PK_COUNT; k++)
+        if (u->set & (1u << k))
+            v[k] = u->value[k];
+}
+
+/* E* and G* of PHYSICS.md (notation section). */
+static void elastic_moduli(const dm_material *ma, const dm_material *mb, double *e_star,
+                           double *g_star)
+{
+    *e_star = 1.0 / ((1 - ma->poisson * ma->poisson) / ma->youngs +
+                     (1 - mb->poisson * mb->poisson) / mb->youngs);
+    *g_star = 1.0 / (2 * (2 - ma->poisson) * (1 + ma->poisson) / ma->youngs +
+                     2 * (2 - mb->poisson) * (1 + mb->poisson) / mb->youngs);
+}
+
+static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairparam *pp)
+{
+    dm_laws laws;
+    double v[DM_PK_COUNT], g_star;
+    pair_values(w, a, b, &laws, v);
+    memset(pp, 0, sizeof *pp);
+    pp->kernel = laws.normal == DEMILL_NORMAL_NONE ? -1 : dm_kernel_index(laws);
+    pp->clamp = v[DM_PK_CLAMP] != 0;
+    pp->kn = v[DM_PK_NORMAL_STIFFNESS];
+    elastic_moduli(&w->mats[a], &w->mats[b], &pp->e_star, &g_star);
+    pp->g8 = 8.0 * g_star;
+    pp->cn = v[DM_PK_VISCOUS];
+    pp->restitution = v[DM_PK_RESTITUTION];
+    pp->xi = dm_damping_ratio(pp->restitution, pp->clamp);
+    pp->dcoef = (laws.normal == DEMILL_NORMAL_HERTZ ? 2.0 * sqrt(5.0 / 6.0) : 2.0) * pp->xi;
+    pp->kt = v[DM_PK_KT_RATIO] * pp->kn;
+    pp->ct_factor = v[DM_PK_CT_FACTOR];
+    pp->mu = v[DM_PK_FRICTION];
+    pp->mu_r = v[DM_PK_ROLLING_FRICTION];
+    pp->coul_reg = 2.0 * v[DM_PK_COULOMB_REG];
+    pp->roll_reg = 2.0 * v[DM_PK_ROLLING_REG];
+}
+
+DEMILL_API demill_status demill_pair_set(demill_world *w, demill_id a, demill_id b, int32_t key,
+                                         double value)
+{
+    uint32_t ma, mb;
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if ((s = dm_resolve(w, a, DEMILL_KIND_MATERIAL, "a", &ma)) ||
+        (s = dm_resolve(w, b, DEMILL_KIND_MATERIAL, "b", &mb)))
+        return s;
+    int pk = pair_key_index(key);
+    bool law = key >= DEMILL_PAIR_NORMAL && key <= DEMILL_PAIR_ROLLING;
+    if (pk < 0 && !law)
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "pair_set: %d is not a pair key", (int)key);
+    if ((s = dm_check_value(w, key, value)))
+        return s;
+    dm_pair_user *u = (dm_pair_user *)dm_pair_find(w, ma, mb);
+    if (!u) {
+        if (w->npairs == w->cap_pairs) {
+            uint32_t cap = w->cap_pairs ? 2 * w->cap_pairs : 8;
+            dm_pair_user *np = realloc(w->pairs, cap * sizeof *np);
+            if (!np)
+                return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "pair_set: out of memory");
+            w->pairs = np;
+            w->cap_pairs = cap;
+        }
+        u = &w->pairs[w->npairs++];
+        memset(u, 0, sizeof *u);
+        u->a = ma < mb ? ma : mb;
+        u->b = ma < mb ? mb : ma;
+    }
+    int32_t iv = (int32_t)value;
+    switch (key) {
+    case DEMILL_PAIR_NORMAL: u->normal = iv; break;
+    case DEMILL_PAIR_DAMPING: u->damping = iv; break;
+    case DEMILL_PAIR_TANGENTIAL: u->tangential = iv; break;
+    case DEMILL_PAIR_ROLLING: u->rolling = iv; break;
+    default:
+        u->value[pk] = value;
+        u->set |= 1u << pk;
+    }
+    w->ptab_dirty = true;
+    w->forces_valid = false;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_pair_get(const demill_world *cw, demill_id a, demill_id b,
+                                         int32_t key, double *value)
+{
+    demill_world *w = (demill_world *)cw;
+    uint32_t ma, mb;
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if ((s = dm_resolve(w, a, DEMILL_KIND_MATERIAL, "a", &ma)) ||
+        (s = dm_resolve(w, b, DEMILL_KIND_MATERIAL, "b", &mb)))
+        return s;
+    if (!value)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "pair_get: value is NULL");
+    dm_laws laws;
+    double v[DM_PK_COUNT];
+    pair_values(w, ma, mb, &laws, v);
+    int pk = pair_key_index(key);
+    switch (key) {
+    case DEMILL_PAIR_NORMAL: *value = laws.normal; break;
+    case DEMILL_PAIR_DAMPING: *value = laws.damping; break;
+    case DEMILL_PAIR_TANGENTIAL: *value = laws.tangential; break;
+    case DEMILL_PAIR_ROLLING: *value = laws.rolling; break;
+    default:
+        if (pk < 0)
+            return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "pair_get: %d is not a pair key",
+                           (int)key);
+        *value = v[pk];
+    }
+    return DEMILL_OK;
+}
+
+/* Rebuilds the resolved pair table if anything changed, and (if asked)
+ * checks that every pair of materials that may touch has a model. Leaves
+ * the world unchanged when it fails. */
+demill_status dm_resolve_pairs(demill_world *w, bool require_models)
+{
+    if (require_models) {
+        for (uint32_t a = 0; a < w->nmat; a++) {
+            if (!w->mat_particles[a])
+                continue;
+            for (uint32_t b = 0; b < w->nmat; b++) {
+                if (!w->mat_particles[b] && !w->mat_walls[b])
+                    continue;
+                const dm_pair_user *u = dm_pair_find(w, a, b);
+                if (!u || u->normal == DEMILL_NORMAL_NONE)
+                    return dm_fail(w, DEMILL_ERR_NO_CONTACT_MODEL,
+                                   "no contact model for materials %u and %u (%s): set "
+                                   "DEMILL_PAIR_NORMAL with demill_pair_set()",
+                                   a, b,
+                                   w->mat_walls[b] && !w->mat_particles[b] ? "particle-wall"
+                                                                            : "particle-particle");
+            }
+        }
+    }
+    if (!w->ptab_dirty && w->nmat_tab == w->nmat)
+        return DEMILL_OK;
+    uint32_t nm = w->nmat;
+    dm_pairparam *tab = malloc((size_t)(nm ? nm : 1) * (nm ? nm : 1) * sizeof *tab);
+    if (!tab)
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory resolving contact models");
+    bool rotation = false, kernels_changed = false;
+    for (uint32_t a = 0; a < nm; a++)
+        for (uint32_t b = 0; b < nm; b++) {
+            dm_pairparam *pp = &tab[a * nm + b];
+            pair_resolve(w, a, b, pp);
+            if (pp->kernel >= 0 && w->mat_particles[a] && (w->mat_particles[b] || w->mat_walls[b])) {
+                dm_laws l = dm_kernel_laws(pp->kernel);
+                rotation |= l.tangential != DEMILL_TANGENTIAL_NONE || l.rolling != DEMILL_ROLLING_NONE;
+            }
+            if (a < w->nmat_tab && b < w->nmat_tab &&
+                w->ptab[a * w->nmat_tab + b].kernel != pp->kernel)
+                kernels_changed = true;
+        }
+    free(w->ptab);
+    w->ptab = tab;
+    w->nmat_tab = nm;
+    w->ptab_dirty = false;
+    w->rotation = rotation;
+    if (kernels_changed || !w->nlist_valid) {
+        /* contact lists are grouped by kernel: start them afresh */
+        dm_clist_clear(w);
+        w->nlist_valid = false;
+    }
+    return DEMILL_OK;
+}

@@ -1,0 +1,130 @@
+/* world.c: creating, configuring and destroying a world. */
+#include <math.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+/* Each world gets its own tag so that its ids are not taken for another
+ * world's. The counter is the only state shared between worlds. */
+static atomic_uint next_tag;
+
+static double param_default(int32_t key)
+{
+    double d = 0.0;
+    demill_param_bounds(key, NULL, NULL, &d);
+    return d;
+}
+
+DEMILL_API demill_status demill_world_create(int32_t dimension, demill_world **out)
+{
+    if (!out)
+        return DEMILL_ERR_NULL_POINTER;
+    *out = NULL;
+    if (dimension != 2 && dimension != 3)
+        return DEMILL_ERR_INVALID_VALUE;
+    demill_world *w = calloc(1, sizeof *w);
+    if (!w)
+        return DEMILL_ERR_OUT_OF_MEMORY;
+    w->magic = DM_WORLD_MAGIC;
+    w->tag = (uint16_t)(atomic_fetch_add(&next_tag, 1u) & 0xfffu);
+    w->dim = dimension;
+    w->dt = param_default(DEMILL_WORLD_TIME_STEP);
+    w->g[0] = param_default(DEMILL_WORLD_GRAVITY_X);
+    w->g[1] = param_default(DEMILL_WORLD_GRAVITY_Y);
+    w->g[2] = param_default(DEMILL_WORLD_GRAVITY_Z);
+    w->integrator = (int)param_default(DEMILL_WORLD_INTEGRATOR);
+    w->skin_fraction = param_default(DEMILL_WORLD_SKIN);
+    w->energy_tracking = (int)param_default(DEMILL_WORLD_ENERGY_TRACKING);
+    w->ptab_dirty = true;
+    dm_clist_clear(w);
+    *out = w;
+    return DEMILL_OK;
+}
+
+DEMILL_API void demill_world_destroy(demill_world *w)
+{
+    if (dm_check_world(w))
+        return;
+    dm_particles_free(w);
+    dm_nlist_free(w);
+    dm_handles_free(&w->wh);
+    free(w->walls);
+    free(w->pairs);
+    free(w->ptab);
+    w->magic = 0;
+    free(w);
+}
+
+DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double value)
+{
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (key < 100 || key > 199)
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_set: %d is not a world key", (int)key);
+    if ((s = dm_check_value(w, key, value)))
+        return s;
+    switch (key) {
+    case DEMILL_WORLD_TIME_STEP: w->dt = value; break;
+    case DEMILL_WORLD_GRAVITY_X: w->g[0] = value; break;
+    case DEMILL_WORLD_GRAVITY_Y: w->g[1] = value; break;
+    case DEMILL_WORLD_GRAVITY_Z:
+        if (w->dim == 2 && value != 0.0)
+            return dm_fail(w, DEMILL_ERR_DIMENSION, "world.gravity_z must be 0 in a 2D world");
+        w->g[2] = value;
+        break;
+    case DEMILL_WORLD_INTEGRATOR: w->integrator = (int)value; break;
+    case DEMILL_WORLD_SKIN:
+        w->skin_fraction = value;
+        w->nlist_valid = false;
+        break;
+    case DEMILL_WORLD_DISC_THICKNESS:
+        if (w->dim == 3)
+            return dm_fail(w, DEMILL_ERR_DIMENSION, "world.disc_thickness applies to 2D worlds only");
+        w->disc_thickness = value;
+        for (uint32_t i = 0; i < w->p.n; i++) {
+            dm_particle_mass(w, w->p.mat[i], w->p.r[i], &w->p.m[i], &w->p.iinv[i]);
+            w->p.im[i] = 1.0 / w->p.m[i];
+        }
+        break;
+    case DEMILL_WORLD_ENERGY_TRACKING: w->energy_tracking = (int)value; break;
+    case DEMILL_WORLD_TIME:
+        dm_walls_retime(w, value);
+        w->time = value;
+        break;
+    }
+    w->forces_valid = false;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_world_get(const demill_world *cw, int32_t key, double *value)
+{
+    demill_world *w = (demill_world *)cw;
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (!value)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_get: value is NULL");
+    switch (key) {
+    case DEMILL_WORLD_TIME_STEP: *value = w->dt; break;
+    case DEMILL_WORLD_GRAVITY_X: *value = w->g[0]; break;
+    case DEMILL_WORLD_GRAVITY_Y: *value = w->g[1]; break;
+    case DEMILL_WORLD_GRAVITY_Z: *value = w->g[2]; break;
+    case DEMILL_WORLD_INTEGRATOR: *value = w->integrator; break;
+    case DEMILL_WORLD_SKIN: *value = w->skin_fraction; break;
+    case DEMILL_WORLD_DISC_THICKNESS: *value = w->disc_thickness; break;
+    case DEMILL_WORLD_ENERGY_TRACKING: *value = w->energy_tracking; break;
+    case DEMILL_WORLD_TIME: *value = w->time; break;
+    case DEMILL_WORLD_DIMENSION: *value = w->dim; break;
+    case DEMILL_WORLD_STEP_COUNT: *value = (double)w->steps; break;
+    case DEMILL_WORLD_PARTICLE_COUNT: *value = w->p.n; break;
+    case DEMILL_WORLD_CONTACT_COUNT: *value = w->ncontacts; break;
+    case DEMILL_WORLD_WALL_CONTACT_COUNT: *value = w->nwall_contacts; break;
+    case DEMILL_WORLD_NEIGHBOUR_REBUILDS: *value = (double)w->rebuilds; break;
+    default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_get: %d is not a world key", (int)key);
+    }
+    return DEMILL_OK;
+}

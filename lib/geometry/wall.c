@@ -1,0 +1,339 @@
+/* wall.c: walls with prescribed rigid motion (PHYSICS.md §7): the API, their
+ * exact kinematics and the contact geometry of each particle-wall candidate.
+ * Plane walls for now; the geometry is per kind so that the drum's shell,
+ * lifters and end caps, and triangle meshes, join as new kinds. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../core/internal.h"
+
+/* Rotation matrix for angle |om| t about om (Rodrigues). */
+static void rotation(const double om[3], double t, double R[9])
+{
+    double a = sqrt(om[0] * om[0] + om[1] * om[1] + om[2] * om[2]);
+    double th = a * t;
+    memset(R, 0, 9 * sizeof *R);
+    R[0] = R[4] = R[8] = 1.0;
+    if (a == 0.0 || th == 0.0)
+        return;
+    double k[3] = {om[0] / a, om[1] / a, om[2] / a}, s = sin(th), c = 1.0 - cos(th);
+    R[0] = 1 - c * (k[1] * k[1] + k[2] * k[2]);
+    R[4] = 1 - c * (k[0] * k[0] + k[2] * k[2]);
+    R[8] = 1 - c * (k[0] * k[0] + k[1] * k[1]);
+    R[1] = -s * k[2] + c * k[0] * k[1];
+    R[3] = s * k[2] + c * k[0] * k[1];
+    R[2] = s * k[1] + c * k[0] * k[2];
+    R[6] = -s * k[1] + c * k[0] * k[2];
+    R[5] = -s * k[0] + c * k[1] * k[2];
+    R[7] = s * k[0] + c * k[1] * k[2];
+}
+
+static void mat_vec(const double R[9], const double v[3], double out[3])
+{
+    for (int r = 0; r < 3; r++)
+        out[r] = R[3 * r] * v[0] + R[3 * r + 1] * v[1] + R[3 * r + 2] * v[2];
+}
+
+static void wall_at(dm_wall *wall, double time)
+{
+    double tau = time - wall->t0, d[3], rd[3];
+    rotation(wall->omega, tau, wall->rot);
+    for (int c = 0; c < 3; c++) {
+        wall->c[c] = wall->c0[c] + wall->vel[c] * tau;
+        d[c] = wall->p0[c] - wall->c0[c];
+    }
+    mat_vec(wall->rot, d, rd);
+    mat_vec(wall->rot, wall->n0, wall->n);
+    for (int c = 0; c < 3; c++)
+        wall->p[c] = wall->c[c] + rd[c];
+}
+
+/* Makes the wall's current geometry its reference at time t0 (motion
+ * unchanged), keeping the skin bound relative to the last build. */
+static void wall_rebase(dm_wall *wall, double now, double t0)
+{
+    wall_at(wall, now);
+    double rb[9];
+    memcpy(rb, wall->rot_build, sizeof rb);
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            /* rot_build := rot_build · rot^T, as rot restarts from identity */
+            double sum = 0.0;
+            for (int k = 0; k < 3; k++)
+                sum += rb[3 * r + k] * wall->rot[3 * c + k];
+            wall->rot_build[3 * r + c] = sum;
+        }
+    memcpy(wall->p0, wall->p, sizeof wall->p);
+    memcpy(wall->n0, wall->n, sizeof wall->n);
+    memcpy(wall->c0, wall->c, sizeof wall->c);
+    wall->t0 = t0;
+    wall_at(wall, t0);
+}
+
+/* Moves the world's clock to `time` without moving the walls. */
+void dm_walls_retime(demill_world *w, double time)
+{
+    for (uint32_t k = 0; k < w->nwalls; k++)
+        if (w->walls[k].kind)
+            wall_rebase(&w->walls[k], w->time, time);
+}
+
+void dm_walls_advance(demill_world *w, double time)
+{
+    for (uint32_t k = 0; k < w->nwalls; k++)
+        if (w->walls[k].kind)
+            wall_at(&w->walls[k], time);
+}
+
+/* Signed distance of x from the wall's surface, positive on the particle
+ * side. */
+double dm_wall_distance(const dm_wall *wall, const double *x, int dim)
+{
+    double d = 0.0;
+    for (int c = 0; c < dim; c++)
+        d += (x[c] - wall->p[c]) * wall->n[c];
+    return d;
+}
+
+void dm_walls_mark_built(demill_world *w)
+{
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        memcpy(w->walls[k].c_build, w->walls[k].c, sizeof w->walls[k].c);
+        memcpy(w->walls[k].rot_build, w->walls[k].rot, sizeof w->walls[k].rot);
+    }
+}
+
+/* The most any wall's surface can have moved, near the particles, since the
+ * last neighbour build: |Δc| + θ × (distance from the centre to the far
+ * corner of the particles' box, widened by the skin). */
+double dm_walls_max_shift(const demill_world *w)
+{
+    double worst = 0.0;
+    const dm_grid *g = &w->grid;
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        const dm_wall *wall = &w->walls[k];
+        if (!wall->kind)
+            continue;
+        double dc2 = 0.0, reach2 = 0.0;
+        for (int c = 0; c < 3; c++) {
+            double d = wall->c[c] - wall->c_build[c];
+            dc2 += d * d;
+            double far = fmax(fabs(g->lo[c] - wall->c[c]), fabs(g->hi[c] - wall->c[c])) + w->skin;
+            reach2 += far * far;
+        }
+        /* angle of rot · rot_build^T from its trace */
+        double tr = 0.0;
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                tr += wall->rot[3 * r + c] * wall->rot_build[3 * r + c];
+        double cosang = fmin(1.0, fmax(-1.0, 0.5 * (tr - 1.0)));
+        double shift = sqrt(dc2) + acos(cosang) * sqrt(reach2);
+        if (shift > worst)
+            worst = shift;
+    }
+    return worst;
+}
+
+/* Makes room for the geometry of every particle-wall candidate. */
+int dm_wgeom_reserve(demill_world *w)
+{
+    dm_wgeom *g = &w->wg;
+    uint32_t total = 0;
+    for (int k = 0; k < DM_KERNELS; k++)
+        total += w->pw.b[k].n;
+    if (total <= g->cap)
+        return 0;
+    uint32_t cap = g->cap ? g->cap : 64;
+    while (cap < total)
+        cap *= 2;
+    double **arr[] = {&g->nrm, &g->vw, &g->cp, &g->delta};
+    for (int a = 0; a < 4; a++) {
+        double *q = realloc(*arr[a], (size_t)cap * (a < 3 ? 3 : 1) * sizeof *q);
+        if (!q)
+            return -1;
+        *arr[a] = q;
+    }
+    g->cap = cap;
+    return 0;
+}
+
+/* Contact geometry of every particle-wall candidate, in bucket order
+ * (room reserved by the neighbour build). */
+void dm_wgeom_update(demill_world *w)
+{
+    dm_wgeom *g = &w->wg;
+    const int D = w->dim;
+    const dm_particles *P = &w->p;
+    uint32_t gk = 0;
+    for (int k = 0; k < DM_KERNELS; k++) {
+        const dm_bucket *b = &w->pw.b[k];
+        for (uint32_t p = 0; p < b->n; p++, gk++) {
+            const uint32_t i = b->i[p];
+            const dm_wall *wall = &w->walls[b->j[p]];
+            const double *x = P->x + D * i;
+            /* plane: the normal into the wall is -n */
+            double delta = P->r[i] - dm_wall_distance(wall, x, D);
+            double *nrm = g->nrm + D * gk, *cp = g->cp + D * gk, *vw = g->vw + D * gk;
+            g->delta[gk] = delta;
+            double arm = P->r[i] - 0.5 * delta, rel[3] = {0.0, 0.0, 0.0};
+            for (int c = 0; c < D; c++) {
+                nrm[c] = -wall->n[c];
+                cp[c] = x[c] + arm * nrm[c];
+                rel[c] = cp[c] - wall->c[c];
+            }
+            const double *om = wall->omega;
+            double spin[3] = {om[1] * rel[2] - om[2] * rel[1], om[2] * rel[0] - om[0] * rel[2],
+                              om[0] * rel[1] - om[1] * rel[0]};
+            for (int c = 0; c < D; c++)
+                vw[c] = wall->vel[c] + spin[c];
+        }
+    }
+}
+
+/* ---- API ----------------------------------------------------------------------- */
+
+static demill_status check_vec3(demill_world *w, const double *v, const char *what, int flat)
+{
+    for (int c = 0; c < 3; c++)
+        if (!isfinite(v[c]))
+            return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s[%d] = %g is not finite", what, c, v[c]);
+    if (flat && v[2] != 0.0)
+        return dm_fail(w, DEMILL_ERR_DIMENSION, "%s has z = %g but the world is 2D", what, v[2]);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_wall_add_plane(demill_world *w, demill_id material,
+                                               const double point[3], const double normal[3],
+                                               demill_id *out)
+{
+    uint32_t mat;
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if ((s = dm_resolve(w, material, DEMILL_KIND_MATERIAL, "material", &mat)))
+        return s;
+    if (!point || !normal || !out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "wall_add_plane: %s is NULL",
+                       !point ? "point" : !normal ? "normal" : "out");
+    const int flat = w->dim == 2;
+    if ((s = check_vec3(w, point, "point", flat)) || (s = check_vec3(w, normal, "normal", flat)))
+        return s;
+    double len = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    if (!(len > 0.0) || !isfinite(len))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "wall_add_plane: normal has zero length");
+    uint32_t slot = 0;
+    while (slot < w->nwalls && w->walls[slot].kind)
+        slot++;
+    if (slot == w->cap_walls) {
+        uint32_t cap = w->cap_walls ? 2 * w->cap_walls : 8;
+        dm_wall *nw = realloc(w->walls, cap * sizeof *nw);
+        if (!nw)
+            return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "wall_add_plane: out of memory");
+        w->walls = nw;
+        w->cap_walls = cap;
+    }
+    if (dm_handles_reserve(&w->wh, 1))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "wall_add_plane: out of memory");
+    dm_wall *wall = &w->walls[slot];
+    memset(wall, 0, sizeof *wall);
+    wall->kind = DM_WALL_PLANE;
+    wall->material = mat;
+    for (int c = 0; c < 3; c++) {
+        wall->p0[c] = wall->c0[c] = point[c];
+        wall->n0[c] = normal[c] / len;
+    }
+    wall->t0 = w->time;
+    wall_at(wall, w->time);
+    memcpy(wall->c_build, wall->c, sizeof wall->c);
+    memcpy(wall->rot_build, wall->rot, sizeof wall->rot);
+    wall->handle = dm_handles_issue(&w->wh, slot);
+    if (slot == w->nwalls)
+        w->nwalls++;
+    w->mat_walls[mat]++;
+    *out = dm_wall_id(w, slot);
+    w->ptab_dirty = true;
+    w->nlist_valid = false;
+    w->forces_valid = false;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_wall_remove(demill_world *w, demill_id id)
+{
+    uint32_t slot;
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if ((s = dm_resolve(w, id, DEMILL_KIND_WALL, "wall", &slot)))
+        return s;
+    dm_clist_drop_wall(w, slot);
+    dm_wall *wall = &w->walls[slot];
+    w->mat_walls[wall->material]--;
+    dm_handles_release(&w->wh, wall->handle);
+    wall->kind = 0;
+    w->ptab_dirty = true;
+    w->forces_valid = false;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_wall_set_motion(demill_world *w, demill_id id,
+                                                const double velocity[3],
+                                                const double angular_velocity[3],
+                                                const double centre[3])
+{
+    uint32_t slot;
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if ((s = dm_resolve(w, id, DEMILL_KIND_WALL, "wall", &slot)))
+        return s;
+    const int flat = w->dim == 2;
+    if ((velocity && (s = check_vec3(w, velocity, "velocity", flat))) ||
+        (centre && (s = check_vec3(w, centre, "centre", flat))) ||
+        (angular_velocity && (s = check_vec3(w, angular_velocity, "angular_velocity", 0))))
+        return s;
+    if (flat && angular_velocity && (angular_velocity[0] != 0.0 || angular_velocity[1] != 0.0))
+        return dm_fail(w, DEMILL_ERR_DIMENSION,
+                       "angular_velocity has x or y components but the world is 2D");
+    dm_wall *wall = &w->walls[slot];
+    wall_rebase(wall, w->time, w->time);
+    for (int c = 0; c < 3; c++) {
+        if (centre)
+            wall->c0[c] = wall->c[c] = centre[c];
+        wall->vel[c] = velocity ? velocity[c] : 0.0;
+        wall->omega[c] = angular_velocity ? angular_velocity[c] : 0.0;
+    }
+    w->forces_valid = false;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_wall_get(const demill_world *cw, demill_id id, int32_t field,
+                                         double *out)
+{
+    demill_world *w = (demill_world *)cw;
+    uint32_t slot;
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if ((s = dm_resolve(w, id, DEMILL_KIND_WALL, "wall", &slot)))
+        return s;
+    if (!out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "wall_get: out is NULL");
+    const dm_wall *wall = &w->walls[slot];
+    const double *src;
+    switch (field) {
+    case DEMILL_WALL_POINT: src = wall->p; break;
+    case DEMILL_WALL_NORMAL: src = wall->n; break;
+    case DEMILL_WALL_CENTRE: src = wall->c; break;
+    case DEMILL_WALL_VELOCITY: src = wall->vel; break;
+    case DEMILL_WALL_ANGULAR_VELOCITY: src = wall->omega; break;
+    case DEMILL_WALL_FORCE: src = wall->force; break;
+    case DEMILL_WALL_TORQUE: src = wall->torque; break;
+    default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "%d is not a wall field", (int)field);
+    }
+    memcpy(out, src, 3 * sizeof *out);
+    return DEMILL_OK;
+}

@@ -1,0 +1,39 @@
+/* testutil.h: helpers shared by the test suites. */
+#ifndef DEMILL_TESTUTIL_H
+#define DEMILL_TESTUTIL_H
+
+#include <check.h>
+#include <math.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+#include <demill.h>
+
+/* Fails the test with the world's message unless the call returns DEMILL_OK. */
+#define DM_OK(world, call)                                                                         \
+    do {                                                                                           \
+        demill_status s_ = (call);                                                                 \
+        ck_assert_msg(s_ == DEMILL_OK, "%s -> %d (%s): %s", #call, (int)s_, demill_strerror(s_), \
+                      demill_world_last_error(world));                                             \
+    } while (0)
+
+/* Asserts |got - want| <= tol * |want|. */
+#define DM_ASSERT_REL(got, want, tol)                                                              \
+    do {                                                                                           \
+        double g_ = (got), w_ = (want), t_ = (tol);                                                \
+        ck_assert_msg(fabs(g_ - w_) <= t_ * fabs(w_), "%s = %.9g, expected %.9g within %.3g%%",  \
+                      #got, g_, w_, 100.0 * t_);                                                   \
+    } while (0)
+
+/* A world without gravity (dim 2 or 3) and one material with the given
+ * normal and damping laws for the pair (m, m). */
+demill_world *dm_test_world(int dim, int normal, int damping, demill_id *material);
+
+/* Runs a Check suite and returns the process exit status. */
+int dm_test_run(Suite *s);
+
+/* One double field of a particle (component c). */
+double dm_test_get(demill_world *w, demill_id p, int field, int c);
+
+#endif
