@@ -69,6 +69,12 @@ DEMILL_API int32_t demill_check_version(uint32_t header_version);
  * it was before the call (the one exception, documented at
  * demill_world_step(), is a failure in the middle of a multi-step run). The
  * world's last-error message (demill_world_last_error()) says what was wrong.
+ * Every function that takes a world returns DEMILL_ERR_NULL_POINTER when it
+ * is NULL and DEMILL_ERR_INVALID_HANDLE when it is not a live world; the
+ * lists of errors at each function do not repeat these two.
+ * A parameter value for a choice (an enum) that is not a whole number gives
+ * DEMILL_ERR_INVALID_VALUE; a whole number that names no choice gives
+ * DEMILL_ERR_UNKNOWN_KEY.
  * @{ */
 typedef int32_t demill_status;
 enum {

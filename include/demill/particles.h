@@ -51,13 +51,15 @@ DEMILL_API int32_t demill_particle_field_size(int32_t field);
  *  @param positions  3n doubles: centres in m.
  *  @param radii      n doubles: radii in m, > 0.
  *  @param velocities 3n doubles in m/s, or NULL for rest.
- *  @param flags      0 or DEMILL_ADD_NO_OVERLAP.
+ *  @param flags      0 or DEMILL_ADD_NO_OVERLAP; other bits give
+ *                    DEMILL_ERR_UNKNOWN_KEY.
  *  @param ids        n ids written on success, or NULL.
  *  In a 2D world z components must be 0.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE,
- *          DEMILL_ERR_DIMENSION, DEMILL_ERR_OVERLAP or
- *          DEMILL_ERR_OUT_OF_MEMORY. On failure no particle is added and the
+ *          DEMILL_ERR_UNKNOWN_KEY (flags), DEMILL_ERR_DIMENSION,
+ *          DEMILL_ERR_OVERLAP or DEMILL_ERR_OUT_OF_MEMORY. On failure no
+ *          particle is added and the
  *          message names the first offending particle by its index in the
  *          batch. */
 DEMILL_API demill_status demill_particles_add(demill_world *world, demill_id material, size_t n,
@@ -78,6 +80,7 @@ DEMILL_API demill_status demill_particles_remove(demill_world *world, size_t n,
  *  @param count    receives the number of particles (may be NULL if out is
  *                  not).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_DIMENSION (the angle in a 3D world),
  *          DEMILL_ERR_NULL_POINTER or DEMILL_ERR_BUFFER_TOO_SMALL (nothing
  *          written, *count set). */
 DEMILL_API demill_status demill_particles_read(const demill_world *world, int32_t field,
@@ -100,7 +103,8 @@ DEMILL_API demill_status demill_particles_write(demill_world *world, int32_t fie
                                                 const double *in, size_t n);
 
 /** Reads one particle's field into out (1 or 3 doubles).
- *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY or
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_DIMENSION (the angle in a 3D world) or
  *          DEMILL_ERR_NULL_POINTER. */
 DEMILL_API demill_status demill_particle_get(const demill_world *world, demill_id particle,
                                              int32_t field, double *out);

@@ -160,7 +160,7 @@ static int carry_collect(demill_world *w)
                         grow((void **)&g->cj, sizeof *g->cj, &c2, need) ||
                         grow((void **)&g->ck, sizeof *g->ck, &c3, need))
                         return -1;
-                    double *ch = realloc(g->ch, (size_t)c1 * 3 * sizeof *ch);
+                    double *ch = realloc(g->ch, (size_t)c1 * DM_MAX_HIST * sizeof *ch);
                     if (!ch)
                         return -1;
                     g->ch = ch;
@@ -169,7 +169,7 @@ static int carry_collect(demill_world *w)
                 g->ci[g->nc] = b->i[p];
                 g->cj[g->nc] = b->j[p];
                 g->ck[g->nc] = (uint16_t)(k + side * DM_KERNELS);
-                memcpy(g->ch + 3 * (size_t)g->nc, h, (size_t)b->hs * sizeof *h);
+                memcpy(g->ch + DM_MAX_HIST * (size_t)g->nc, h, (size_t)b->hs * sizeof *h);
                 g->nc++;
             }
         }
@@ -195,6 +195,7 @@ static void carry_restore(demill_world *w)
                 have = g->ck[c] == key;
             if (!have)
                 continue;
+            const int spring = dm_kernel_spring_size(k, w->dim);
             uint32_t p = 0;
             for (uint32_t i = 0; i <= n; i++) {
                 g->row[i] = p;
@@ -210,12 +211,13 @@ static void carry_restore(demill_world *w)
                     uint32_t t = i;
                     i = j;
                     j = t;
-                    sign = w->dim == 3 ? -1.0 : 1.0; /* 2D: the scalar keeps its sign */
+                    sign = w->dim == 3 ? -1.0 : 1.0; /* the 3D spring vector turns; the 2D scalar not */
                 }
                 for (uint32_t q = g->row[i]; q < g->row[i + 1]; q++)
                     if (b->j[q] == j) {
                         for (int d = 0; d < b->hs; d++)
-                            b->hist[(size_t)b->hs * q + d] = sign * g->ch[3 * (size_t)c + d];
+                            b->hist[(size_t)b->hs * q + d] =
+                                (d < spring ? sign : 1.0) * g->ch[DM_MAX_HIST * (size_t)c + d];
                         break;
                     }
             }

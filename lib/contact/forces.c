@@ -19,6 +19,11 @@ dm_laws dm_kernel_laws(int kernel)
     return l;
 }
 
+int dm_kernel_spring_size(int kernel, int dim)
+{
+    return dm_law_spring_size(dm_kernel_laws(kernel).tangential, dim);
+}
+
 int dm_kernel_hist_size(int kernel, int dim)
 {
     dm_laws l = dm_kernel_laws(kernel);
@@ -78,9 +83,10 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
 static void contact_record(int dim, dm_laws l, const dm_pairparam *pp, const dm_kin *q,
                            const double *xa, const double *hist, dm_contact_eval *e)
 {
-    double h[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+    double h[DM_MAX_HIST] = {0.0};
     int hs = dm_law_hist_size(l.normal, l.damping, l.tangential, dim);
-    memcpy(h, hist, (size_t)hs * sizeof *h);
+    if (hs)
+        memcpy(h, hist, (size_t)hs * sizeof *h);
     dm_law_out o;
     dm_tally unused = {0};
     dm_law(dim, l.normal, l.damping, l.tangential, l.rolling, pp, q->n, q->delta, q->vc, q->dc,

@@ -165,13 +165,17 @@ DM_INLINE int dm_pw_kin(const int D, const int SPIN, const int ROLL, const dm_pa
  * force along n on b that applies the impulse its last sample in contact
  * missed or added, the exit time found by interpolating the overlap, and
  * forgets the contact. hb: the two boundary slots of its history. */
-DM_INLINE double dm_exit_force(double *hb, double delta_now, double reach)
+DM_INLINE double dm_exit_force(double *hb, double delta_now, double reach,
+                               const dm_pairparam *pp)
 {
-    const double f_last = hb[0], d_last = hb[1];
+    const double d_last = hb[1];
+    /* what jumps to zero where δ reaches 0: the dashpot part of the last
+     * force, never pulling when the normal force is clamped */
+    double jump = hb[0] - pp->kn * d_last;
+    if (pp->clamp && jump < 0.0)
+        jump = 0.0;
     hb[0] = hb[1] = 0.0;
-    if (f_last == 0.0)
-        return 0.0;
-    return f_last * (d_last / (d_last - delta_now) - reach);
+    return jump * (d_last / (d_last - delta_now) - reach);
 }
 
 /* Particle-particle loop. */
@@ -206,9 +210,10 @@ DM_INLINE void dm_pp_loop(const int D, const int NL, const int DL, const int TL,
             if (EXIT) {
                 if (dt_hist == 0.0)
                     continue; /* keep the history for the next real step */
-                if (h[HSP] != 0.0) {
+                if (h[HSP + 1] > 0.0) {
                     const double dist = sqrt(r2);
-                    const double fc = dm_exit_force(h + HSP, P->r[i] + P->r[j] - dist, reach);
+                    const double fc = dm_exit_force(h + HSP, P->r[i] + P->r[j] - dist, reach,
+                                                    &tab[mat[i] * nm + mat[j]]);
                     double vn = 0.0;
                     for (int c = 0; c < D; c++) {
                         const double nc = (P->x[D * j + c] - P->x[D * i + c]) / dist;
@@ -284,8 +289,9 @@ DM_INLINE void dm_pw_loop(const int D, const int NL, const int DL, const int TL,
             if (EXIT) {
                 if (dt_hist == 0.0)
                     continue; /* keep the history for the next real step */
-                if (h[HSP] != 0.0) {
-                    const double fc = dm_exit_force(h + HSP, g->delta[gk], reach);
+                if (h[HSP + 1] > 0.0) {
+                    const double fc = dm_exit_force(h + HSP, g->delta[gk], reach,
+                                                    &tab[mat[i] * nm + wall->material]);
                     double absorbed = 0.0, delivered = 0.0;
                     for (int c = 0; c < D; c++) {
                         const double fw = fc * g->nrm[D * gk + c];

@@ -47,10 +47,11 @@ DM_INLINE int dm_law_spring_size(int tangential, int dim)
 
 /* Boundary corrections keep a collision second-order accurate in Δt where
  * the contact force switches on or off abruptly. Entry (any dashpot): the
- * first sample in contact is weighted so that its impulse equals the force's
- * integral from the moment of contact, for an onset growing as age^p (p = 0
- * for the linear dashpot's jump, 1/4 for the Tsuji dashpot, 1 and 3/2 for
- * the linear and Hertz springs). Exit (linear dashpot, whose force jumps
+ * dashpot force of the first sample in contact is weighted so that its
+ * impulse equals the force's integral from the moment of contact, for an
+ * onset growing as age^p (p = 0 for the linear dashpot's jump, 1/4 for the
+ * Tsuji dashpot); the spring starts from zero and is left alone, so that
+ * elastic collisions keep Verlet's energy behaviour. Exit (linear dashpot, whose force jumps
  * where δ reaches 0): the impulse the last sample in contact missed or added
  * is applied when the contact is found to have ended, from the last normal
  * force and overlap kept in the history. */
@@ -111,10 +112,24 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
         root_ms = sqrt(mstar * stiff);
         cn = pp->dcoef * root_ms;
     }
-    double fn = fel - cn * vn;
+    double *hb = hist + dm_law_spring_size(TL, D); /* exit slots: last force, overlap */
+    double vnd = vn; /* the normal velocity the dashpot sees */
+    if (dm_law_exit(NL, DL) && !pp->clamp && hb[1] > 0.0) {
+        /* the contact's own force change over the step, implicitly:
+         * v = v_pred + h (F_new - F_last)/m*, F_new = k δ - c v, with h the
+         * part of the step the integrator's second kick covers */
+        const double hm = (1.0 - reach) * dt_hist / mstar;
+        vnd = (vn + hm * (fel - hb[0])) / (1.0 + hm * cn);
+    }
+    double fn = fel - cn * vnd;
+    if (pp->clamp && fn < 0.0)
+        fn = 0.0;
+    const double fn_now = fn;
     if (dm_law_entry(DL) && dt_hist > 0.0) {
         /* first sample of a new contact: age from the overlap under the
-         * current deceleration, then onset-exponent weights (see above) */
+         * current deceleration, then the onset-exponent weight (see above):
+         * the impulse from contact to the end of the sample's window,
+         * ∫ (t/age)^p dt over [0, age + reach Δt], divided by Δt */
         const double va = -vn;
         if (va > 0.0 && delta < va * dt_hist) {
             const double dec = fn / mstar;
@@ -123,28 +138,21 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
                 age = (sqrt(va * va + 2.0 * dec * delta) - va) / dec;
             if (age < dt_hist) {
                 const double a = age / dt_hist, e = a + reach; /* in steps */
-                double w_el, w_d;
-                if (NL == DEMILL_NORMAL_LINEAR) {
-                    w_el = e * e / (2.0 * a);
-                    w_d = e;
-                } else {
-                    w_el = e * e * sqrt(e) / (2.5 * a * sqrt(a));
-                    w_d = e * sqrt(sqrt(e)) / (1.25 * sqrt(sqrt(a)));
-                }
-                fn = w_el * fel + w_d * (fn - fel);
+                const double w_d = NL == DEMILL_NORMAL_LINEAR
+                                       ? e
+                                       : e * sqrt(sqrt(e)) / (1.25 * sqrt(sqrt(a)));
+                fn = fel + w_d * (fn - fel);
             }
         }
     }
-    if (pp->clamp && fn < 0.0)
-        fn = 0.0;
     if (dm_law_exit(NL, DL) && dt_hist > 0.0) {
-        hist[dm_law_spring_size(TL, D)] = fn;
-        hist[dm_law_spring_size(TL, D) + 1] = delta;
+        hb[0] = fn_now;
+        hb[1] = delta;
     }
     o->fn = fn;
     o->fel = fel;
     if (tally)
-        t->diss_normal -= (fn - fel) * vn * dt_hist;
+        t->diss_normal -= (fn - fel) * vnd * dt_hist;
 
     /* tangential law (§4) */
     double vt[3], dt_rate[3], dn = 0.0;
@@ -191,62 +199,65 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
             ct = pp->ct_factor * pp->cn;
         if (DL == DEMILL_DAMPING_RESTITUTION)
             ct = pp->ct_factor * pp->dcoef * sqrt(mstar * kt);
+        /* spring displacement: accumulate the step's relative displacement,
+         * rotated into the tangent plane by removing its normal part (as
+         * LIGGGHTS does; in 2D it is a scalar along t = (-n_y, n_x), which
+         * turns with the contact by construction). The spring and dashpot
+         * force together is capped at μ|F_n|; on slip the spring is reset to
+         * carry the capped force. Dissipation is the work the contact absorbs
+         * (the force times the velocity at the sample, over the step: the
+         * impulse window in which the integrator applies it) less the change
+         * of spring energy, so that the spring itself books no loss. */
+        const int NS = D == 3 ? 3 : 1;
+        double xi[3], ds[3], ftr[3], vtl[3], e_old = 0.0;
         if (D == 3) {
-            /* spring displacement: accumulate, then rotate into the tangent
-             * plane by removing its normal part (as LIGGGHTS does) */
-            double xi[3], xn = 0.0;
             for (int c = 0; c < 3; c++) {
-                xi[c] = hist[c] + dt_rate[c] * dt_hist;
-                xn += xi[c] * n[c];
+                ds[c] = dt_rate[c] * dt_hist;
+                vtl[c] = vt[c];
             }
-            double x2 = 0.0;
-            for (int c = 0; c < 3; c++) {
-                xi[c] -= xn * n[c];
-                x2 += xi[c] * xi[c];
-            }
-            if (tally)
-                t->diss_tangential += 0.5 * kt * xn * xn;
-            double fs2 = kt * kt * x2;
-            if (fs2 > cap * cap) {
-                /* slip: the spring is shortened so that it carries the cap */
-                double ratio = cap / sqrt(fs2);
-                if (tally)
-                    t->diss_friction += 0.5 * kt * x2 * (1.0 - ratio * ratio);
-                for (int c = 0; c < 3; c++) {
-                    xi[c] *= ratio;
-                    o->ft[c] = -kt * xi[c];
-                }
-            } else {
-                double vt2 = 0.0;
-                for (int c = 0; c < 3; c++) {
-                    o->ft[c] = -kt * xi[c] - ct * vt[c];
-                    vt2 += vt[c] * vt[c];
-                }
-                if (tally)
-                    t->diss_tangential += ct * vt2 * dt_hist;
-            }
-            for (int c = 0; c < 3; c++)
-                hist[c] = xi[c];
         } else {
-            /* 2D: the displacement is a scalar along t = (-n_y, n_x), which
-             * turns with the contact by construction */
-            double tx = -n[1], ty = n[0];
-            double vts = vt[0] * tx + vt[1] * ty;
-            double s = hist[0] + (dt_rate[0] * tx + dt_rate[1] * ty) * dt_hist, fs = -kt * s, ftm;
-            if (fs * fs > cap * cap) {
-                double ratio = cap / fabs(fs);
-                if (tally)
-                    t->diss_friction += 0.5 * kt * s * s * (1.0 - ratio * ratio);
-                s *= ratio;
-                ftm = -kt * s;
-            } else {
-                ftm = fs - ct * vts;
-                if (tally)
-                    t->diss_tangential += ct * vts * vts * dt_hist;
-            }
-            hist[0] = s;
-            o->ft[0] = ftm * tx;
-            o->ft[1] = ftm * ty;
+            const double tx = -n[1], ty = n[0];
+            ds[0] = (dt_rate[0] * tx + dt_rate[1] * ty) * dt_hist;
+            vtl[0] = vt[0] * tx + vt[1] * ty;
+        }
+        double xn = 0.0;
+        for (int c = 0; c < NS; c++) {
+            e_old += hist[c] * hist[c];
+            xi[c] = hist[c] + ds[c];
+            if (D == 3)
+                xn += xi[c] * n[c];
+        }
+        double f2 = 0.0;
+        for (int c = 0; c < NS; c++) {
+            if (D == 3)
+                xi[c] -= xn * n[c];
+            ftr[c] = -kt * xi[c] - ct * vtl[c];
+            f2 += ftr[c] * ftr[c];
+        }
+        const int slip = f2 > cap * cap;
+        const double scale = slip ? cap / sqrt(f2) : 1.0;
+        double work = 0.0, e_new = 0.0;
+        for (int c = 0; c < NS; c++) {
+            ftr[c] *= scale;
+            if (slip)
+                xi[c] = -ftr[c] / kt;
+            work -= ftr[c] * vtl[c] * dt_hist;
+            e_new += xi[c] * xi[c];
+            hist[c] = xi[c];
+        }
+        if (tally) {
+            const double lost = work - 0.5 * kt * (e_new - e_old);
+            if (slip)
+                t->diss_friction += lost;
+            else
+                t->diss_tangential += lost;
+        }
+        if (D == 3) {
+            for (int c = 0; c < 3; c++)
+                o->ft[c] = ftr[c];
+        } else {
+            o->ft[0] = -n[1] * ftr[0];
+            o->ft[1] = n[0] * ftr[0];
         }
     }
 

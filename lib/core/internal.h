@@ -51,9 +51,11 @@ typedef struct dm_laws {
 } dm_laws;
 
 #define DM_KERNELS (2 * 3 * 4 * 2)
+#define DM_MAX_HIST 5 /* history doubles per contact, at most (contact/law.h) */
 int dm_kernel_index(dm_laws laws);
 dm_laws dm_kernel_laws(int kernel);
 int dm_kernel_hist_size(int kernel, int dim);
+int dm_kernel_spring_size(int kernel, int dim);
 
 /* Resolved constants of one material pair, read by the contact kernels. */
 typedef struct dm_pairparam {
@@ -130,7 +132,7 @@ typedef struct dm_grid {
     /* contacts whose history is carried over a build */
     uint32_t *ci, *cj;
     uint16_t *ck;             /* kernel (pp) or kernel + DM_KERNELS (pw) */
-    double *ch;               /* 3 doubles each */
+    double *ch;               /* DM_MAX_HIST doubles each */
     uint32_t nc, ccap;
     double lo[3], hi[3];      /* particle bounding box at the last build */
 } dm_grid;

@@ -3,6 +3,7 @@
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 #include "internal.h"
 
@@ -107,12 +108,15 @@ demill_status dm_check_value(demill_world *w, int32_t key, double value)
         return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: value %g is not finite", p->name, value);
     bool below = p->flags & OPEN_LO ? value <= p->lo : value < p->lo;
     bool above = p->flags & OPEN_HI ? value >= p->hi : value > p->hi;
-    if (p->flags & WHOLE && (below || above || value != floor(value)))
-        return dm_fail(w, p->unit[0] == 'e' ? DEMILL_ERR_UNKNOWN_KEY : DEMILL_ERR_INVALID_VALUE,
-                       "%s: %g is not one of the allowed values %g..%g", p->name, value, p->lo,
+    if (p->flags & WHOLE && value != floor(value))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: %.17g is not a whole number", p->name,
+                       value);
+    if (p->flags & WHOLE && (below || above))
+        return dm_fail(w, strcmp(p->unit, "enum") ? DEMILL_ERR_INVALID_VALUE : DEMILL_ERR_UNKNOWN_KEY,
+                       "%s: %.17g is not one of the allowed values %g..%g", p->name, value, p->lo,
                        p->hi);
     if (below || above)
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: %g is outside %s%g, %g%s", p->name,
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: %.17g is outside %s%g, %g%s", p->name,
                        value, p->flags & OPEN_LO ? "(" : "[", p->lo, p->hi,
                        p->flags & OPEN_HI ? ")" : "]");
     return DEMILL_OK;

@@ -219,9 +219,12 @@ DEMILL_API demill_status demill_wall_add_plane(demill_world *w, demill_id materi
     const int flat = w->dim == 2;
     if ((s = check_vec3(w, point, "point", flat)) || (s = check_vec3(w, normal, "normal", flat)))
         return s;
-    double len = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-    if (!(len > 0.0) || !isfinite(len))
+    /* scale by the largest component first, so that no length overflows */
+    double big = fmax(fabs(normal[0]), fmax(fabs(normal[1]), fabs(normal[2])));
+    if (big == 0.0)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "wall_add_plane: normal has zero length");
+    double u[3] = {normal[0] / big, normal[1] / big, normal[2] / big};
+    double len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     uint32_t slot = 0;
     while (slot < w->nwalls && w->walls[slot].kind)
         slot++;
@@ -241,7 +244,7 @@ DEMILL_API demill_status demill_wall_add_plane(demill_world *w, demill_id materi
     wall->material = mat;
     for (int c = 0; c < 3; c++) {
         wall->p0[c] = wall->c0[c] = point[c];
-        wall->n0[c] = normal[c] / len;
+        wall->n0[c] = u[c] / len;
     }
     wall->t0 = w->time;
     wall_at(wall, w->time);

@@ -1,0 +1,241 @@
+/* neighbours.c: the cell-grid neighbour build against an all-pairs oracle.
+ *
+ * On random polydisperse sets (radii spread 10:1) in 2D and 3D, the lists
+ * must hold exactly the pairs an O(N²) loop finds within the interaction
+ * distance r_i + r_j + skin, each once, in the bucket of its material pair's
+ * kernel; the particle-wall lists exactly the particles within r + skin of
+ * each wall. Contact histories must follow their pairs through the re-sort
+ * of particles by cell (the 3D spring vector changing sign when the pair's
+ * order flips), and particle ids must keep naming the same particles.
+ * Internal test: it links the static library and reads the lists directly.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/internal.h"
+#include "testutil.h"
+
+static double urand(void)
+{
+    return rand() / (double)RAND_MAX;
+}
+
+/* A world of n particles with radii in [rmin, 10 rmin], centres uniform in a
+ * box of edge `edge`, two materials (with different kernels) and two walls. */
+static demill_world *random_world(int dim, int n, double edge, demill_id *ids)
+{
+    demill_world *w;
+    demill_id m[2], wall;
+    ck_assert_int_eq(demill_world_create(dim, &w), DEMILL_OK);
+    for (int k = 0; k < 2; k++)
+        DM_OK(w, demill_material_create(w, &m[k]));
+    DM_OK(w, demill_pair_set(w, m[0], m[0], DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ));
+    DM_OK(w, demill_pair_set(w, m[1], m[1], DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
+    DM_OK(w, demill_pair_set(w, m[0], m[1], DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
+    for (int a = 0; a < 2; a++)
+        for (int b = a; b < 2; b++)
+            DM_OK(w, demill_pair_set(w, m[a], m[b], DEMILL_PAIR_TANGENTIAL,
+                                     a == b ? DEMILL_TANGENTIAL_SPRING : DEMILL_TANGENTIAL_MINDLIN));
+    double p0[3] = {0, 0, 0}, n0[3] = {0, 1, 0}, p1[3] = {0, 0, 0}, n1[3] = {1, -1, 0};
+    DM_OK(w, demill_wall_add_plane(w, m[0], p0, n0, &wall));
+    DM_OK(w, demill_wall_add_plane(w, m[1], p1, n1, &wall));
+    const double rmin = 0.001;
+    for (int i = 0; i < n; i++) {
+        double x[3] = {0, 0, 0}, r = rmin * (1 + 9 * urand() * urand());
+        for (int c = 0; c < dim; c++)
+            x[c] = edge * urand();
+        DM_OK(w, demill_particles_add(w, m[i % 2], 1, x, &r, NULL, 0, &ids[i]));
+    }
+    return w;
+}
+
+/* Every listed pair, as handle-index pairs (lo, hi) with its kernel. */
+typedef struct pair_key {
+    uint32_t a, b;
+    int kernel;
+} pair_key;
+
+static int cmp_key(const void *x, const void *y)
+{
+    const pair_key *p = x, *q = y;
+    if (p->a != q->a)
+        return p->a < q->a ? -1 : 1;
+    if (p->b != q->b)
+        return p->b < q->b ? -1 : 1;
+    return 0;
+}
+
+static void check_lists(demill_world *w)
+{
+    const dm_particles *P = &w->p;
+    const int D = w->dim;
+    const uint32_t n = P->n;
+    size_t listed = 0, cap = 1024;
+    pair_key *got = malloc(cap * sizeof *got);
+    for (int k = 0; k < DM_KERNELS; k++) {
+        const dm_bucket *b = &w->pp.b[k];
+        for (uint32_t p = 0; p < b->n; p++) {
+            ck_assert_msg(b->i[p] < b->j[p], "pair listed with i >= j");
+            if (listed == cap)
+                got = realloc(got, (cap *= 2) * sizeof *got);
+            uint32_t hi = P->hid[b->i[p]], hj = P->hid[b->j[p]];
+            got[listed++] = (pair_key){hi < hj ? hi : hj, hi < hj ? hj : hi, k};
+        }
+    }
+    size_t want_n = 0, wcap = 1024;
+    pair_key *want = malloc(wcap * sizeof *want);
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t j = i + 1; j < n; j++) {
+            double r2 = 0, reach = P->r[i] + P->r[j] + w->skin;
+            for (int c = 0; c < D; c++)
+                r2 += (P->x[D * j + c] - P->x[D * i + c]) * (P->x[D * j + c] - P->x[D * i + c]);
+            if (r2 >= reach * reach)
+                continue;
+            if (want_n == wcap)
+                want = realloc(want, (wcap *= 2) * sizeof *want);
+            uint32_t hi = P->hid[i], hj = P->hid[j];
+            int kernel = w->ptab[P->mat[i] * w->nmat_tab + P->mat[j]].kernel;
+            want[want_n++] = (pair_key){hi < hj ? hi : hj, hi < hj ? hj : hi, kernel};
+        }
+    qsort(got, listed, sizeof *got, cmp_key);
+    qsort(want, want_n, sizeof *want, cmp_key);
+    ck_assert_msg(want_n > n / 2, "the oracle found only %zu pairs: test too sparse", want_n);
+    ck_assert_msg(listed == want_n, "%zu pairs listed, the oracle finds %zu", listed, want_n);
+    for (size_t k = 0; k < listed; k++) {
+        ck_assert_msg(got[k].a == want[k].a && got[k].b == want[k].b,
+                      "pair %zu differs from the oracle", k);
+        ck_assert_int_eq(got[k].kernel, want[k].kernel);
+    }
+    free(got);
+    free(want);
+
+    /* walls: exactly the particles within r + skin of each wall */
+    size_t wall_listed = 0, wall_want = 0;
+    for (int k = 0; k < DM_KERNELS; k++)
+        wall_listed += w->pw.b[k].n;
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t k = 0; k < w->nwalls; k++) {
+            int close = dm_wall_distance(&w->walls[k], P->x + D * i, D) < P->r[i] + w->skin;
+            wall_want += close;
+            int found = 0;
+            for (int q = 0; q < DM_KERNELS && !found; q++)
+                for (uint32_t p = 0; p < w->pw.b[q].n; p++)
+                    found |= w->pw.b[q].i[p] == i && w->pw.b[q].j[p] == k;
+            ck_assert_msg(found == close, "particle %u and wall %u: listed %d, within reach %d", i,
+                          k, found, close);
+        }
+    ck_assert_uint_eq(wall_listed, wall_want);
+}
+
+START_TEST(grid_matches_all_pairs)
+{
+    srand(42);
+    for (int dim = 2; dim <= 3; dim++)
+        for (int trial = 0; trial < 3; trial++) {
+            const int n = 600;
+            demill_id ids[600];
+            /* dense enough that many pairs are near, at several skins */
+            demill_world *w = random_world(dim, n, dim == 3 ? 0.04 : 0.15, ids);
+            DM_OK(w, demill_world_set(w, DEMILL_WORLD_SKIN, 0.05 + 0.5 * trial));
+            DM_OK(w, dm_resolve_pairs(w, true));
+            DM_OK(w, dm_nlist_build(w));
+            check_lists(w);
+            /* after removing a third and moving the rest, a new build agrees too */
+            DM_OK(w, demill_particles_remove(w, n / 3, ids));
+            double *x = malloc(3 * (size_t)w->p.n * sizeof *x);
+            size_t count;
+            DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_POSITION, x, w->p.n, &count));
+            for (size_t k = 0; k < dim * count; k++)
+                if (k % 3 < (size_t)dim)
+                    x[k] += 0.002 * (urand() - 0.5);
+            DM_OK(w, demill_particles_write(w, DEMILL_PARTICLE_POSITION, x, count));
+            DM_OK(w, dm_nlist_build(w));
+            check_lists(w);
+            free(x);
+            demill_world_destroy(w);
+        }
+}
+END_TEST
+
+/* Marks every listed contact's history with a value derived from the pair's
+ * handles, rebuilds after a shuffle of the storage order, and checks that
+ * each value followed its pair. */
+START_TEST(history_follows_pairs)
+{
+    srand(7);
+    for (int dim = 2; dim <= 3; dim++) {
+        demill_id ids[400];
+        demill_world *w = random_world(dim, 400, dim == 3 ? 0.03 : 0.1, ids);
+        DM_OK(w, dm_resolve_pairs(w, true));
+        DM_OK(w, dm_nlist_build(w));
+        const dm_particles *P = &w->p;
+        size_t marked = 0;
+        pair_key *before = malloc(40000 * sizeof *before);
+        for (int k = 0; k < DM_KERNELS; k++) {
+            dm_bucket *b = &w->pp.b[k];
+            for (uint32_t p = 0; p < b->n; p++) {
+                uint32_t hi = P->hid[b->i[p]], hj = P->hid[b->j[p]];
+                for (int c = 0; c < b->hs; c++)
+                    b->hist[(size_t)b->hs * p + c] = 1000.0 * hi + hj + 0.25 * c;
+                if (b->hs && marked < 40000)
+                    before[marked++] = (pair_key){hi < hj ? hi : hj, hi < hj ? hj : hi, k};
+            }
+        }
+        qsort(before, marked, sizeof *before, cmp_key);
+        ck_assert_msg(marked > 100, "only %zu contacts with history", marked);
+        /* move every particle by a small amount so that the cell order changes
+         * but no pair leaves the lists */
+        for (uint32_t i = 0; i < w->p.n; i++)
+            for (int c = 0; c < dim; c++)
+                w->p.x[dim * i + c] += 0.2 * w->skin * (urand() - 0.5);
+        DM_OK(w, dm_nlist_build(w));
+        size_t checked = 0;
+        for (int k = 0; k < DM_KERNELS; k++) {
+            dm_bucket *b = &w->pp.b[k];
+            int spring = dm_kernel_spring_size(k, dim);
+            for (uint32_t p = 0; p < b->n; p++) {
+                uint32_t hi = P->hid[b->i[p]], hj = P->hid[b->j[p]];
+                pair_key key = {hi < hj ? hi : hj, hi < hj ? hj : hi, k};
+                int was_listed = bsearch(&key, before, marked, sizeof *before, cmp_key) != NULL;
+                for (int c = 0; c < b->hs; c++) {
+                    double v = b->hist[(size_t)b->hs * p + c];
+                    if (!was_listed) { /* a pair that came into reach starts afresh */
+                        ck_assert_msg(v == 0.0, "new pair (%u, %u) has history %g", hi, hj, v);
+                        continue;
+                    }
+                    double same = 1000.0 * hi + hj + 0.25 * c, swapped = 1000.0 * hj + hi + 0.25 * c;
+                    /* a pair whose order flipped carries the other mark; its
+                     * 3D spring vector is negated */
+                    double flipped = c < spring && dim == 3 ? -swapped : swapped;
+                    ck_assert_msg(v == same || v == flipped,
+                                  "pair (%u, %u) slot %d carries %g, expected %g or %g", hi, hj, c,
+                                  v, same, flipped);
+                    checked++;
+                }
+            }
+        }
+        ck_assert_msg(checked > 100, "only %zu history values checked", checked);
+        free(before);
+        /* ids still name the particles they named */
+        double r;
+        for (int k = 0; k < 400; k += 37) {
+            DM_OK(w, demill_particle_get(w, ids[k], DEMILL_PARTICLE_RADIUS, &r));
+            uint32_t slot;
+            DM_OK(w, dm_resolve(w, ids[k], DEMILL_KIND_PARTICLE, "id", &slot));
+            ck_assert(P->hid[slot] == (uint32_t)(ids[k] & 0xffffffffu));
+            ck_assert(r == P->r[slot]);
+        }
+        demill_world_destroy(w);
+    }
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("neighbours");
+    TCase *tc = tcase_create("grid");
+    tcase_add_test(tc, grid_matches_all_pairs);
+    tcase_add_test(tc, history_follows_pairs);
+    suite_add_tcase(s, tc);
+    return dm_test_run(s);
+}
