@@ -10,38 +10,15 @@
 
 #include "../core/internal.h"
 
-static int grow(void **p, size_t elem, uint32_t *cap, uint64_t need)
-{
-    if (need <= *cap)
-        return 0;
-    uint64_t c = *cap ? *cap : 256;
-    while (c < need)
-        c *= 2;
-    if (c > UINT32_MAX)
-        return -1;
-    void *q = realloc(*p, (size_t)c * elem);
-    if (!q)
-        return -1;
-    *p = q;
-    *cap = (uint32_t)c;
-    return 0;
-}
-
 static int bucket_push(dm_bucket *b, uint32_t i, uint32_t j)
 {
     if (b->n == b->cap) {
-        uint32_t cap = b->cap;
-        uint32_t cap_i = cap, cap_j = cap;
-        if (grow((void **)&b->i, sizeof *b->i, &cap_i, (uint64_t)b->n + 1) ||
-            grow((void **)&b->j, sizeof *b->j, &cap_j, (uint64_t)b->n + 1))
+        size_t cap = dm_grown_capacity(b->cap, (size_t)b->n + 1);
+        void **const arrays[] = {(void **)&b->i, (void **)&b->j, (void **)&b->hist};
+        const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), (size_t)b->hs * sizeof(double)};
+        if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, b->hs ? 3 : 2, cap))
             return -1;
-        if (b->hs) {
-            void *h = realloc(b->hist, (size_t)cap_i * b->hs * sizeof *b->hist);
-            if (!h)
-                return -1;
-            b->hist = h;
-        }
-        b->cap = cap_i;
+        b->cap = (uint32_t)cap;
     }
     b->i[b->n] = i;
     b->j[b->n] = j;
@@ -119,21 +96,14 @@ int dm_grid_reserve(dm_grid *g, uint32_t n)
 {
     if (n + 1 <= g->cap)
         return 0;
-    uint32_t cap = g->cap ? g->cap : 256;
-    while (cap < n + 1)
-        cap *= 2;
-    uint32_t **arrays[] = {&g->cell_of, &g->order, &g->inv, &g->row};
-    for (size_t a = 0; a < sizeof arrays / sizeof arrays[0]; a++) {
-        uint32_t *q = realloc(*arrays[a], (size_t)cap * sizeof *q);
-        if (!q)
-            return -1;
-        *arrays[a] = q;
-    }
-    double *sc = realloc(g->scratch, (size_t)cap * 3 * sizeof *sc);
-    if (!sc)
+    size_t cap = dm_grown_capacity(g->cap, (size_t)n + 1);
+    void **const arrays[] = {(void **)&g->cell_of, (void **)&g->order, (void **)&g->inv,
+                             (void **)&g->row, (void **)&g->scratch};
+    const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint32_t),
+                            sizeof(uint32_t), 3 * sizeof(double)};
+    if (dm_grow_arrays(arrays, sizes, 5, cap))
         return -1;
-    g->scratch = sc;
-    g->cap = cap;
+    g->cap = (uint32_t)cap;
     return 0;
 }
 
@@ -154,17 +124,14 @@ static int carry_collect(demill_world *w)
                 if (!any)
                     continue;
                 if (g->nc == g->ccap) {
-                    uint32_t cap = g->ccap, c1 = cap, c2 = cap, c3 = cap;
-                    uint64_t need = (uint64_t)g->nc + 1;
-                    if (grow((void **)&g->ci, sizeof *g->ci, &c1, need) ||
-                        grow((void **)&g->cj, sizeof *g->cj, &c2, need) ||
-                        grow((void **)&g->ck, sizeof *g->ck, &c3, need))
+                    size_t cap = dm_grown_capacity(g->ccap, (size_t)g->nc + 1);
+                    void **const arrays[] = {(void **)&g->ci, (void **)&g->cj, (void **)&g->ck,
+                                             (void **)&g->ch};
+                    const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint16_t),
+                                            DM_MAX_HIST * sizeof(double)};
+                    if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 4, cap))
                         return -1;
-                    double *ch = realloc(g->ch, (size_t)c1 * DM_MAX_HIST * sizeof *ch);
-                    if (!ch)
-                        return -1;
-                    g->ch = ch;
-                    g->ccap = c1;
+                    g->ccap = (uint32_t)cap;
                 }
                 g->ci[g->nc] = b->i[p];
                 g->cj[g->nc] = b->j[p];

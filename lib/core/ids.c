@@ -137,3 +137,12 @@ demill_id dm_material_id(const demill_world *w, uint32_t material)
 {
     return dm_id_make(w->tag, DEMILL_KIND_MATERIAL, 0, material);
 }
+
+/* The entry check of an API function that names an object: the world is a
+ * live world and id names a live object of `kind` in it. */
+demill_status dm_enter(const demill_world *w, demill_id id, int kind, const char *what,
+                       uint32_t *slot)
+{
+    demill_status s = dm_check_world(w);
+    return s ? s : dm_resolve(w, id, kind, what, slot);
+}

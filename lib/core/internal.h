@@ -209,6 +209,10 @@ demill_status dm_fail(demill_world *w, demill_status code, const char *fmt, ...)
 demill_status dm_check_world(const demill_world *w);
 void dm_clear_error(demill_world *w);
 
+/* alloc.c */
+int dm_grow_arrays(void **const *arrays, const size_t *sizes, size_t n, size_t cap);
+size_t dm_grown_capacity(size_t cap, size_t need);
+
 /* ids.c */
 int dm_handles_reserve(dm_handles *h, uint32_t extra);
 uint32_t dm_handles_issue(dm_handles *h, uint32_t slot);
@@ -216,6 +220,8 @@ void dm_handles_release(dm_handles *h, uint32_t index);
 void dm_handles_free(dm_handles *h);
 demill_status dm_resolve(const demill_world *w, demill_id id, int kind, const char *what,
                          uint32_t *slot);
+demill_status dm_enter(const demill_world *w, demill_id id, int kind, const char *what,
+                       uint32_t *slot);
 demill_id dm_particle_id(const demill_world *w, uint32_t storage);
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
 demill_id dm_material_id(const demill_world *w, uint32_t material);

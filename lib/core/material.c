@@ -60,10 +60,8 @@ DEMILL_API demill_status demill_material_set(demill_world *w, demill_id material
                                              double value)
 {
     uint32_t mi;
-    demill_status s = dm_check_world(w);
+    demill_status s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mi);
     if (s)
-        return s;
-    if ((s = dm_resolve(w, material, DEMILL_KIND_MATERIAL, "material", &mi)))
         return s;
     double *field = material_field(&w->mats[mi], key);
     if (!field)
@@ -91,10 +89,8 @@ DEMILL_API demill_status demill_material_get(const demill_world *cw, demill_id m
 {
     demill_world *w = (demill_world *)cw;
     uint32_t mi;
-    demill_status s = dm_check_world(w);
+    demill_status s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mi);
     if (s)
-        return s;
-    if ((s = dm_resolve(w, material, DEMILL_KIND_MATERIAL, "material", &mi)))
         return s;
     if (!value)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "material_get: value is NULL");
@@ -196,15 +192,20 @@ static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairp
     pp->roll_reg = 2.0 * v[DM_PK_ROLLING_REG];
 }
 
+/* The entry check of the pair functions: a live world and two materials. */
+static demill_status enter_pair(const demill_world *w, demill_id a, demill_id b, uint32_t *ma,
+                                uint32_t *mb)
+{
+    demill_status s = dm_enter(w, a, DEMILL_KIND_MATERIAL, "a", ma);
+    return s ? s : dm_resolve(w, b, DEMILL_KIND_MATERIAL, "b", mb);
+}
+
 DEMILL_API demill_status demill_pair_set(demill_world *w, demill_id a, demill_id b, int32_t key,
                                          double value)
 {
     uint32_t ma, mb;
-    demill_status s = dm_check_world(w);
+    demill_status s = enter_pair(w, a, b, &ma, &mb);
     if (s)
-        return s;
-    if ((s = dm_resolve(w, a, DEMILL_KIND_MATERIAL, "a", &ma)) ||
-        (s = dm_resolve(w, b, DEMILL_KIND_MATERIAL, "b", &mb)))
         return s;
     int pk = pair_key_index(key);
     bool law = key >= DEMILL_PAIR_NORMAL && key <= DEMILL_PAIR_ROLLING;
@@ -248,11 +249,8 @@ DEMILL_API demill_status demill_pair_get(const demill_world *cw, demill_id a, de
 {
     demill_world *w = (demill_world *)cw;
     uint32_t ma, mb;
-    demill_status s = dm_check_world(w);
+    demill_status s = enter_pair(w, a, b, &ma, &mb);
     if (s)
-        return s;
-    if ((s = dm_resolve(w, a, DEMILL_KIND_MATERIAL, "a", &ma)) ||
-        (s = dm_resolve(w, b, DEMILL_KIND_MATERIAL, "b", &mb)))
         return s;
     if (!value)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "pair_get: value is NULL");

@@ -19,30 +19,21 @@ static int storage_reserve(demill_world *w, uint32_t need)
     dm_particles *P = &w->p;
     if (need <= P->cap)
         return 0;
-    uint32_t cap = P->cap ? P->cap : 64;
-    while (cap < need)
-        cap = cap > UINT32_MAX / 2 ? need : cap * 2;
-    const size_t D = (size_t)w->dim, W = (size_t)wdim(w);
-    struct {
-        void **p;
-        size_t size;
-    } arr[] = {
-        {(void **)&P->x, D * sizeof(double)},   {(void **)&P->v, D * sizeof(double)},
-        {(void **)&P->f, D * sizeof(double)},   {(void **)&P->x0, D * sizeof(double)},
-        {(void **)&P->vp, D * sizeof(double)},  {(void **)&P->wp, W * sizeof(double)},
-        {(void **)&P->w, W * sizeof(double)},   {(void **)&P->t, W * sizeof(double)},
-        {(void **)&P->theta, sizeof(double)},   {(void **)&P->r, sizeof(double)},
-        {(void **)&P->m, sizeof(double)},       {(void **)&P->im, sizeof(double)},
-        {(void **)&P->iinv, sizeof(double)},    {(void **)&P->mat, sizeof(uint16_t)},
-        {(void **)&P->hid, sizeof(uint32_t)},
-    };
-    for (size_t k = 0; k < sizeof arr / sizeof arr[0]; k++) {
-        void *q = realloc(*arr[k].p, (size_t)cap * arr[k].size);
-        if (!q)
-            return -1;
-        *arr[k].p = q;
-    }
-    P->cap = cap;
+    size_t cap = dm_grown_capacity(P->cap, need);
+    if (cap > UINT32_MAX)
+        cap = need;
+    const size_t D = (size_t)w->dim * sizeof(double), W = (size_t)wdim(w) * sizeof(double);
+    void **const arrays[] = {(void **)&P->x,  (void **)&P->v,     (void **)&P->f,
+                             (void **)&P->x0, (void **)&P->vp,    (void **)&P->wp,
+                             (void **)&P->w,  (void **)&P->t,     (void **)&P->theta,
+                             (void **)&P->r,  (void **)&P->m,     (void **)&P->im,
+                             (void **)&P->iinv, (void **)&P->mat, (void **)&P->hid};
+    const size_t sizes[] = {D, D, D, D, D, W, W, W, sizeof(double), sizeof(double),
+                            sizeof(double), sizeof(double), sizeof(double), sizeof(uint16_t),
+                            sizeof(uint32_t)};
+    if (dm_grow_arrays(arrays, sizes, sizeof sizes / sizeof sizes[0], cap))
+        return -1;
+    P->cap = (uint32_t)cap;
     return 0;
 }
 
@@ -239,10 +230,8 @@ DEMILL_API demill_status demill_particles_add(demill_world *w, demill_id materia
                                               demill_id *ids)
 {
     uint32_t mat;
-    demill_status s = dm_check_world(w);
+    demill_status s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mat);
     if (s)
-        return s;
-    if ((s = dm_resolve(w, material, DEMILL_KIND_MATERIAL, "material", &mat)))
         return s;
     if (flags & ~(uint32_t)DEMILL_ADD_NO_OVERLAP)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "particles_add: unknown flags 0x%x",
@@ -583,11 +572,8 @@ DEMILL_API demill_status demill_particle_get(const demill_world *cw, demill_id p
 {
     demill_world *w = (demill_world *)cw;
     uint32_t i;
-    demill_status s = dm_check_world(w);
-    if (s)
-        return s;
-    if ((s = dm_resolve(w, particle, DEMILL_KIND_PARTICLE, "particle", &i)) ||
-        (s = check_field(w, field, 0)))
+    demill_status s = dm_enter(w, particle, DEMILL_KIND_PARTICLE, "particle", &i);
+    if (s || (s = check_field(w, field, 0)))
         return s;
     if (!out)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "particle_get: out is NULL");
@@ -601,11 +587,8 @@ DEMILL_API demill_status demill_particle_set(demill_world *w, demill_id particle
                                              const double *in)
 {
     uint32_t i;
-    demill_status s = dm_check_world(w);
-    if (s)
-        return s;
-    if ((s = dm_resolve(w, particle, DEMILL_KIND_PARTICLE, "particle", &i)) ||
-        (s = check_field(w, field, 1)))
+    demill_status s = dm_enter(w, particle, DEMILL_KIND_PARTICLE, "particle", &i);
+    if (s || (s = check_field(w, field, 1)))
         return s;
     if (!in)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "particle_set: in is NULL");

@@ -144,17 +144,14 @@ int dm_wgeom_reserve(demill_world *w)
         total += w->pw.b[k].n;
     if (total <= g->cap)
         return 0;
-    uint32_t cap = g->cap ? g->cap : 64;
-    while (cap < total)
-        cap *= 2;
-    double **arr[] = {&g->nrm, &g->vw, &g->cp, &g->delta};
-    for (int a = 0; a < 4; a++) {
-        double *q = realloc(*arr[a], (size_t)cap * (a < 3 ? 3 : 1) * sizeof *q);
-        if (!q)
-            return -1;
-        *arr[a] = q;
-    }
-    g->cap = cap;
+    size_t cap = dm_grown_capacity(g->cap, total);
+    void **const arrays[] = {(void **)&g->nrm, (void **)&g->vw, (void **)&g->cp,
+                             (void **)&g->delta};
+    const size_t sizes[] = {3 * sizeof(double), 3 * sizeof(double), 3 * sizeof(double),
+                            sizeof(double)};
+    if (dm_grow_arrays(arrays, sizes, 4, cap))
+        return -1;
+    g->cap = (uint32_t)cap;
     return 0;
 }
 
@@ -208,10 +205,8 @@ DEMILL_API demill_status demill_wall_add_plane(demill_world *w, demill_id materi
                                                demill_id *out)
 {
     uint32_t mat;
-    demill_status s = dm_check_world(w);
+    demill_status s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mat);
     if (s)
-        return s;
-    if ((s = dm_resolve(w, material, DEMILL_KIND_MATERIAL, "material", &mat)))
         return s;
     if (!point || !normal || !out)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "wall_add_plane: %s is NULL",
@@ -265,10 +260,8 @@ DEMILL_API demill_status demill_wall_add_plane(demill_world *w, demill_id materi
 DEMILL_API demill_status demill_wall_remove(demill_world *w, demill_id id)
 {
     uint32_t slot;
-    demill_status s = dm_check_world(w);
+    demill_status s = dm_enter(w, id, DEMILL_KIND_WALL, "wall", &slot);
     if (s)
-        return s;
-    if ((s = dm_resolve(w, id, DEMILL_KIND_WALL, "wall", &slot)))
         return s;
     dm_clist_drop_wall(w, slot);
     dm_wall *wall = &w->walls[slot];
@@ -287,10 +280,8 @@ DEMILL_API demill_status demill_wall_set_motion(demill_world *w, demill_id id,
                                                 const double centre[3])
 {
     uint32_t slot;
-    demill_status s = dm_check_world(w);
+    demill_status s = dm_enter(w, id, DEMILL_KIND_WALL, "wall", &slot);
     if (s)
-        return s;
-    if ((s = dm_resolve(w, id, DEMILL_KIND_WALL, "wall", &slot)))
         return s;
     const int flat = w->dim == 2;
     if ((velocity && (s = check_vec3(w, velocity, "velocity", flat))) ||
@@ -318,10 +309,8 @@ DEMILL_API demill_status demill_wall_get(const demill_world *cw, demill_id id, i
 {
     demill_world *w = (demill_world *)cw;
     uint32_t slot;
-    demill_status s = dm_check_world(w);
+    demill_status s = dm_enter(w, id, DEMILL_KIND_WALL, "wall", &slot);
     if (s)
-        return s;
-    if ((s = dm_resolve(w, id, DEMILL_KIND_WALL, "wall", &slot)))
         return s;
     if (!out)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "wall_get: out is NULL");
