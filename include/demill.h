@@ -8,6 +8,7 @@
  *   demill/particles.h  particles: add, remove, read, write
  *   demill/wall.h       walls with prescribed motion
  *   demill/query.h      contacts and energies
+ *   demill/drum.h       the mill: drum, lifters, charge, power, spectrum
  *
  * A minimal program:
  *
@@ -30,5 +31,6 @@
 #include "demill/particles.h"
 #include "demill/wall.h"
 #include "demill/query.h"
+#include "demill/drum.h"
 
 #endif /* DEMILL_H */

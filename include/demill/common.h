@@ -114,7 +114,8 @@ enum {
     DEMILL_KIND_NONE = 0,
     DEMILL_KIND_MATERIAL = 1,
     DEMILL_KIND_PARTICLE = 2,
-    DEMILL_KIND_WALL = 3
+    DEMILL_KIND_WALL = 3,
+    DEMILL_KIND_DRUM = 4
 };
 
 /** The kind encoded in an id (DEMILL_KIND_*), without checking that the

@@ -107,11 +107,13 @@ enum {
      *  the normal stiffness (viscous: c_t = factor × c_n). Default 1. */
     DEMILL_PAIR_TANGENTIAL_DAMPING_FACTOR = 316,
     /** Factor on the regularisation of DEMILL_TANGENTIAL_COULOMB, > 0:
-     *  γ_t = factor × 2 √(m* S_n), S_n the normal contact stiffness (k_n, or
-     *  2 E* √(R* δ) for Hertz). Default 1. */
+     *  γ_t = factor × √(m* S_n), S_n the normal contact stiffness (k_n, or
+     *  2 E* √(R* δ) for Hertz). The default 1 keeps the regularisation stable
+     *  (explicitly integrated, against the tangential effective mass of a
+     *  rolling sphere, 2/7 m*) down to about 6 steps per contact. */
     DEMILL_PAIR_COULOMB_REGULARISATION = 317,
     /** Factor on the regularisation of DEMILL_ROLLING_CONSTANT_TORQUE, > 0:
-     *  γ_r = factor × 2 R*² √(m* S_n). Default 1. */
+     *  γ_r = factor × R*² √(m* S_n). Default 1. */
     DEMILL_PAIR_ROLLING_REGULARISATION = 318,
     /** 1 (default): the normal force never pulls (F_n >= 0). 0: the damped
      *  normal force may become slightly attractive at the end of a contact,

@@ -28,19 +28,26 @@ static int bucket_push(dm_bucket *b, uint32_t i, uint32_t j)
     return 0;
 }
 
-static void clist_empty(dm_clist *l, int dim)
+/* Empties the lists; each bucket's history holds its kernel's slots and,
+ * while a collision spectrum is recorded, the contact's dissipated energy. */
+static void clist_empty(const demill_world *w, dm_clist *l)
 {
     for (int k = 0; k < DM_KERNELS; k++) {
-        l->b[k].kernel = k;
-        l->b[k].hs = dm_kernel_hist_size(k, dim);
-        l->b[k].n = 0;
+        dm_bucket *b = &l->b[k];
+        const int hs = dm_kernel_hist_size(k, w->dim) + (w->events ? 1 : 0);
+        if (hs != b->hs) { /* a new layout: the arrays are sized afresh */
+            b->hs = hs;
+            b->cap = 0;
+        }
+        b->kernel = k;
+        b->n = 0;
     }
 }
 
 void dm_clist_clear(demill_world *w)
 {
-    clist_empty(&w->pp, w->dim);
-    clist_empty(&w->pw, w->dim);
+    clist_empty(w, &w->pp);
+    clist_empty(w, &w->pw);
 }
 
 void dm_clist_drop_wall(demill_world *w, uint32_t wall_slot)
@@ -136,7 +143,9 @@ static int carry_collect(demill_world *w)
                 g->ci[g->nc] = b->i[p];
                 g->cj[g->nc] = b->j[p];
                 g->ck[g->nc] = (uint16_t)(k + side * DM_KERNELS);
-                memcpy(g->ch + DM_MAX_HIST * (size_t)g->nc, h, (size_t)b->hs * sizeof *h);
+                double *ch = g->ch + DM_MAX_HIST * (size_t)g->nc;
+                memset(ch, 0, DM_MAX_HIST * sizeof *ch); /* a longer new layout gets zeros */
+                memcpy(ch, h, (size_t)b->hs * sizeof *h);
                 g->nc++;
             }
         }
@@ -276,8 +285,7 @@ demill_status dm_nlist_build(demill_world *w)
     dm_particles_permute(w, g->order);
 
     /* pairs within reach, each once, into the bucket of their kernel */
-    clist_empty(&w->pp, D);
-    clist_empty(&w->pw, D);
+    dm_clist_clear(w);
     const dm_pairparam *tab = w->ptab;
     const uint32_t nm = w->nmat_tab;
     const double skin = w->skin;

@@ -183,12 +183,13 @@ DM_INLINE void dm_pp_loop(const int D, const int NL, const int DL, const int TL,
                           dm_kernel_args *a)
 {
     const int W = D == 3 ? 3 : 1;
-    const int HS = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_spring_size(TL, D);
+    const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
     const int EXIT = dm_law_exit(NL, DL);
     const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
     demill_world *w = a->w;
     const dm_particles *P = &w->p;
     const dm_bucket *b = a->b;
+    const int EV = w->events, HS = b->hs; /* HS = HSL + EV: the event slot is last */
     double *restrict f = w->p.f, *restrict tq = w->p.t;
     const double *vp = a->vp, *wp = a->wp;
     const uint16_t *restrict mat = w->p.mat;
@@ -221,10 +222,15 @@ DM_INLINE void dm_pp_loop(const int D, const int NL, const int DL, const int TL,
                         f[D * j + c] += fc * nc;
                         vn += (vp[D * j + c] - vp[D * i + c]) * nc;
                     }
-                    if (tally)
+                    if (tally) {
                         t.diss_normal -= fc * vn * dt_hist;
+                        if (EV)
+                            h[HSL] -= fc * vn * dt_hist;
+                    }
                 }
             }
+            if (EV && h[HSL] > 0.0)
+                dm_spectrum_record(w, i, j, -1, h[HSL]);
             for (int c = 0; c < HS; c++)
                 h[c] = 0.0;
             continue;
@@ -232,8 +238,14 @@ DM_INLINE void dm_pp_loop(const int D, const int NL, const int DL, const int TL,
         contacts++;
         const dm_pairparam *pp = &tab[mat[i] * nm + mat[j]];
         dm_law_out o;
+        dm_tally lt = {0};
         dm_law(D, NL, DL, TL, RL, pp, q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar, q.mstar, dt_hist,
-               reach, tally, h, &o, &t);
+               reach, tally, h, &o, &lt);
+        if (tally) {
+            dm_tally_add(&t, &lt);
+            if (EV)
+                h[HSL] += dm_tally_dissipated(&lt);
+        }
         for (int c = 0; c < D; c++) {
             const double fc = o.fn * q.n[c] + o.ft[c];
             f[D * i + c] -= fc;
@@ -263,12 +275,13 @@ DM_INLINE void dm_pw_loop(const int D, const int NL, const int DL, const int TL,
                           dm_kernel_args *a)
 {
     const int W = D == 3 ? 3 : 1;
-    const int HS = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_spring_size(TL, D);
+    const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
     const int EXIT = dm_law_exit(NL, DL);
     const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
     demill_world *w = a->w;
     const dm_particles *P = &w->p;
     const dm_bucket *b = a->b;
+    const int EV = w->events, HS = b->hs; /* HS = HSL + EV: the event slot is last */
     double *restrict f = w->p.f, *restrict tq = w->p.t;
     const double *vp = a->vp, *wp = a->wp;
     const uint16_t *restrict mat = w->p.mat;
@@ -303,9 +316,17 @@ DM_INLINE void dm_pw_loop(const int D, const int NL, const int DL, const int TL,
                     if (tally) {
                         t.diss_normal += absorbed * dt_hist;
                         t.wall_work += delivered * dt_hist;
+                        wall->dissipated += absorbed * dt_hist;
+                        if (EV)
+                            h[HSL] += absorbed * dt_hist;
                     }
                 }
             }
+            if (EV && h[HSL] > 0.0 && wall->drum_part)
+                dm_spectrum_record(w, i, 0,
+                                   wall->drum_part == DM_PART_LIFTER ? DEMILL_SPECTRUM_LIFTER
+                                                                     : DEMILL_SPECTRUM_SHELL,
+                                   h[HSL]);
             for (int c = 0; c < HS; c++)
                 h[c] = 0.0;
             continue;
@@ -313,8 +334,16 @@ DM_INLINE void dm_pw_loop(const int D, const int NL, const int DL, const int TL,
         contacts++;
         const dm_pairparam *pp = &tab[mat[i] * nm + wall->material];
         dm_law_out o;
+        dm_tally lt = {0};
         dm_law(D, NL, DL, TL, RL, pp, q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar, q.mstar, dt_hist,
-               reach, tally, h, &o, &t);
+               reach, tally, h, &o, &lt);
+        if (tally) {
+            const double lost = dm_tally_dissipated(&lt);
+            dm_tally_add(&t, &lt);
+            wall->dissipated += lost;
+            if (EV)
+                h[HSL] += lost;
+        }
         double fw[3] = {0.0, 0.0, 0.0}, arm[3] = {0.0, 0.0, 0.0};
         for (int c = 0; c < D; c++) {
             fw[c] = o.fn * q.n[c] + o.ft[c];

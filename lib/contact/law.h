@@ -37,12 +37,28 @@ DM_INLINE void dm_tally_add(dm_tally *to, const dm_tally *from)
     to->wall_work += from->wall_work;
 }
 
-/* History doubles of the tangential spring. */
+/* Energy dissipated in a tally, all mechanisms. */
+DM_INLINE double dm_tally_dissipated(const dm_tally *t)
+{
+    return t->diss_normal + t->diss_tangential + t->diss_friction + t->diss_rolling;
+}
+
+/* History doubles of the tangential spring's displacement (a vector in 3D,
+ * which changes sign when the pair's order flips; a scalar in 2D). */
 DM_INLINE int dm_law_spring_size(int tangential, int dim)
 {
     if (tangential == DEMILL_TANGENTIAL_SPRING || tangential == DEMILL_TANGENTIAL_MINDLIN)
         return dim == 3 ? 3 : 1;
     return 0;
+}
+
+/* History doubles of the tangential law: the displacement, and for Mindlin
+ * the spring energy of the last step. Mindlin's k_t follows δ, so its spring
+ * gains or loses energy without tangential work (in LIGGGHTS as here); the
+ * energy tally books that change exactly, so that the balance closes. */
+DM_INLINE int dm_law_tangential_size(int tangential, int dim)
+{
+    return dm_law_spring_size(tangential, dim) + (tangential == DEMILL_TANGENTIAL_MINDLIN);
 }
 
 /* Boundary corrections keep a collision second-order accurate in Δt where
@@ -65,11 +81,11 @@ DM_INLINE int dm_law_exit(int normal, int damping)
     return normal == DEMILL_NORMAL_LINEAR && damping != DEMILL_DAMPING_NONE;
 }
 
-/* History doubles per contact: the tangential spring, then (for laws with
+/* History doubles per contact: the tangential law's, then (for laws with
  * the exit correction) the last normal force and overlap. */
 DM_INLINE int dm_law_hist_size(int normal, int damping, int tangential, int dim)
 {
-    return dm_law_spring_size(tangential, dim) + 2 * dm_law_exit(normal, damping);
+    return dm_law_tangential_size(tangential, dim) + 2 * dm_law_exit(normal, damping);
 }
 
 /* D: dimension; NL, DL, TL, RL: DEMILL_NORMAL_*, DEMILL_DAMPING_*,
@@ -112,7 +128,7 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
         root_ms = sqrt(mstar * stiff);
         cn = pp->dcoef * root_ms;
     }
-    double *hb = hist + dm_law_spring_size(TL, D); /* exit slots: last force, overlap */
+    double *hb = hist + dm_law_tangential_size(TL, D); /* exit slots: last force, overlap */
     double vnd = vn; /* the normal velocity the dashpot sees */
     if (dm_law_exit(NL, DL) && !pp->clamp && hb[1] > 0.0) {
         /* the contact's own force change over the step, implicitly:
@@ -245,8 +261,14 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
             e_new += xi[c] * xi[c];
             hist[c] = xi[c];
         }
+        /* spring energies before and after the step; Mindlin's previous one
+         * was stored, with the previous k_t */
+        e_new *= 0.5 * kt;
+        e_old = TL == DEMILL_TANGENTIAL_MINDLIN ? hist[NS] : 0.5 * kt * e_old;
+        if (TL == DEMILL_TANGENTIAL_MINDLIN)
+            hist[NS] = e_new;
         if (tally) {
-            const double lost = work - 0.5 * kt * (e_new - e_old);
+            const double lost = work - (e_new - e_old);
             if (slip)
                 t->diss_friction += lost;
             else

@@ -17,7 +17,7 @@ demill_id dm_id_make(uint16_t tag, int kind, uint16_t gen, uint32_t index)
 DEMILL_API int32_t demill_id_kind(demill_id id)
 {
     int k = ID_KIND(id);
-    return k >= DEMILL_KIND_MATERIAL && k <= DEMILL_KIND_WALL ? k : DEMILL_KIND_NONE;
+    return k >= DEMILL_KIND_MATERIAL && k <= DEMILL_KIND_DRUM ? k : DEMILL_KIND_NONE;
 }
 
 /* Grows the table so that `extra` more handles can be issued without
@@ -83,6 +83,7 @@ static const char *kind_name(int kind)
     case DEMILL_KIND_MATERIAL: return "material";
     case DEMILL_KIND_PARTICLE: return "particle";
     case DEMILL_KIND_WALL: return "wall";
+    case DEMILL_KIND_DRUM: return "drum";
     default: return "unknown";
     }
 }
@@ -105,6 +106,14 @@ demill_status dm_resolve(const demill_world *cw, demill_id id, int kind, const c
                        "%s: %s id 0x%llx belongs to another world", what, kind_name(kind),
                        (unsigned long long)id);
     uint32_t index = ID_INDEX(id);
+    if (kind == DEMILL_KIND_DRUM) {
+        if (!w->drum.alive || index != 0 || ID_GEN(id) != w->drum_gen)
+            return dm_fail(w, DEMILL_ERR_INVALID_HANDLE,
+                           "%s: drum id 0x%llx was removed or never existed", what,
+                           (unsigned long long)id);
+        *slot = 0;
+        return DEMILL_OK;
+    }
     if (kind == DEMILL_KIND_MATERIAL) {
         if (index >= w->nmat || ID_GEN(id) != 0)
             return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: no material with id 0x%llx", what,
@@ -127,10 +136,18 @@ demill_id dm_particle_id(const demill_world *w, uint32_t storage)
     return dm_id_make(w->tag, DEMILL_KIND_PARTICLE, w->ph.gen[h], h);
 }
 
+/* The id of a wall slot: the wall's own id, or the drum's for its walls. */
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot)
 {
+    if (w->walls[wall_slot].drum_part)
+        return dm_drum_id(w);
     uint32_t h = w->walls[wall_slot].handle;
     return dm_id_make(w->tag, DEMILL_KIND_WALL, w->wh.gen[h], h);
+}
+
+demill_id dm_drum_id(const demill_world *w)
+{
+    return dm_id_make(w->tag, DEMILL_KIND_DRUM, w->drum_gen, 0);
 }
 
 demill_id dm_material_id(const demill_world *w, uint32_t material)

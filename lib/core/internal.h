@@ -51,7 +51,7 @@ typedef struct dm_laws {
 } dm_laws;
 
 #define DM_KERNELS (2 * 3 * 4 * 2)
-#define DM_MAX_HIST 5 /* history doubles per contact, at most (contact/law.h) */
+#define DM_MAX_HIST 7 /* history doubles per contact, at most (contact/law.h + event slot) */
 int dm_kernel_index(dm_laws laws);
 dm_laws dm_kernel_laws(int kernel);
 int dm_kernel_hist_size(int kernel, int dim);
@@ -69,15 +69,25 @@ typedef struct dm_pairparam {
     double kt;           /* linear tangential stiffness */
     double ct_factor;
     double mu, mu_r;
-    double coul_reg, roll_reg; /* 2 × factor */
+    double coul_reg, roll_reg; /* regularisation factors */
     double restitution, xi;
 } dm_pairparam;
 
 /* ---- walls (wall.c) ---------------------------------------------------- */
+#define DM_MAX_POLY 8 /* vertices of a lifter's cross-section, at most */
+
 typedef struct dm_wall {
-    uint32_t handle;       /* handle index */
+    uint32_t handle;       /* handle index (DM_FREE for the drum's walls) */
     uint32_t material;     /* material slot */
-    int kind;              /* DM_WALL_PLANE */
+    int kind;              /* DM_WALL_*, 0 for a free slot */
+    int drum_part;         /* DM_PART_*: which part of the drum, or DM_PART_NONE */
+    int lifter;            /* lifter index for DM_PART_LIFTER */
+    double radius;         /* DM_WALL_SHELL: inner radius */
+    int npoly;             /* DM_WALL_PRISM: convex cross-section, counter-clockwise, */
+    double poly[2 * DM_MAX_POLY];  /* in the drum frame (at drum angle 0) */
+    double cpoly[2 * DM_MAX_POLY]; /* and at the current angle */
+    double reach;          /* largest distance of the wall's surface from its centre of
+                              rotation that can move (0: the rotation does not move it) */
     /* reference geometry at time t0 and motion */
     double p0[3], n0[3], c0[3];
     double vel[3], omega[3];
@@ -89,9 +99,13 @@ typedef struct dm_wall {
     double c_build[3], rot_build[9];
     /* results of the last force evaluation */
     double force[3], torque[3];
+    double dissipated;     /* energy dissipated in contacts with the wall (tally) */
 } dm_wall;
 
-enum { DM_WALL_PLANE = 1 };
+/* Wall kinds: a plane (half-space), the inside of a cylindrical shell about
+ * the z axis, a prism along z with a convex polygonal cross-section. */
+enum { DM_WALL_PLANE = 1, DM_WALL_SHELL = 2, DM_WALL_PRISM = 3 };
+enum { DM_PART_NONE = 0, DM_PART_SHELL = 1, DM_PART_CAP = 2, DM_PART_LIFTER = 3 };
 
 /* ---- particles (particles.c) ------------------------------------------- */
 /* Structure of arrays in storage order (sorted by cell at each neighbour
@@ -151,6 +165,64 @@ typedef struct dm_tally {
     double diss_normal, diss_tangential, diss_friction, diss_rolling, wall_work;
 } dm_tally;
 
+/* ---- the mill (mill/) ------------------------------------------------------ */
+#define DM_MAX_LIFTERS 64
+#define DM_SHAPE_BINS 72 /* 5° bins of the charge-shape analysis */
+
+typedef struct dm_lifter_spec {
+    double angle, height, width, face;
+} dm_lifter_spec;
+
+/* Per-revolution accumulators; when a revolution completes they become the
+ * reported means. */
+typedef struct dm_drum_rev {
+    double t0, energy_in, power_cm_sum, dissipated0;
+    uint32_t power_cm_count;
+    double shape_sum[3];
+    uint32_t shape_count[3];
+    double lifter_impulse[DM_MAX_LIFTERS][3];
+} dm_drum_rev;
+
+typedef struct dm_spectrum {
+    uint32_t nclasses, nbins;
+    double *edges;          /* nclasses - 1 increasing diameters */
+    double log_min, log_span;
+    uint64_t *counts;       /* rows × nbins */
+} dm_spectrum;
+
+typedef struct dm_drum {
+    uint32_t handle;
+    bool alive;
+    uint32_t material;
+    double diameter, length, porosity;
+    /* the evenly spaced lifters, and the lifters in use */
+    uint32_t even_count;
+    double lifter_h, lifter_w, lifter_face, lifter_phase;
+    uint32_t nlifters;
+    dm_lifter_spec lifters[DM_MAX_LIFTERS];
+    /* walls: shell, caps (3D), lifters, in wall slots */
+    uint32_t wall_slot[DM_MAX_LIFTERS + 3];
+    uint32_t nwall;
+    /* speed: a target given as rad/s, rpm or fraction of critical, reached
+     * linearly over ramp from the speed at t_set */
+    int speed_key;
+    double speed_value, ramp, crit_diameter;
+    double t_set, theta_set, omega_from, omega_to;
+    double theta, omega;    /* at world time */
+    double theta_start;     /* angle when it first turned; NaN before */
+    uint32_t sample_interval;
+    uint64_t samples_due;   /* step count at the next charge-shape sample */
+    /* measurements of the last force evaluation and running totals */
+    double torque, power, energy_in, energy_dissipated;
+    double lifter_peak[DM_MAX_LIFTERS], lifter_energy[DM_MAX_LIFTERS];
+    /* the last completed revolution */
+    uint64_t revolutions;
+    double mean_power, mean_power_cm, mean_dissipation, mean_shape[3];
+    double lifter_force_mean[DM_MAX_LIFTERS][3];
+    dm_drum_rev rev;
+    dm_spectrum spectrum;
+} dm_drum;
+
 /* ---- the world ------------------------------------------------------------- */
 #define DM_WORLD_MAGIC 0x64656d696c6cu /* "demill" */
 
@@ -187,6 +259,10 @@ struct demill_world {
     uint32_t nwalls, cap_walls;
     dm_handles wh;
 
+    /* the mill drum (at most one) */
+    dm_drum drum;
+    uint16_t drum_gen;      /* generation of the drum id */
+
     /* contacts */
     dm_clist pp, pw;
     dm_wgeom wg;
@@ -197,6 +273,7 @@ struct demill_world {
     uint32_t ncontacts, nwall_contacts;
 
     dm_tally tally;
+    bool events;            /* contacts keep their dissipated energy (spectrum) */
 };
 
 /* ---- shared internal functions -------------------------------------------- */
@@ -213,6 +290,32 @@ void dm_clear_error(demill_world *w);
 int dm_grow_arrays(void **const *arrays, const size_t *sizes, size_t n, size_t cap);
 size_t dm_grown_capacity(size_t cap, size_t need);
 
+/* overlap.c */
+typedef struct dm_sphere_entry {
+    uint64_t key;
+    uint32_t index;
+} dm_sphere_entry;
+typedef struct dm_sphere_index {
+    int dim;
+    size_t n;
+    double h, *x, *r;
+    dm_sphere_entry *e;
+} dm_sphere_index;
+int dm_spheres_build(dm_sphere_index *ix, const demill_world *w, size_t nextra,
+                     const double *xextra, const double *rextra, double rquery);
+void dm_spheres_free(dm_sphere_index *ix);
+int64_t dm_spheres_find(const dm_sphere_index *ix, const double *x, double r, uint32_t limit,
+                        double *depth);
+uint32_t dm_wall_overlap(const demill_world *w, const double *x, double r, double *depth);
+
+/* random.c */
+typedef struct dm_rng {
+    uint64_t s[4];
+} dm_rng;
+void dm_rng_seed(dm_rng *r, uint64_t seed);
+uint64_t dm_rng_next(dm_rng *r);
+double dm_rng_uniform(dm_rng *r);
+
 /* ids.c */
 int dm_handles_reserve(dm_handles *h, uint32_t extra);
 uint32_t dm_handles_issue(dm_handles *h, uint32_t slot);
@@ -225,6 +328,7 @@ demill_status dm_enter(const demill_world *w, demill_id id, int kind, const char
 demill_id dm_particle_id(const demill_world *w, uint32_t storage);
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
 demill_id dm_material_id(const demill_world *w, uint32_t material);
+demill_id dm_drum_id(const demill_world *w);
 
 /* params.c */
 demill_status dm_check_value(demill_world *w, int32_t key, double value);
@@ -232,6 +336,8 @@ demill_status dm_check_value(demill_world *w, int32_t key, double value);
 /* particles.c */
 void dm_particles_permute(demill_world *w, const uint32_t *order);
 void dm_particles_free(demill_world *w);
+demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const double *positions,
+                                  const double *radii, const double *velocities, demill_id *ids);
 
 /* material.c */
 demill_status dm_resolve_pairs(demill_world *w, bool require_models);
@@ -250,11 +356,13 @@ void dm_clist_clear(demill_world *w);
 void dm_clist_drop_wall(demill_world *w, uint32_t wall_slot);
 
 /* geometry/wall.c */
+uint32_t dm_wall_slot_alloc(demill_world *w);
 void dm_walls_advance(demill_world *w, double time);
 void dm_walls_retime(demill_world *w, double time);
 void dm_wgeom_update(demill_world *w);
 int dm_wgeom_reserve(demill_world *w);
 double dm_wall_distance(const dm_wall *wall, const double *x, int dim);
+double dm_wall_closest(const dm_wall *wall, const double *x, int dim, double *normal);
 double dm_walls_max_shift(const demill_world *w);
 void dm_walls_mark_built(demill_world *w);
 
@@ -268,6 +376,14 @@ typedef struct dm_contact_eval {
 } dm_contact_eval;
 typedef void (*dm_contact_visitor)(void *ctx, const dm_contact_eval *c);
 void dm_contacts_visit(demill_world *w, dm_contact_visitor fn, void *ctx);
+
+/* mill/ */
+void dm_charge_shape(const demill_world *w, double angles[3]);
+void dm_drum_measure(demill_world *w);
+void dm_spectrum_free(demill_world *w);
+double dm_drum_omega_at(const dm_drum *d, double time, double *theta);
+void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall_kind, double energy);
+demill_status dm_drum_prepare(demill_world *w);
 
 /* integrate/integrate.c */
 demill_status dm_integrate(demill_world *w, uint64_t steps);

@@ -188,8 +188,8 @@ static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairp
     pp->ct_factor = v[DM_PK_CT_FACTOR];
     pp->mu = v[DM_PK_FRICTION];
     pp->mu_r = v[DM_PK_ROLLING_FRICTION];
-    pp->coul_reg = 2.0 * v[DM_PK_COULOMB_REG];
-    pp->roll_reg = 2.0 * v[DM_PK_ROLLING_REG];
+    pp->coul_reg = v[DM_PK_COULOMB_REG];
+    pp->roll_reg = v[DM_PK_ROLLING_REG];
 }
 
 /* The entry check of the pair functions: a live world and two materials. */

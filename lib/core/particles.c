@@ -120,105 +120,38 @@ static demill_status check_radius(demill_world *w, double r, const char *who)
     return DEMILL_OK;
 }
 
-/* Overlap test of a batch against the world and itself, by sorting all
- * centres into cells of the largest diameter. Returns DEMILL_OK or
- * DEMILL_ERR_OVERLAP with a message naming both bodies. */
-typedef struct cell_entry {
-    uint64_t key;
-    uint32_t index; /* < nold: existing particle; else batch index + nold */
-} cell_entry;
-
-static int cmp_entry(const void *a, const void *b)
-{
-    const cell_entry *x = a, *y = b;
-    return x->key < y->key ? -1 : x->key > y->key ? 1 : (x->index > y->index) - (x->index < y->index);
-}
-
-static uint64_t cell_key(const int64_t q[3])
-{
-    return ((uint64_t)(q[0] & 0x1fffff) << 42) | ((uint64_t)(q[1] & 0x1fffff) << 21) |
-           (uint64_t)(q[2] & 0x1fffff);
-}
-
+/* Overlap test of a batch against the world, itself (each particle against
+ * the earlier ones) and the walls. Returns DEMILL_OK or DEMILL_ERR_OVERLAP
+ * with a message naming both bodies. */
 static demill_status check_overlaps(demill_world *w, size_t n, const double *pos,
                                     const double *radii)
 {
-    const dm_particles *P = &w->p;
-    const int D = w->dim;
-    const uint32_t nold = P->n;
-    const size_t total = nold + n;
-    double rmax = 0.0;
-    for (uint32_t i = 0; i < nold; i++)
-        rmax = P->r[i] > rmax ? P->r[i] : rmax;
+    double rmax = 0.0, depth;
     for (size_t k = 0; k < n; k++)
-        rmax = radii[k] > rmax ? radii[k] : rmax;
-    const double h = 2.0 * rmax;
-    cell_entry *e = malloc(total * sizeof *e);
-    if (!e)
+        rmax = fmax(rmax, radii[k]);
+    dm_sphere_index ix;
+    if (dm_spheres_build(&ix, w, n, pos, radii, rmax))
         return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "particles_add: out of memory");
-    for (size_t k = 0; k < total; k++) {
-        int64_t q[3] = {0, 0, 0};
-        for (int c = 0; c < D; c++) {
-            double xc = k < nold ? P->x[D * k + c] : pos[3 * (k - nold) + c];
-            q[c] = (int64_t)floor(xc / h);
-        }
-        e[k].key = cell_key(q);
-        e[k].index = (uint32_t)k;
-    }
-    qsort(e, total, sizeof *e, cmp_entry);
+    const uint32_t nold = w->p.n;
     demill_status s = DEMILL_OK;
     for (size_t k = 0; k < n && !s; k++) {
         const double *xk = pos + 3 * k;
-        int64_t q0[3] = {0, 0, 0};
-        for (int c = 0; c < D; c++)
-            q0[c] = (int64_t)floor(xk[c] / h);
-        int span[3] = {1, 1, D == 3 ? 1 : 0};
-        for (int dz = -span[2]; dz <= span[2] && !s; dz++)
-            for (int dy = -1; dy <= 1 && !s; dy++)
-                for (int dx = -1; dx <= 1 && !s; dx++) {
-                    int64_t q[3] = {q0[0] + dx, q0[1] + dy, q0[2] + dz};
-                    cell_entry probe = {cell_key(q), 0};
-                    size_t lo = 0, hi = total;
-                    while (lo < hi) {
-                        size_t mid = (lo + hi) / 2;
-                        if (e[mid].key < probe.key)
-                            lo = mid + 1;
-                        else
-                            hi = mid;
-                    }
-                    for (size_t m = lo; m < total && e[m].key == probe.key; m++) {
-                        size_t o = e[m].index;
-                        if (o == nold + k || (o >= nold && o - nold > k))
-                            continue; /* itself, or a later batch particle (checked from there) */
-                        const double *xo = o < nold ? P->x + D * o : pos + 3 * (o - nold);
-                        double ro = o < nold ? P->r[o] : radii[o - nold], r2 = 0.0;
-                        for (int c = 0; c < D; c++)
-                            r2 += (xk[c] - xo[c]) * (xk[c] - xo[c]);
-                        double sum = radii[k] + ro;
-                        if (r2 < sum * sum) {
-                            if (o < nold)
-                                s = dm_fail(w, DEMILL_ERR_OVERLAP,
-                                            "particle %zu of the batch overlaps existing particle "
-                                            "0x%llx by %g m",
-                                            k, (unsigned long long)dm_particle_id(w, (uint32_t)o),
-                                            sum - sqrt(r2));
-                            else
-                                s = dm_fail(w, DEMILL_ERR_OVERLAP,
-                                            "particle %zu of the batch overlaps particle %zu of "
-                                            "the batch by %g m",
-                                            k, o - nold, sum - sqrt(r2));
-                        }
-                    }
-                }
-        for (uint32_t wk = 0; wk < w->nwalls && !s; wk++) {
-            const dm_wall *wall = &w->walls[wk];
-            double d = wall->kind ? dm_wall_distance(wall, xk, D) : HUGE_VAL;
-            if (d < radii[k])
-                s = dm_fail(w, DEMILL_ERR_OVERLAP, "particle %zu of the batch overlaps wall 0x%llx by %g m",
-                            k, (unsigned long long)dm_wall_id(w, wk), radii[k] - d);
-        }
+        int64_t o = dm_spheres_find(&ix, xk, radii[k], nold + (uint32_t)k, &depth);
+        uint32_t wk;
+        if (o >= 0 && (uint32_t)o < nold)
+            s = dm_fail(w, DEMILL_ERR_OVERLAP,
+                        "particle %zu of the batch overlaps existing particle 0x%llx by %g m", k,
+                        (unsigned long long)dm_particle_id(w, (uint32_t)o), depth);
+        else if (o >= 0)
+            s = dm_fail(w, DEMILL_ERR_OVERLAP,
+                        "particle %zu of the batch overlaps particle %zu of the batch by %g m", k,
+                        (size_t)o - nold, depth);
+        else if ((wk = dm_wall_overlap(w, xk, radii[k], &depth)) != DM_FREE)
+            s = dm_fail(w, DEMILL_ERR_OVERLAP, "particle %zu of the batch overlaps %s 0x%llx by %g m",
+                        k, w->walls[wk].drum_part ? "the drum" : "wall",
+                        (unsigned long long)dm_wall_id(w, wk), depth);
     }
-    free(e);
+    dm_spheres_free(&ix);
     return s;
 }
 
@@ -252,15 +185,25 @@ DEMILL_API demill_status demill_particles_add(demill_world *w, demill_id materia
             (velocities && (s = check_vec(w, velocities + 3 * k, "velocity", who, flat))))
             return s;
     }
-    dm_particles *P = &w->p;
-    if (n > UINT32_MAX - 2 - (uint64_t)P->n)
+    if (n > UINT32_MAX - 2 - (uint64_t)w->p.n)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "particles_add: too many particles");
-    if (storage_reserve(w, P->n + (uint32_t)n) || dm_handles_reserve(&w->ph, (uint32_t)n))
-        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "particles_add: out of memory for %zu particles",
-                       n);
     if ((flags & DEMILL_ADD_NO_OVERLAP) && (s = check_overlaps(w, n, positions, radii)))
         return s;
+    if ((s = dm_particles_append(w, mat, n, positions, radii, velocities, ids)))
+        return s;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
 
+/* Appends n valid particles of material slot mat (positions and velocities
+ * 3 doubles each; velocities may be NULL). Fails only when memory runs out,
+ * and then adds nothing. */
+demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const double *positions,
+                                  const double *radii, const double *velocities, demill_id *ids)
+{
+    dm_particles *P = &w->p;
+    if (storage_reserve(w, P->n + (uint32_t)n) || dm_handles_reserve(&w->ph, (uint32_t)n))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory for %zu more particles", n);
     const int D = w->dim, W = wdim(w);
     for (size_t k = 0; k < n; k++) {
         uint32_t i = P->n++;
@@ -285,7 +228,6 @@ DEMILL_API demill_status demill_particles_add(demill_world *w, demill_id materia
     w->ptab_dirty = true;
     w->nlist_valid = false;
     w->forces_valid = false;
-    dm_clear_error(w);
     return DEMILL_OK;
 }
 

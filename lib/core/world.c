@@ -49,6 +49,7 @@ DEMILL_API void demill_world_destroy(demill_world *w)
         return;
     dm_particles_free(w);
     dm_nlist_free(w);
+    dm_spectrum_free(w);
     dm_handles_free(&w->wh);
     free(w->walls);
     free(w->pairs);
@@ -92,6 +93,8 @@ DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double v
     case DEMILL_WORLD_ENERGY_TRACKING: w->energy_tracking = (int)value; break;
     case DEMILL_WORLD_TIME:
         dm_walls_retime(w, value);
+        w->drum.t_set += value - w->time; /* the drum keeps its angle and speed */
+        w->drum.rev.t0 += value - w->time;
         w->time = value;
         break;
     }

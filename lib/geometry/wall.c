@@ -1,7 +1,10 @@
 /* wall.c: walls with prescribed rigid motion (PHYSICS.md §7): the API, their
  * exact kinematics and the contact geometry of each particle-wall candidate.
- * Plane walls for now; the geometry is per kind so that the drum's shell,
- * lifters and end caps, and triangle meshes, join as new kinds. */
+ * Kinds: planes (free walls, and the drum's end caps), the inside of the
+ * drum's cylindrical shell, and prisms with a convex polygonal cross-section
+ * (the lifters). Each kind contributes one closest-point function
+ * (dm_wall_closest), so triangle meshes can join as a new kind. Free walls
+ * move by their own rigid motion; the drum's walls turn with the drum. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -75,25 +78,119 @@ static void wall_rebase(dm_wall *wall, double now, double t0)
 void dm_walls_retime(demill_world *w, double time)
 {
     for (uint32_t k = 0; k < w->nwalls; k++)
-        if (w->walls[k].kind)
+        if (w->walls[k].kind && !w->walls[k].drum_part)
             wall_rebase(&w->walls[k], w->time, time);
+}
+
+/* A drum wall at drum angle theta, turning at omega about the z axis. */
+static void wall_at_drum(dm_wall *wall, double theta, double omega)
+{
+    const double c = cos(theta), s = sin(theta);
+    const double R[9] = {c, -s, 0, s, c, 0, 0, 0, 1};
+    memcpy(wall->rot, R, sizeof R);
+    memset(wall->c, 0, sizeof wall->c);
+    memset(wall->vel, 0, sizeof wall->vel);
+    wall->omega[0] = wall->omega[1] = 0.0;
+    wall->omega[2] = omega;
+    mat_vec(R, wall->p0, wall->p);
+    mat_vec(R, wall->n0, wall->n);
+    for (int k = 0; k < wall->npoly; k++) {
+        const double x = wall->poly[2 * k], y = wall->poly[2 * k + 1];
+        wall->cpoly[2 * k] = c * x - s * y;
+        wall->cpoly[2 * k + 1] = s * x + c * y;
+    }
 }
 
 void dm_walls_advance(demill_world *w, double time)
 {
-    for (uint32_t k = 0; k < w->nwalls; k++)
-        if (w->walls[k].kind)
-            wall_at(&w->walls[k], time);
+    double theta = 0.0, omega = 0.0;
+    if (w->drum.alive) {
+        omega = w->drum.omega = dm_drum_omega_at(&w->drum, time, &theta);
+        w->drum.theta = theta;
+    }
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        dm_wall *wall = &w->walls[k];
+        if (!wall->kind)
+            continue;
+        if (wall->drum_part)
+            wall_at_drum(wall, theta, omega);
+        else
+            wall_at(wall, time);
+    }
 }
 
 /* Signed distance of x from the wall's surface, positive on the particle
- * side. */
+ * side (negative inside the solid), and the unit normal from x towards the
+ * closest point of the surface (into the wall). For a prism and the shell
+ * only x and y matter: they extend along z. */
+double dm_wall_closest(const dm_wall *wall, const double *x, int dim, double *normal)
+{
+    normal[0] = normal[1] = normal[2] = 0.0;
+    switch (wall->kind) {
+    case DM_WALL_SHELL: {
+        const double r = sqrt(x[0] * x[0] + x[1] * x[1]);
+        if (r > 0.0) {
+            normal[0] = x[0] / r;
+            normal[1] = x[1] / r;
+        } else {
+            normal[0] = 1.0;
+        }
+        return wall->radius - r;
+    }
+    case DM_WALL_PRISM: {
+        /* convex polygon, counter-clockwise: outside if beyond some edge */
+        const int n = wall->npoly;
+        const double *v = wall->cpoly;
+        double best_sep = -HUGE_VAL, best_n[2] = {0.0, 0.0}, best_d2 = HUGE_VAL;
+        double best_c[2] = {0.0, 0.0};
+        for (int k = 0; k < n; k++) {
+            const double ax = v[2 * k], ay = v[2 * k + 1];
+            const double bx = v[2 * ((k + 1) % n)], by = v[2 * ((k + 1) % n) + 1];
+            const double ex = bx - ax, ey = by - ay, len = sqrt(ex * ex + ey * ey);
+            const double nx = ey / len, ny = -ex / len; /* outward */
+            const double sep = (x[0] - ax) * nx + (x[1] - ay) * ny;
+            if (sep > best_sep) {
+                best_sep = sep;
+                best_n[0] = nx;
+                best_n[1] = ny;
+            }
+            /* closest point of the edge segment */
+            double t = ((x[0] - ax) * ex + (x[1] - ay) * ey) / (len * len);
+            t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+            const double cx = ax + t * ex, cy = ay + t * ey;
+            const double d2 = (x[0] - cx) * (x[0] - cx) + (x[1] - cy) * (x[1] - cy);
+            if (d2 < best_d2) {
+                best_d2 = d2;
+                best_c[0] = cx;
+                best_c[1] = cy;
+            }
+        }
+        if (best_sep <= 0.0) { /* inside: out through the nearest face */
+            normal[0] = -best_n[0];
+            normal[1] = -best_n[1];
+            return best_sep;
+        }
+        const double d = sqrt(best_d2);
+        normal[0] = (best_c[0] - x[0]) / d;
+        normal[1] = (best_c[1] - x[1]) / d;
+        return d;
+    }
+    default: {
+        double d = 0.0;
+        for (int c = 0; c < dim; c++) {
+            d += (x[c] - wall->p[c]) * wall->n[c];
+            normal[c] = -wall->n[c];
+        }
+        return d;
+    }
+    }
+}
+
+/* Signed distance only (see dm_wall_closest). */
 double dm_wall_distance(const dm_wall *wall, const double *x, int dim)
 {
-    double d = 0.0;
-    for (int c = 0; c < dim; c++)
-        d += (x[c] - wall->p[c]) * wall->n[c];
-    return d;
+    double n[3];
+    return dm_wall_closest(wall, x, dim, n);
 }
 
 void dm_walls_mark_built(demill_world *w)
@@ -105,8 +202,10 @@ void dm_walls_mark_built(demill_world *w)
 }
 
 /* The most any wall's surface can have moved, near the particles, since the
- * last neighbour build: |Δc| + θ × (distance from the centre to the far
- * corner of the particles' box, widened by the skin). */
+ * last neighbour build: |Δc| + θ × reach, the reach of a free plane being the
+ * distance from its centre to the far corner of the particles' box (widened
+ * by the skin), of a lifter its outermost vertex, and zero for the shell and
+ * end caps, which the drum's rotation does not move. */
 double dm_walls_max_shift(const demill_world *w)
 {
     double worst = 0.0;
@@ -115,12 +214,19 @@ double dm_walls_max_shift(const demill_world *w)
         const dm_wall *wall = &w->walls[k];
         if (!wall->kind)
             continue;
-        double dc2 = 0.0, reach2 = 0.0;
+        double dc2 = 0.0, reach = wall->reach;
         for (int c = 0; c < 3; c++) {
             double d = wall->c[c] - wall->c_build[c];
             dc2 += d * d;
-            double far = fmax(fabs(g->lo[c] - wall->c[c]), fabs(g->hi[c] - wall->c[c])) + w->skin;
-            reach2 += far * far;
+        }
+        if (wall->kind == DM_WALL_PLANE && !wall->drum_part) {
+            double reach2 = 0.0;
+            for (int c = 0; c < 3; c++) {
+                double far =
+                    fmax(fabs(g->lo[c] - wall->c[c]), fabs(g->hi[c] - wall->c[c])) + w->skin;
+                reach2 += far * far;
+            }
+            reach = sqrt(reach2);
         }
         /* angle of rot · rot_build^T from its trace */
         double tr = 0.0;
@@ -128,7 +234,7 @@ double dm_walls_max_shift(const demill_world *w)
             for (int c = 0; c < 3; c++)
                 tr += wall->rot[3 * r + c] * wall->rot_build[3 * r + c];
         double cosang = fmin(1.0, fmax(-1.0, 0.5 * (tr - 1.0)));
-        double shift = sqrt(dc2) + acos(cosang) * sqrt(reach2);
+        double shift = sqrt(dc2) + (reach > 0.0 ? acos(cosang) * reach : 0.0);
         if (shift > worst)
             worst = shift;
     }
@@ -169,13 +275,13 @@ void dm_wgeom_update(demill_world *w)
             const uint32_t i = b->i[p];
             const dm_wall *wall = &w->walls[b->j[p]];
             const double *x = P->x + D * i;
-            /* plane: the normal into the wall is -n */
-            double delta = P->r[i] - dm_wall_distance(wall, x, D);
+            double n[3];
+            const double delta = P->r[i] - dm_wall_closest(wall, x, D, n);
             double *nrm = g->nrm + D * gk, *cp = g->cp + D * gk, *vw = g->vw + D * gk;
             g->delta[gk] = delta;
             double arm = P->r[i] - 0.5 * delta, rel[3] = {0.0, 0.0, 0.0};
             for (int c = 0; c < D; c++) {
-                nrm[c] = -wall->n[c];
+                nrm[c] = n[c];
                 cp[c] = x[c] + arm * nrm[c];
                 rel[c] = cp[c] - wall->c[c];
             }
@@ -186,6 +292,27 @@ void dm_wgeom_update(demill_world *w)
                 vw[c] = wall->vel[c] + spin[c];
         }
     }
+}
+
+/* A free wall slot (cleared), growing the array if needed; DM_FREE when out
+ * of memory. */
+uint32_t dm_wall_slot_alloc(demill_world *w)
+{
+    uint32_t slot = 0;
+    while (slot < w->nwalls && w->walls[slot].kind)
+        slot++;
+    if (slot == w->cap_walls) {
+        uint32_t cap = w->cap_walls ? 2 * w->cap_walls : 16;
+        dm_wall *nw = realloc(w->walls, cap * sizeof *nw);
+        if (!nw)
+            return DM_FREE;
+        w->walls = nw;
+        w->cap_walls = cap;
+    }
+    memset(&w->walls[slot], 0, sizeof w->walls[slot]);
+    if (slot == w->nwalls)
+        w->nwalls++;
+    return slot;
 }
 
 /* ---- API ----------------------------------------------------------------------- */
@@ -220,18 +347,8 @@ DEMILL_API demill_status demill_wall_add_plane(demill_world *w, demill_id materi
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "wall_add_plane: normal has zero length");
     double u[3] = {normal[0] / big, normal[1] / big, normal[2] / big};
     double len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    uint32_t slot = 0;
-    while (slot < w->nwalls && w->walls[slot].kind)
-        slot++;
-    if (slot == w->cap_walls) {
-        uint32_t cap = w->cap_walls ? 2 * w->cap_walls : 8;
-        dm_wall *nw = realloc(w->walls, cap * sizeof *nw);
-        if (!nw)
-            return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "wall_add_plane: out of memory");
-        w->walls = nw;
-        w->cap_walls = cap;
-    }
-    if (dm_handles_reserve(&w->wh, 1))
+    uint32_t slot;
+    if (dm_handles_reserve(&w->wh, 1) || (slot = dm_wall_slot_alloc(w)) == DM_FREE)
         return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "wall_add_plane: out of memory");
     dm_wall *wall = &w->walls[slot];
     memset(wall, 0, sizeof *wall);
@@ -246,8 +363,6 @@ DEMILL_API demill_status demill_wall_add_plane(demill_world *w, demill_id materi
     memcpy(wall->c_build, wall->c, sizeof wall->c);
     memcpy(wall->rot_build, wall->rot, sizeof wall->rot);
     wall->handle = dm_handles_issue(&w->wh, slot);
-    if (slot == w->nwalls)
-        w->nwalls++;
     w->mat_walls[mat]++;
     *out = dm_wall_id(w, slot);
     w->ptab_dirty = true;

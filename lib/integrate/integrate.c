@@ -98,7 +98,8 @@ static demill_status finish_step(demill_world *w, double max_disp2, const double
         if (s)
             return s;
     }
-    dm_forces(w, vp, wp, w->dt, reach, w->energy_tracking);
+    dm_forces(w, vp, wp, w->dt, reach, w->energy_tracking || w->events);
+    dm_drum_measure(w);
     return DEMILL_OK;
 }
 
@@ -140,7 +141,7 @@ DM_INLINE demill_status euler(const int D, demill_world *w, uint64_t steps)
 demill_status dm_prepare_step(demill_world *w)
 {
     demill_status s = dm_resolve_pairs(w, true);
-    if (s)
+    if (s || (s = dm_drum_prepare(w)))
         return s;
     if (!w->nlist_valid && (s = dm_nlist_build(w)))
         return s;

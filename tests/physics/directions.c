@@ -32,10 +32,10 @@
  * material, so particle-wall contacts have the same k); overlap δ = 1e-4 m,
  * so F_n = k δ = 5 N; friction μ = 0.5 (the default of both materials), so
  * μ F_n = 2.5 N; lever arm a = R - δ/2 = 9.95e-3 m. No gravity unless stated.
- * The Coulomb law's regularisation is γ = 2 √(m* k) (factor 1, header
- * material.h): 32.36 N s/m between two equal spheres (m* = m/2), 45.76 N s/m
+ * The Coulomb law's regularisation is γ = √(m* k) (factor 1, header
+ * material.h): 16.18 N s/m between two equal spheres (m* = m/2), 22.88 N s/m
  * against a wall (m* = m), so friction is saturated at μ F_n for slips above
- * 0.077 m/s and 0.055 m/s; the spins used (ω = 100 rad/s, surface speed
+ * 0.155 m/s and 0.109 m/s; the spins used (ω = 100 rad/s, surface speed
  * about 1 m/s) are far above that.
  *
  * Tolerances: a single force evaluation is checked to 1e-12 relative to the
@@ -552,7 +552,7 @@ END_TEST
  *     sense for motion along +x (rolling needs v + ω × r = 0, ω_z = -v/a).
  *     The wall receives the opposite: (+2.5, -5, 0) N.
  * (ii) v = 0.01 m/s x̂, below the regularisation limit: friction
- *     γ |v_t| = 2 √(m k) · 0.01 = 0.45765 N, still against the motion.
+ *     γ |v_t| = √(m k) · 0.01 = 0.22882 N, still against the motion.
  * (iii) 3D: v = (1, 0, 1)/√2 m/s: friction -μ k δ (1, 0, 1)/√2, torque
  *     (-a ŷ) × F_t = a μ k δ/√2 (ŷ × x̂ + ŷ × ẑ) = a μ k δ (1, 0, -1)/√2, which
  *     is along ŷ × v, the rolling spin for that motion. */
@@ -560,7 +560,7 @@ START_TEST(sliding_on_floor)
 {
     const int dim = _i;
     const double F = KN * DELTA, f = MU * F, arm = R - DELTA / 2;
-    const double gamma = 2 * sqrt(sphere_mass(R) * KN);
+    const double gamma = sqrt(sphere_mass(R) * KN);
     for (int c = 0; c < (dim == 3 ? 3 : 2); c++) {
         demill_id m;
         demill_world *w = scene(dim, DEMILL_TANGENTIAL_COULOMB, DEMILL_ROLLING_NONE, &m);
@@ -615,8 +615,8 @@ static void balance_on_floor(demill_world *w)
  * Hence -m a v0 = -(I/a + m a) v_f:
  *   v_f = m a² v0/(I + m a²) = 0.71224 m/s (≈ 5/7 v0), ω_f = -v_f/a.
  * The slip disappears after about 1.2 ms at the cap, then decays with the
- * regularisation (rate γ (1/m + a²/I) ≈ 1.5e4 /s); after 6 ms it is below
- * 1e-30 of its start, so v_f and ω_f are checked to 1e-9 (round-off only). */
+ * regularisation (rate γ (1/m + a²/I) ≈ 7.6e3 /s); after 6 ms it is below
+ * 1e-15 of its start, so v_f and ω_f are checked to 1e-9 (round-off only). */
 START_TEST(sliding_spins_up_then_rolls)
 {
     const int dim = _i;
@@ -754,11 +754,11 @@ END_TEST
  *
  * Constant-torque law, μ_r = 0.1 for the pair; R* = R against a wall,
  * m* = m. The cap is μ_r R k δ = 0.1 · 0.01 · 5 = 5e-3 N m; the
- * regularisation γ_r = 2 R*² √(m* k) = 4.5765e-3 N m s.
+ * regularisation γ_r = R*² √(m* k) = 2.2882e-3 N m s.
  * (i) Frictionless, v = 0, ω = 50 ẑ rad/s (γ_r ω = 0.23 > cap): the torque
  *     is -5e-3 ẑ N m, the force only the normal (0, 5, 0) N.
  * (ii) ω = -50 ẑ: +5e-3 ẑ N m (it always opposes the spin).
- * (iii) ω = 0.5 ẑ, below the cap: -γ_r · 0.5 = -2.2882e-3 ẑ N m.
+ * (iii) ω = 0.5 ẑ, below the cap: -γ_r · 0.5 = -1.1441e-3 ẑ N m.
  * (iv) Coulomb friction too, rolling without slip along +x
  *     (v = 0.5 x̂, ω = -0.5/a ẑ): no friction (test 15), the torque is the
  *     rolling resistance alone, +5e-3 ẑ N m, against the roll.
@@ -767,7 +767,7 @@ START_TEST(rolling_resistance_on_floor)
 {
     const int dim = _i;
     const double F = KN * DELTA, mur = 0.1, cap = mur * R * F, arm = R - DELTA / 2;
-    const double gr = 2 * R * R * sqrt(sphere_mass(R) * KN);
+    const double gr = R * R * sqrt(sphere_mass(R) * KN);
     const double spins[4] = {50.0, -50.0, 0.5, -0.5 / arm};
     const double want[4] = {-cap, cap, -gr * 0.5, cap};
     for (int c = 0; c < 4; c++) {
@@ -793,7 +793,7 @@ END_TEST
 /* 17. Rolling resistance between two balls opposes their relative spin.
  *
  * Frictionless, μ_r = 0.1, two equal balls (b at (2R - δ) x̂): R* = R/2,
- * cap μ_r R* k δ = 2.5e-3 N m, γ_r = 2 R*² √(m* k) = 8.09e-4 N m s with
+ * cap μ_r R* k δ = 2.5e-3 N m, γ_r = R*² √(m* k) = 4.05e-4 N m s with
  * m* = m/2, so |ω_rel| >= 50 rad/s is saturated. ω_rel = ω_a - ω_b; a gets
  * -cap ω_rel/|ω_rel|, b the opposite.
  * (i) a spins W = 50 ẑ, b at rest: T_a = -2.5e-3 ẑ (slows a),
@@ -976,7 +976,7 @@ END_TEST
  *
  * R_a = 0.01, R_b = 0.03 m, b at (R_a + R_b - δ) x̂, a spins W0 ẑ, b at rest.
  * v_c = -(R_a - δ/2) W0 ŷ (0.995 m/s; m* = m_a m_b/(m_a + m_b) = 27/28 m_a,
- * γ = 2 √(m* k) = 44.9 N s/m, saturated). As in test 7:
+ * γ = √(m* k) = 22.5 N s/m, saturated). As in test 7:
  * F_a = (-k δ, -μ k δ, 0) = -F_b, so F_a + F_b = 0 (no gravity).
  * T_a = -(R_a - δ/2) μ k δ ẑ = -2.4875e-2 ẑ N m,
  * T_b = -(R_b - δ/2) μ k δ ẑ = -7.4875e-2 ẑ N m: the ratio is

@@ -1,0 +1,259 @@
+/* demill/drum.h: the mill drum (shell, end caps and lifter bars), its speed,
+ * the charge that fills it, and what mill engineers read from it.
+ *
+ * The drum's axis is the z axis through the origin; seen from +z a positive
+ * speed turns it counter-clockwise, so at the bottom the shell moves towards
+ * +x and the charge is lifted on the +x side. In a 2D world the drum is a
+ * circle in the xy plane with lifter polygons. Angles are in radians; polar
+ * angles of the drum frame are measured counter-clockwise from +x.
+ *
+ * Charge angles are measured at the axis from the downward vertical (6
+ * o'clock), positive in the direction of rotation: the shoulder (where the
+ * charge leaves the shell, on the rising side) is positive, the toe (where
+ * it lands) negative. docs/mill.md defines each reported quantity.
+ */
+#ifndef DEMILL_DRUM_H
+#define DEMILL_DRUM_H
+
+#include "world.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Drum parameter keys (demill_drum_set(), demill_drum_get()). Keys 400-449
+ *  describe the drum and can be set; 450-499 are measurements (read-only).
+ *  Changing the geometry rebuilds the drum's walls at the current angle. */
+enum {
+    /** Inner diameter D of the shell, m, > 0. Default 0.3. */
+    DEMILL_DRUM_DIAMETER = 400,
+    /** Axial length, m (3D: flat end caps at z = ±length/2), > 0. Default 0.1. */
+    DEMILL_DRUM_LENGTH = 401,
+    /** Number of evenly spaced lifters (replaces all lifters), 0-64. Default 0. */
+    DEMILL_DRUM_LIFTERS = 402,
+    /** Height of the evenly spaced lifters above the shell, m, >= 0. Default 0.015. */
+    DEMILL_DRUM_LIFTER_HEIGHT = 403,
+    /** Width of the evenly spaced lifters at the shell, m, > 0. Default 0.015. */
+    DEMILL_DRUM_LIFTER_WIDTH = 404,
+    /** Face angle of the evenly spaced lifters, rad, in [0, 1.4]: the angle
+     *  between the leading face and the radial direction (0: a rectangular
+     *  bar). Default 0. */
+    DEMILL_DRUM_LIFTER_FACE_ANGLE = 405,
+    /** Polar angle of lifter 0 at drum angle 0, rad. Default 3π/2 (6 o'clock). */
+    DEMILL_DRUM_LIFTER_PHASE = 406,
+    /** Target speed in rad/s (the three speed keys are views of one value;
+     *  a negative speed turns the drum clockwise). Default 0. */
+    DEMILL_DRUM_SPEED = 410,
+    /** Target speed in revolutions per minute. */
+    DEMILL_DRUM_SPEED_RPM = 411,
+    /** Target speed as a fraction of the critical speed ω_c (see
+     *  DEMILL_DRUM_CRITICAL_SPEED). */
+    DEMILL_DRUM_SPEED_FRACTION = 412,
+    /** Time over which the speed ramps linearly from its current value to a
+     *  new target, s, >= 0. Default 0 (a step). */
+    DEMILL_DRUM_RAMP_TIME = 413,
+    /** Particle diameter d in ω_c = √(2 g / (D - d)), m, >= 0. Default 0:
+     *  the largest particle diameter in the world when the speed is set. */
+    DEMILL_DRUM_CRITICAL_DIAMETER = 414,
+    /** Bulk porosity assumed by demill_drum_fill() for a fill by volume
+     *  fraction, in [0, 0.9]. Default 0.4. */
+    DEMILL_DRUM_FILL_POROSITY = 415,
+    /** Steps between samples of the charge shape for the per-revolution means,
+     *  >= 1. Default 100. */
+    DEMILL_DRUM_SAMPLE_INTERVAL = 416,
+
+    /** Critical speed ω_c = √(2 g / (D - d)), rad/s, with g the magnitude of
+     *  the gravity vector. */
+    DEMILL_DRUM_CRITICAL_SPEED = 450,
+    /** Current speed, rad/s (differs from the target during a ramp). */
+    DEMILL_DRUM_CURRENT_SPEED = 451,
+    /** Angle the drum has turned since creation, rad. */
+    DEMILL_DRUM_ANGLE = 452,
+    /** Completed revolutions since the drum started turning (whole number). */
+    DEMILL_DRUM_REVOLUTIONS = 453,
+    /** z-torque the particles exert on the drum (shell, caps and lifters)
+     *  about its axis at the last force evaluation, N m. */
+    DEMILL_DRUM_TORQUE = 454,
+    /** Power draw P = -T_z ω at the last force evaluation, W. */
+    DEMILL_DRUM_POWER = 455,
+    /** Mean power draw over the last completed revolution, W (NaN before the
+     *  first). */
+    DEMILL_DRUM_POWER_MEAN = 456,
+    /** Power estimate from the charge's centre of mass, M g x_cm ω (M the
+     *  mass of all particles, x_cm measured towards the rising side), W. */
+    DEMILL_DRUM_POWER_CM = 457,
+    /** Its mean over the last completed revolution, W (NaN before the first). */
+    DEMILL_DRUM_POWER_CM_MEAN = 458,
+    /** Charge angles at the current state, rad (NaN without a charge). */
+    DEMILL_DRUM_TOE_ANGLE = 459,
+    DEMILL_DRUM_SHOULDER_ANGLE = 460,
+    DEMILL_DRUM_COM_ANGLE = 461,
+    /** Their means over the samples of the last completed revolution, rad. */
+    DEMILL_DRUM_TOE_ANGLE_MEAN = 462,
+    DEMILL_DRUM_SHOULDER_ANGLE_MEAN = 463,
+    DEMILL_DRUM_COM_ANGLE_MEAN = 464,
+    /** Energy the drum has put into the charge since creation (work of the
+     *  contact forces on the drum's walls, with sign reversed), J. */
+    DEMILL_DRUM_ENERGY_IN = 465,
+    /** Energy dissipated in contacts of particles with the drum since
+     *  creation, J. */
+    DEMILL_DRUM_ENERGY_DISSIPATED = 466,
+    /** Mean dissipation rate of the whole world (all contacts) over the last
+     *  completed revolution, W (NaN before the first). */
+    DEMILL_DRUM_DISSIPATION_MEAN = 467,
+    /** Number of lifters. */
+    DEMILL_DRUM_LIFTER_COUNT = 468
+};
+
+/** Lifter fields (demill_drum_lifter_get()). */
+enum {
+    /** Force the particles exert on the lifter at the last force
+     *  evaluation, N (3 doubles). */
+    DEMILL_LIFTER_FORCE = 1,
+    /** Its mean over the last completed revolution, N (3 doubles). */
+    DEMILL_LIFTER_FORCE_MEAN = 2,
+    /** Largest force magnitude since creation, N (1 double). */
+    DEMILL_LIFTER_FORCE_PEAK = 3,
+    /** Energy dissipated in contacts with the lifter since creation, J
+     *  (1 double): what the lifter's impacts took out of the charge. */
+    DEMILL_LIFTER_ENERGY = 4,
+    /** Current polar angle of the lifter's centre line, rad (1 double). */
+    DEMILL_LIFTER_ANGLE = 5
+};
+
+/** Size distributions for demill_drum_fill(). Sizes are diameters, m. */
+enum {
+    /** Discrete classes. params: n pairs (diameter, mass fraction); the
+     *  fractions are normalised. */
+    DEMILL_SIZES_CLASSES = 1,
+    /** Rosin-Rammler by mass, F(d) = 1 - exp(-(d/d63)^n). params:
+     *  d63, n, d_min, d_max (the distribution is truncated to [d_min, d_max]). */
+    DEMILL_SIZES_ROSIN_RAMMLER = 2,
+    /** Normal by mass. params: mean, standard deviation, d_min, d_max. */
+    DEMILL_SIZES_NORMAL = 3
+};
+
+/** What a fill's target value means. */
+enum {
+    /** Number of particles. */
+    DEMILL_FILL_COUNT = 1,
+    /** Mass, kg. */
+    DEMILL_FILL_MASS = 2,
+    /** Bulk filling J: the fraction of the drum's inner volume (in 2D its
+     *  area) the settled charge occupies, with the bulk porosity of
+     *  DEMILL_DRUM_FILL_POROSITY. */
+    DEMILL_FILL_FRACTION = 3
+};
+
+/** Kinds of wall in the collision spectrum (demill_drum_spectrum()). */
+enum {
+    DEMILL_SPECTRUM_SHELL = 0, /**< shell and end caps */
+    DEMILL_SPECTRUM_LIFTER = 1 /**< lifters */
+};
+
+/** Creates a drum of the given wall material with default geometry (see the
+ *  keys) and writes its id. A world has at most one drum.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_INVALID_VALUE (a drum exists) or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_drum_create(demill_world *world, demill_id material,
+                                            demill_id *out);
+
+/** Removes the drum and its walls. Its id becomes invalid.
+ *  @return DEMILL_OK or DEMILL_ERR_INVALID_HANDLE. */
+DEMILL_API demill_status demill_drum_remove(demill_world *world, demill_id drum);
+
+/** Sets a drum parameter (keys 400-449). Speed keys set the target speed
+ *  from now on (reached after DEMILL_DRUM_RAMP_TIME).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_INVALID_VALUE (out of bounds; lifters that do not fit)
+ *          or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_drum_set(demill_world *world, demill_id drum, int32_t key,
+                                         double value);
+
+/** Reads a drum parameter or measurement (keys 400-499) into *value.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY or
+ *          DEMILL_ERR_NULL_POINTER. */
+DEMILL_API demill_status demill_drum_get(demill_world *world, demill_id drum, int32_t key,
+                                         double *value);
+
+/** Adds one lifter: its centre line at polar angle `angle` (drum frame, at
+ *  drum angle 0), `height` above the shell, `width` at the shell and the
+ *  leading face inclined by `face_angle` from the radial direction.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_INVALID_VALUE (out of range, or more than 64 lifters)
+ *          or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_drum_add_lifter(demill_world *world, demill_id drum,
+                                                double angle, double height, double width,
+                                                double face_angle);
+
+/** Reads a lifter field (DEMILL_LIFTER_*; 1 or 3 doubles) of lifter `index`.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_INVALID_VALUE
+ *          (no such lifter), DEMILL_ERR_UNKNOWN_KEY or
+ *          DEMILL_ERR_NULL_POINTER. */
+DEMILL_API demill_status demill_drum_lifter_get(demill_world *world, demill_id drum,
+                                                uint32_t index, int32_t field, double *out);
+
+/** Fills the drum with particles of one material: sizes from a distribution
+ *  (DEMILL_SIZES_*, with `params`), as many as the target (DEMILL_FILL_*,
+ *  `value`) asks. Particles are placed on a jittered lattice of the largest
+ *  diameter inside the drum, from the bottom up, clear of the walls and of
+ *  every particle already there; the placement depends only on the
+ *  arguments, the drum and the particles already present, so the same call
+ *  gives the same charge. Call it once per material (balls, then ore), then
+ *  let the charge settle (demill_world_settle()).
+ *  @param ids  receives the ids of the new particles (may be NULL);
+ *              capacity: how many it can hold.
+ *  @param added receives the number of particles added (may be NULL).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_UNKNOWN_KEY, DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_INVALID_VALUE (bad distribution or target; the charge
+ *          does not fit: nothing is added), DEMILL_ERR_BUFFER_TOO_SMALL or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_drum_fill(demill_world *world, demill_id drum, demill_id material,
+                                          int32_t distribution, const double *params,
+                                          size_t nparams, int32_t target, double value,
+                                          uint64_t seed, demill_id *ids, size_t capacity,
+                                          size_t *added);
+
+/** Starts recording a collision energy spectrum: the energy dissipated in
+ *  each collision (a contact, from touch to release), counted in `nbins`
+ *  logarithmic bins from e_min to e_max J (below and above go to the first
+ *  and last bin), per pair of particle size classes and per size class
+ *  against the shell and against the lifters. Size classes are given by
+ *  `nedges` increasing diameters: class k holds diameters below edge k (the
+ *  last class everything above the last edge), so there are nedges + 1
+ *  classes. Memory is fixed: (C(C+1)/2 + 2C) × nbins counters for C classes.
+ *  Recording costs a history slot per contact; calling again restarts it.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_drum_spectrum_start(demill_world *world, demill_id drum,
+                                                    size_t nedges, const double *edges,
+                                                    uint32_t nbins, double e_min, double e_max);
+
+/** Reads the spectrum's counts: rows of nbins counters, first the particle
+ *  pairs (class a <= class b, in the order (0,0), (0,1), ..., (1,1), ...),
+ *  then for each class its collisions with the shell, then for each class
+ *  with the lifters. Arguments as for demill_particles_read() (capacity and
+ *  count in counters).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_INVALID_VALUE (no spectrum started) or
+ *          DEMILL_ERR_BUFFER_TOO_SMALL. */
+DEMILL_API demill_status demill_drum_spectrum(demill_world *world, demill_id drum,
+                                              uint64_t *counts, size_t capacity, size_t *count);
+
+/** Steps the world until the charge has settled: until the kinetic energy per
+ *  particle falls below `energy_per_particle` J, or `max_time` s of simulated
+ *  time have passed. *settled (may be NULL) says which.
+ *  @return as demill_world_step(), plus DEMILL_ERR_NOT_FINITE and
+ *          DEMILL_ERR_INVALID_VALUE (negative arguments). */
+DEMILL_API demill_status demill_world_settle(demill_world *world, double max_time,
+                                             double energy_per_particle, int32_t *settled);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DEMILL_DRUM_H */

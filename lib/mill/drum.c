@@ -1,0 +1,572 @@
+/* drum.c: the mill drum (PHYSICS.md §7): its walls (shell, end caps,
+ * lifters) built from a few numbers, its speed in rad/s, rpm or as a
+ * fraction of critical with an optional ramp, and what mill engineers read
+ * from it (power, lifter loads, charge shape) with means over whole
+ * revolutions. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../core/internal.h"
+
+#define TWO_PI (2.0 * DM_PI)
+
+/* ---- speed ------------------------------------------------------------------ */
+
+/* The drum's speed at `time` and (through theta) its angle: the speed moves
+ * linearly from omega_from to omega_to over ramp seconds from t_set, and
+ * the angle is its exact integral. */
+double dm_drum_omega_at(const dm_drum *d, double time, double *theta)
+{
+    const double tau = time - d->t_set;
+    if (d->ramp > 0.0 && tau < d->ramp) {
+        const double a = (d->omega_to - d->omega_from) / d->ramp;
+        *theta = d->theta_set + d->omega_from * tau + 0.5 * a * tau * tau;
+        return d->omega_from + a * tau;
+    }
+    *theta = d->theta_set + 0.5 * (d->omega_from + d->omega_to) * d->ramp +
+             d->omega_to * (tau - d->ramp);
+    return d->omega_to;
+}
+
+static double gravity_magnitude(const demill_world *w)
+{
+    return sqrt(w->g[0] * w->g[0] + w->g[1] * w->g[1] + w->g[2] * w->g[2]);
+}
+
+/* Critical speed √(2 g / (D - d)), with d the set critical diameter or the
+ * largest particle diameter in the world; NaN when D <= d or g = 0. */
+static double critical_speed(const demill_world *w)
+{
+    const dm_drum *d = &w->drum;
+    double dia = d->crit_diameter;
+    if (dia <= 0.0)
+        for (uint32_t i = 0; i < w->p.n; i++)
+            dia = fmax(dia, 2.0 * w->p.r[i]);
+    const double g = gravity_magnitude(w);
+    if (d->diameter <= dia || g == 0.0)
+        return NAN;
+    return sqrt(2.0 * g / (d->diameter - dia));
+}
+
+/* The target speed in rad/s that the speed key and value ask for. */
+static double target_speed(const demill_world *w)
+{
+    const dm_drum *d = &w->drum;
+    switch (d->speed_key) {
+    case DEMILL_DRUM_SPEED_RPM: return d->speed_value * TWO_PI / 60.0;
+    case DEMILL_DRUM_SPEED_FRACTION:
+        return d->speed_value == 0.0 ? 0.0 : d->speed_value * critical_speed(w);
+    default: return d->speed_value;
+    }
+}
+
+/* Starts moving towards `target` from the current speed at the current time. */
+static void retarget(demill_world *w, double target)
+{
+    dm_drum *d = &w->drum;
+    double theta;
+    const double omega = dm_drum_omega_at(d, w->time, &theta);
+    d->t_set = w->time;
+    d->theta_set = theta;
+    d->omega_from = omega;
+    d->omega_to = target;
+}
+
+/* Before a run: a speed given as a fraction of critical follows the charge
+ * (its largest particle may have changed since the speed was set). */
+demill_status dm_drum_prepare(demill_world *w)
+{
+    dm_drum *d = &w->drum;
+    if (!d->alive || d->speed_key != DEMILL_DRUM_SPEED_FRACTION)
+        return DEMILL_OK;
+    const double target = target_speed(w);
+    if (!isfinite(target))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum: the critical speed is undefined (no gravity, or the largest "
+                       "particle is as wide as the drum)");
+    if (target != d->omega_to)
+        retarget(w, target);
+    return DEMILL_OK;
+}
+
+/* ---- walls -------------------------------------------------------------------- */
+
+/* Cross-section of a lifter in the drum frame, counter-clockwise: its centre
+ * line at polar angle a, height h above the shell of radius R, width wd at
+ * the shell, the leading face (on the side of positive rotation) inclined by
+ * `face` from the radial direction. The base is sunk into the shell so that
+ * no corner of it is exposed. */
+static int lifter_polygon(const dm_lifter_spec *l, double R, double *poly)
+{
+    const double ux = cos(l->angle), uy = sin(l->angle), tx = -uy, ty = ux;
+    const double rb = R + l->width + l->height, ri = R - l->height, hw = 0.5 * l->width;
+    const double tf = tan(l->face);
+    /* (radius, tangential offset) of the four corners */
+    const double rt[4][2] = {
+        {ri, -hw}, {rb, -hw}, {rb, hw + (rb - R) * tf}, {ri, hw - l->height * tf}};
+    for (int k = 0; k < 4; k++) {
+        poly[2 * k] = rt[k][0] * ux + rt[k][1] * tx;
+        poly[2 * k + 1] = rt[k][0] * uy + rt[k][1] * ty;
+    }
+    return 4;
+}
+
+static void drum_walls_remove(demill_world *w)
+{
+    dm_drum *d = &w->drum;
+    for (uint32_t k = 0; k < d->nwall; k++) {
+        dm_wall *wall = &w->walls[d->wall_slot[k]];
+        dm_clist_drop_wall(w, d->wall_slot[k]);
+        w->mat_walls[wall->material]--;
+        wall->kind = 0;
+    }
+    d->nwall = 0;
+}
+
+static dm_wall *drum_wall_new(demill_world *w, int kind, int part)
+{
+    dm_drum *d = &w->drum;
+    uint32_t slot = dm_wall_slot_alloc(w);
+    dm_wall *wall = &w->walls[slot];
+    wall->kind = kind;
+    wall->drum_part = part;
+    wall->handle = DM_FREE;
+    wall->material = d->material;
+    wall->lifter = -1;
+    w->mat_walls[d->material]++;
+    d->wall_slot[d->nwall++] = slot;
+    return wall;
+}
+
+/* Rebuilds the drum's walls from its description, at the current angle.
+ * Fails (changing nothing) only when memory runs out. */
+static demill_status drum_walls_build(demill_world *w)
+{
+    dm_drum *d = &w->drum;
+    const uint32_t need = 1 + (w->dim == 3 ? 2 : 0) + d->nlifters;
+    /* make room first so that the build cannot fail half-way */
+    if (w->nwalls + need > w->cap_walls) {
+        uint32_t cap = w->cap_walls ? w->cap_walls : 16;
+        while (cap < w->nwalls + need)
+            cap *= 2;
+        dm_wall *nw = realloc(w->walls, cap * sizeof *nw);
+        if (!nw)
+            return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "drum: out of memory for its walls");
+        w->walls = nw;
+        w->cap_walls = cap;
+    }
+    drum_walls_remove(w);
+    const double R = 0.5 * d->diameter;
+    dm_wall *shell = drum_wall_new(w, DM_WALL_SHELL, DM_PART_SHELL);
+    shell->radius = R;
+    if (w->dim == 3)
+        for (int side = 0; side < 2; side++) {
+            dm_wall *cap = drum_wall_new(w, DM_WALL_PLANE, DM_PART_CAP);
+            cap->p0[2] = side ? 0.5 * d->length : -0.5 * d->length;
+            cap->n0[2] = side ? -1.0 : 1.0;
+        }
+    for (uint32_t k = 0; k < d->nlifters; k++) {
+        dm_wall *lw = drum_wall_new(w, DM_WALL_PRISM, DM_PART_LIFTER);
+        lw->lifter = (int)k;
+        lw->npoly = lifter_polygon(&d->lifters[k], R, lw->poly);
+        for (int v = 0; v < lw->npoly; v++)
+            lw->reach = fmax(lw->reach, hypot(lw->poly[2 * v], lw->poly[2 * v + 1]));
+    }
+    dm_walls_advance(w, w->time);
+    for (uint32_t k = 0; k < d->nwall; k++) {
+        dm_wall *wall = &w->walls[d->wall_slot[k]];
+        memcpy(wall->c_build, wall->c, sizeof wall->c);
+        memcpy(wall->rot_build, wall->rot, sizeof wall->rot);
+    }
+    w->ptab_dirty = true;
+    w->nlist_valid = false;
+    w->forces_valid = false;
+    return DEMILL_OK;
+}
+
+/* n evenly spaced lifters of the current height, width, face angle and
+ * phase. */
+static void even_lifters(dm_drum *d, uint32_t n)
+{
+    d->even_count = n;
+    d->nlifters = n;
+    for (uint32_t k = 0; k < n; k++)
+        d->lifters[k] = (dm_lifter_spec){d->lifter_phase + TWO_PI * k / n, d->lifter_h,
+                                         d->lifter_w, d->lifter_face};
+}
+
+/* Whether lifters fit inside the shell: not reaching the axis. */
+static demill_status check_lifter(demill_world *w, const dm_lifter_spec *l, double diameter)
+{
+    if (l->height >= 0.5 * diameter)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum: lifter height %g m reaches the axis of a drum of diameter %g m",
+                       l->height, diameter);
+    if (l->width >= diameter)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum: lifter width %g m exceeds the diameter",
+                       l->width);
+    if (l->height * tan(l->face) >= l->width)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum: a lifter %g m high and %g m wide cannot have a face angle of %g rad "
+                       "(its top would vanish)",
+                       l->height, l->width, l->face);
+    return DEMILL_OK;
+}
+
+/* ---- API ---------------------------------------------------------------------- */
+
+static double param_default(int32_t key)
+{
+    double v = 0.0;
+    demill_param_bounds(key, NULL, NULL, &v);
+    return v;
+}
+
+DEMILL_API demill_status demill_drum_create(demill_world *w, demill_id material, demill_id *out)
+{
+    uint32_t mat;
+    demill_status s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mat);
+    if (s)
+        return s;
+    if (!out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_create: out is NULL");
+    if (w->drum.alive)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_create: the world has a drum already");
+    dm_drum saved = w->drum;
+    dm_drum *d = &w->drum;
+    memset(d, 0, sizeof *d);
+    d->material = mat;
+    d->diameter = param_default(DEMILL_DRUM_DIAMETER);
+    d->length = param_default(DEMILL_DRUM_LENGTH);
+    d->lifter_h = param_default(DEMILL_DRUM_LIFTER_HEIGHT);
+    d->lifter_w = param_default(DEMILL_DRUM_LIFTER_WIDTH);
+    d->lifter_face = param_default(DEMILL_DRUM_LIFTER_FACE_ANGLE);
+    d->lifter_phase = param_default(DEMILL_DRUM_LIFTER_PHASE);
+    d->porosity = param_default(DEMILL_DRUM_FILL_POROSITY);
+    d->sample_interval = (uint32_t)param_default(DEMILL_DRUM_SAMPLE_INTERVAL);
+    d->speed_key = DEMILL_DRUM_SPEED;
+    d->t_set = w->time;
+    d->theta_start = NAN;
+    d->mean_power = d->mean_power_cm = d->mean_dissipation = NAN;
+    for (int k = 0; k < 3; k++)
+        d->mean_shape[k] = NAN;
+    d->alive = true;
+    if ((s = drum_walls_build(w))) {
+        w->drum = saved;
+        return s;
+    }
+    *out = dm_drum_id(w);
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+void dm_spectrum_free(demill_world *w)
+{
+    free(w->drum.spectrum.edges);
+    free(w->drum.spectrum.counts);
+    memset(&w->drum.spectrum, 0, sizeof w->drum.spectrum);
+}
+
+DEMILL_API demill_status demill_drum_remove(demill_world *w, demill_id drum)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s)
+        return s;
+    drum_walls_remove(w);
+    dm_spectrum_free(w);
+    w->drum.alive = false;
+    w->drum_gen++;
+    w->events = false;
+    w->ptab_dirty = true;
+    w->nlist_valid = false;
+    w->forces_valid = false;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_t key,
+                                         double value)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s)
+        return s;
+    if (key < 400 || key > 499)
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "drum_set: %d is not a drum key", (int)key);
+    if ((s = dm_check_value(w, key, value)))
+        return s;
+    dm_drum *d = &w->drum, saved = *d;
+    bool rebuild = false;
+    switch (key) {
+    case DEMILL_DRUM_DIAMETER: d->diameter = value; rebuild = true; break;
+    case DEMILL_DRUM_LENGTH: d->length = value; rebuild = true; break;
+    case DEMILL_DRUM_LIFTERS: even_lifters(d, (uint32_t)value); rebuild = true; break;
+    case DEMILL_DRUM_LIFTER_HEIGHT: d->lifter_h = value; rebuild = true; break;
+    case DEMILL_DRUM_LIFTER_WIDTH: d->lifter_w = value; rebuild = true; break;
+    case DEMILL_DRUM_LIFTER_FACE_ANGLE: d->lifter_face = value; rebuild = true; break;
+    case DEMILL_DRUM_LIFTER_PHASE: d->lifter_phase = value; rebuild = true; break;
+    case DEMILL_DRUM_SPEED:
+    case DEMILL_DRUM_SPEED_RPM:
+    case DEMILL_DRUM_SPEED_FRACTION: {
+        d->speed_key = key;
+        d->speed_value = value;
+        const double target = target_speed(w);
+        if (!isfinite(target)) {
+            *d = saved;
+            return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                           "drum: a speed as a fraction of critical needs gravity and a drum "
+                           "wider than its largest particle");
+        }
+        retarget(w, target);
+        break;
+    }
+    case DEMILL_DRUM_RAMP_TIME:
+        retarget(w, d->omega_to); /* the ramp applies to the next change */
+        d->ramp = value;
+        break;
+    case DEMILL_DRUM_CRITICAL_DIAMETER: d->crit_diameter = value; break;
+    case DEMILL_DRUM_FILL_POROSITY: d->porosity = value; break;
+    case DEMILL_DRUM_SAMPLE_INTERVAL: d->sample_interval = (uint32_t)value; break;
+    }
+    if (rebuild) {
+        if (key != DEMILL_DRUM_DIAMETER && key != DEMILL_DRUM_LENGTH && key != DEMILL_DRUM_LIFTERS &&
+            d->even_count)
+            even_lifters(d, d->even_count);
+        for (uint32_t k = 0; k < d->nlifters && !s; k++)
+            s = check_lifter(w, &d->lifters[k], d->diameter);
+        if (s || (s = drum_walls_build(w))) {
+            *d = saved;
+            return s;
+        }
+    }
+    w->forces_valid = false;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_add_lifter(demill_world *w, demill_id drum, double angle,
+                                                double height, double width, double face_angle)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s)
+        return s;
+    const double v[4] = {angle, height, width, face_angle};
+    static const char *names[4] = {"angle", "height", "width", "face_angle"};
+    for (int k = 0; k < 4; k++)
+        if (!isfinite(v[k]))
+            return dm_fail(w, DEMILL_ERR_NOT_FINITE, "drum_add_lifter: %s = %g is not finite",
+                           names[k], v[k]);
+    if ((s = dm_check_value(w, DEMILL_DRUM_LIFTER_HEIGHT, height)) ||
+        (s = dm_check_value(w, DEMILL_DRUM_LIFTER_WIDTH, width)) ||
+        (s = dm_check_value(w, DEMILL_DRUM_LIFTER_FACE_ANGLE, face_angle)))
+        return s;
+    dm_drum *d = &w->drum, saved = *d;
+    if (d->nlifters == DM_MAX_LIFTERS)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_add_lifter: at most %d lifters",
+                       DM_MAX_LIFTERS);
+    dm_lifter_spec l = {angle, height, width, face_angle};
+    if ((s = check_lifter(w, &l, d->diameter)))
+        return s;
+    d->lifters[d->nlifters++] = l;
+    d->even_count = 0;
+    if ((s = drum_walls_build(w))) {
+        *d = saved;
+        return s;
+    }
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+/* ---- measurements -------------------------------------------------------------- */
+
+/* The z-torque the particles exert on the drum's walls. */
+static double drum_torque(const demill_world *w)
+{
+    const dm_drum *d = &w->drum;
+    double t = 0.0;
+    for (uint32_t k = 0; k < d->nwall; k++)
+        t += w->walls[d->wall_slot[k]].torque[2];
+    return t;
+}
+
+/* Power from the charge's centre of mass: the torque gravity exerts on the
+ * charge about the axis, T_g = (M x_cm × g)_z, is balanced by the drum in the
+ * mean, so the drum delivers P = -ω T_g. */
+static double power_cm(const demill_world *w, double omega)
+{
+    const dm_particles *P = &w->p;
+    const int D = w->dim;
+    double mx = 0.0, my = 0.0;
+    for (uint32_t i = 0; i < P->n; i++) {
+        mx += P->m[i] * P->x[D * i];
+        my += P->m[i] * P->x[D * i + 1];
+    }
+    return -omega * (mx * w->g[1] - my * w->g[0]);
+}
+
+static double total_dissipated(const demill_world *w)
+{
+    const dm_tally *t = &w->tally;
+    return t->diss_normal + t->diss_tangential + t->diss_friction + t->diss_rolling;
+}
+
+static void revolution_reset(demill_world *w)
+{
+    dm_drum *d = &w->drum;
+    memset(&d->rev, 0, sizeof d->rev);
+    d->rev.t0 = w->time;
+    d->rev.dissipated0 = total_dissipated(w);
+}
+
+/* After every step: the drum's power and lifter loads into the running
+ * totals and the current revolution, charge-shape samples, and the means of
+ * a revolution when it completes. */
+void dm_drum_measure(demill_world *w)
+{
+    dm_drum *d = &w->drum;
+    if (!d->alive)
+        return;
+    const double dt = w->dt;
+    d->torque = drum_torque(w);
+    d->power = -d->torque * d->omega;
+    d->energy_in += d->power * dt;
+    d->energy_dissipated = 0.0;
+    for (uint32_t k = 0; k < d->nwall; k++) {
+        const dm_wall *wall = &w->walls[d->wall_slot[k]];
+        d->energy_dissipated += wall->dissipated;
+        if (wall->drum_part != DM_PART_LIFTER)
+            continue;
+        const int l = wall->lifter;
+        d->lifter_energy[l] = wall->dissipated;
+        d->lifter_peak[l] = fmax(d->lifter_peak[l], sqrt(wall->force[0] * wall->force[0] +
+                                                         wall->force[1] * wall->force[1] +
+                                                         wall->force[2] * wall->force[2]));
+        for (int c = 0; c < 3; c++)
+            d->rev.lifter_impulse[l][c] += wall->force[c] * dt;
+    }
+    if (isnan(d->theta_start)) {
+        if (d->omega == 0.0)
+            return;
+        d->theta_start = d->theta;
+        revolution_reset(w);
+    }
+    d->rev.energy_in += d->power * dt;
+    if (w->steps >= d->samples_due) {
+        d->samples_due = w->steps + d->sample_interval;
+        double shape[3];
+        dm_charge_shape(w, shape);
+        for (int k = 0; k < 3; k++)
+            if (isfinite(shape[k])) {
+                d->rev.shape_sum[k] += shape[k];
+                d->rev.shape_count[k]++;
+            }
+        d->rev.power_cm_sum += power_cm(w, d->omega);
+        d->rev.power_cm_count++;
+    }
+    const uint64_t done = (uint64_t)(fabs(d->theta - d->theta_start) / TWO_PI);
+    if (done > d->revolutions) {
+        const double span = w->time - d->rev.t0;
+        d->revolutions = done;
+        d->mean_power = d->rev.energy_in / span;
+        d->mean_power_cm =
+            d->rev.power_cm_count ? d->rev.power_cm_sum / d->rev.power_cm_count : NAN;
+        d->mean_dissipation = (total_dissipated(w) - d->rev.dissipated0) / span;
+        for (int k = 0; k < 3; k++)
+            d->mean_shape[k] =
+                d->rev.shape_count[k] ? d->rev.shape_sum[k] / d->rev.shape_count[k] : NAN;
+        for (uint32_t l = 0; l < d->nlifters; l++)
+            for (int c = 0; c < 3; c++)
+                d->lifter_force_mean[l][c] = d->rev.lifter_impulse[l][c] / span;
+        revolution_reset(w);
+    }
+}
+
+DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_t key,
+                                         double *value)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s)
+        return s;
+    if (!value)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_get: value is NULL");
+    const dm_drum *d = &w->drum;
+    double shape[3];
+    switch (key) {
+    case DEMILL_DRUM_DIAMETER: *value = d->diameter; break;
+    case DEMILL_DRUM_LENGTH: *value = d->length; break;
+    case DEMILL_DRUM_LIFTERS:
+    case DEMILL_DRUM_LIFTER_COUNT: *value = d->nlifters; break;
+    case DEMILL_DRUM_LIFTER_HEIGHT: *value = d->lifter_h; break;
+    case DEMILL_DRUM_LIFTER_WIDTH: *value = d->lifter_w; break;
+    case DEMILL_DRUM_LIFTER_FACE_ANGLE: *value = d->lifter_face; break;
+    case DEMILL_DRUM_LIFTER_PHASE: *value = d->lifter_phase; break;
+    case DEMILL_DRUM_SPEED: *value = d->omega_to; break;
+    case DEMILL_DRUM_SPEED_RPM: *value = d->omega_to * 60.0 / TWO_PI; break;
+    case DEMILL_DRUM_SPEED_FRACTION: *value = d->omega_to / critical_speed(w); break;
+    case DEMILL_DRUM_RAMP_TIME: *value = d->ramp; break;
+    case DEMILL_DRUM_CRITICAL_DIAMETER: *value = d->crit_diameter; break;
+    case DEMILL_DRUM_FILL_POROSITY: *value = d->porosity; break;
+    case DEMILL_DRUM_SAMPLE_INTERVAL: *value = d->sample_interval; break;
+    case DEMILL_DRUM_CRITICAL_SPEED: *value = critical_speed(w); break;
+    case DEMILL_DRUM_CURRENT_SPEED: *value = d->omega; break;
+    case DEMILL_DRUM_ANGLE: *value = d->theta; break;
+    case DEMILL_DRUM_REVOLUTIONS: *value = (double)d->revolutions; break;
+    case DEMILL_DRUM_TORQUE: *value = drum_torque(w); break;
+    case DEMILL_DRUM_POWER: *value = -drum_torque(w) * d->omega; break;
+    case DEMILL_DRUM_POWER_MEAN: *value = d->mean_power; break;
+    case DEMILL_DRUM_POWER_CM: *value = power_cm(w, d->omega); break;
+    case DEMILL_DRUM_POWER_CM_MEAN: *value = d->mean_power_cm; break;
+    case DEMILL_DRUM_TOE_ANGLE:
+    case DEMILL_DRUM_SHOULDER_ANGLE:
+    case DEMILL_DRUM_COM_ANGLE:
+        dm_charge_shape(w, shape);
+        *value = shape[key - DEMILL_DRUM_TOE_ANGLE];
+        break;
+    case DEMILL_DRUM_TOE_ANGLE_MEAN:
+    case DEMILL_DRUM_SHOULDER_ANGLE_MEAN:
+    case DEMILL_DRUM_COM_ANGLE_MEAN: *value = d->mean_shape[key - DEMILL_DRUM_TOE_ANGLE_MEAN]; break;
+    case DEMILL_DRUM_ENERGY_IN: *value = d->energy_in; break;
+    case DEMILL_DRUM_ENERGY_DISSIPATED: *value = d->energy_dissipated; break;
+    case DEMILL_DRUM_DISSIPATION_MEAN: *value = d->mean_dissipation; break;
+    default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "drum_get: %d is not a drum key", (int)key);
+    }
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_lifter_get(demill_world *w, demill_id drum, uint32_t index,
+                                                int32_t field, double *out)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s)
+        return s;
+    if (!out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_lifter_get: out is NULL");
+    const dm_drum *d = &w->drum;
+    if (index >= d->nlifters)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_lifter_get: lifter %u of %u", index,
+                       d->nlifters);
+    const dm_wall *wall = NULL;
+    for (uint32_t k = 0; k < d->nwall; k++)
+        if (w->walls[d->wall_slot[k]].lifter == (int)index)
+            wall = &w->walls[d->wall_slot[k]];
+    double theta;
+    switch (field) {
+    case DEMILL_LIFTER_FORCE: memcpy(out, wall->force, 3 * sizeof *out); break;
+    case DEMILL_LIFTER_FORCE_MEAN: memcpy(out, d->lifter_force_mean[index], 3 * sizeof *out); break;
+    case DEMILL_LIFTER_FORCE_PEAK: out[0] = d->lifter_peak[index]; break;
+    case DEMILL_LIFTER_ENERGY: out[0] = d->lifter_energy[index]; break;
+    case DEMILL_LIFTER_ANGLE:
+        dm_drum_omega_at(d, w->time, &theta);
+        out[0] = d->lifters[index].angle + theta;
+        break;
+    default:
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "drum_lifter_get: %d is not a lifter field",
+                       (int)field);
+    }
+    return DEMILL_OK;
+}
