@@ -53,7 +53,9 @@ enum {
      *  new target, s, >= 0. Default 0 (a step). */
     DEMILL_DRUM_RAMP_TIME = 413,
     /** Particle diameter d in ω_c = √(2 g / (D - d)), m, >= 0. Default 0:
-     *  the largest particle diameter in the world when the speed is set. */
+     *  the largest particle diameter in the world. A speed given as a
+     *  fraction of critical is converted when it is set and again at the
+     *  start of every run, so that it follows the charge. */
     DEMILL_DRUM_CRITICAL_DIAMETER = 414,
     /** Bulk porosity assumed by demill_drum_fill() for a fill by volume
      *  fraction, in [0, 0.9]. Default 0.4. */
@@ -69,7 +71,8 @@ enum {
     DEMILL_DRUM_CURRENT_SPEED = 451,
     /** Angle the drum has turned since creation, rad. */
     DEMILL_DRUM_ANGLE = 452,
-    /** Completed revolutions since the drum started turning (whole number). */
+    /** Completed revolutions since the drum was first set turning (whole
+     *  number). */
     DEMILL_DRUM_REVOLUTIONS = 453,
     /** z-torque the particles exert on the drum (shell, caps and lifters)
      *  about its axis at the last force evaluation, N m. */
@@ -205,7 +208,9 @@ DEMILL_API demill_status demill_drum_lifter_get(demill_world *world, demill_id d
  *  let the charge settle (demill_world_settle()).
  *  @param ids  receives the ids of the new particles (may be NULL);
  *              capacity: how many it can hold.
- *  @param added receives the number of particles added (may be NULL).
+ *  @param added receives the number of particles added (0 on failure; on
+ *              DEMILL_ERR_BUFFER_TOO_SMALL the number ids must hold); may be
+ *              NULL.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_UNKNOWN_KEY, DEMILL_ERR_NOT_FINITE,
  *          DEMILL_ERR_INVALID_VALUE (bad distribution or target; the charge

@@ -61,7 +61,11 @@ static double target_speed(const demill_world *w)
     }
 }
 
-/* Starts moving towards `target` from the current speed at the current time. */
+static void revolution_reset(demill_world *w);
+
+/* Starts moving towards `target` from the current speed at the current time;
+ * the first time the drum is set turning, its revolutions start counting
+ * from here. The walls take the new speed at once. */
 static void retarget(demill_world *w, double target)
 {
     dm_drum *d = &w->drum;
@@ -71,6 +75,11 @@ static void retarget(demill_world *w, double target)
     d->theta_set = theta;
     d->omega_from = omega;
     d->omega_to = target;
+    if (isnan(d->theta_start) && target != 0.0) {
+        d->theta_start = theta;
+        revolution_reset(w);
+    }
+    dm_walls_advance(w, w->time);
 }
 
 /* Before a run: a speed given as a fraction of critical follows the charge
@@ -447,12 +456,8 @@ void dm_drum_measure(demill_world *w)
         for (int c = 0; c < 3; c++)
             d->rev.lifter_impulse[l][c] += wall->force[c] * dt;
     }
-    if (isnan(d->theta_start)) {
-        if (d->omega == 0.0)
-            return;
-        d->theta_start = d->theta;
-        revolution_reset(w);
-    }
+    if (isnan(d->theta_start))
+        return; /* not turning yet */
     d->rev.energy_in += d->power * dt;
     if (w->steps >= d->samples_due) {
         d->samples_due = w->steps + d->sample_interval;

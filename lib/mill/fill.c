@@ -194,12 +194,15 @@ DEMILL_API demill_status demill_drum_fill(demill_world *w, demill_id drum, demil
             dmax = fmax(dmax, cls[k].hi);
     }
     if (added)
-        *added = n;
+        *added = 0;
     if (n == 0)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_fill: the target asks for no particle");
-    if (ids && capacity < n)
+    if (ids && capacity < n) {
+        if (added)
+            *added = n; /* what the buffer must hold */
         return dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL, "drum_fill: capacity %zu, %zu particles",
                        capacity, n);
+    }
     if (n > UINT32_MAX / 4 - (uint64_t)w->p.n)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_fill: %zu particles are too many", n);
 
@@ -258,8 +261,11 @@ DEMILL_API demill_status demill_drum_fill(demill_world *w, demill_id drum, demil
     s = dm_particles_append(w, mat, n, pos, diam, NULL, ids);
     free(diam);
     free(pos);
-    if (!s)
+    if (!s) {
+        if (added)
+            *added = n;
         dm_clear_error(w);
+    }
     return s;
 }
 

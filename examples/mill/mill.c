@@ -1,0 +1,501 @@
+/* mill.c: the main job of libdemill: a laboratory ball mill.
+ *
+ * By default a 3D mill of the drum3d scene's geometry and materials (a
+ * 0.3 m x 0.1 m drum with eight 15 mm lifters, steel balls, Hertz-Mindlin
+ * contacts with restitution 0.5 and friction 0.5) charged with 5 mm balls of
+ * the drum3d charge's mass, settled for 0.3 s and turned for two
+ * revolutions at 75 % of critical speed. --scene drum3d and --scene drum2d
+ * run the canonical scenes of SCENES.md exactly. Writes a time series, a
+ * summary, VTK files for ParaView and two pictures to the output folder;
+ * progress goes to stderr. Run `mill --help` for the options.
+ */
+#define _POSIX_C_SOURCE 200809L /* mkdir, clock_gettime, strdup */
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "mill.h"
+
+#define PI 3.14159265358979323846
+
+typedef struct options {
+    const char *scene, *out;
+    int dim, lifters;
+    double diameter, length, speed, fill, radius, lifter_height, revolutions, dt, vtk_every;
+    size_t particles; /* scenes: a fixed packing */
+    double site_radius;
+    double mass;      /* default charge mass when no --fill is given */
+} options;
+
+static void usage(FILE *f)
+{
+    fputs("usage: mill [options]\n"
+          "Simulates a ball mill with libdemill and writes mill.csv, summary.txt, VTK files,\n"
+          "charge.png and power.png to the output folder.\n\n"
+          "  --scene NAME         default (a laboratory mill), drum3d or drum2d (the canonical\n"
+          "                       scenes of SCENES.md, exactly; geometry options then not allowed)\n"
+          "  --dim 2|3            2D (discs in a plane) or 3D [3]\n"
+          "  --diameter D         inner drum diameter, m [0.3]\n"
+          "  --length L           drum length, m (3D) [0.1]\n"
+          "  --speed PCT          speed, % of critical [75]\n"
+          "  --fill PCT           bulk filling, % of the drum volume (bed porosity 40 %, in 2D\n"
+          "                       20 %) [3D: 8.82 kg of balls, the drum3d charge; 2D: 30]\n"
+          "  --lifters N          number of lifters [8]\n"
+          "  --lifter-height H    lifter height and width, m [0.015]\n"
+          "  --radius R           ball radius, m [0.005]\n"
+          "  --revolutions N      revolutions to run after settling [2]\n"
+          "  --time-step DT       s [1e-5]\n"
+          "  --vtk-every T        seconds between VTK frames, 0 for none [0.1]\n"
+          "  --out DIR            output folder [mill-out]\n"
+          "  --help               this text\n",
+          f);
+}
+
+static int parse_number(const char *opt, const char *text, double lo, double hi, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(text, &end);
+    if (errno || end == text || *end || !(v >= lo && v <= hi)) {
+        fprintf(stderr, "mill: %s %s: expected a number in [%g, %g]\n", opt, text, lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+static int parse_options(int argc, char **argv, options *o)
+{
+    *o = (options){.scene = "default", .out = "mill-out", .dim = 3, .lifters = 8,
+                   .diameter = 0.3, .length = 0.1, .speed = 75, .fill = 0, .radius = 0.005,
+                   .lifter_height = 0.015, .revolutions = 2, .dt = 1e-5, .vtk_every = 0.1,
+                   .mass = 10000 * 8.8216e-4};
+    int geometry = 0;
+    for (int k = 1; k < argc; k++) {
+        const char *a = argv[k];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage(stdout);
+            exit(EXIT_SUCCESS);
+        }
+        if (k + 1 >= argc) {
+            fprintf(stderr, "mill: %s needs a value (see mill --help)\n", a);
+            return -1;
+        }
+        const char *v = argv[++k];
+        double x;
+        if (!strcmp(a, "--scene")) {
+            o->scene = v;
+        } else if (!strcmp(a, "--out")) {
+            o->out = v;
+        } else if (!strcmp(a, "--dim")) {
+            if (parse_number(a, v, 2, 3, &x) || (x != 2 && x != 3)) {
+                fprintf(stderr, "mill: --dim takes 2 or 3\n");
+                return -1;
+            }
+            o->dim = (int)x;
+            geometry = 1;
+        } else if (!strcmp(a, "--revolutions")) {
+            if (parse_number(a, v, 1, 1000, &x))
+                return -1;
+            o->revolutions = floor(x);
+        } else if (!strcmp(a, "--vtk-every")) {
+            if (parse_number(a, v, 0, 1e6, &o->vtk_every))
+                return -1;
+        } else if (!strcmp(a, "--time-step")) {
+            if (parse_number(a, v, 1e-9, 1e-2, &o->dt))
+                return -1;
+        } else {
+            struct {
+                const char *name;
+                double *dst, lo, hi;
+            } num[] = {{"--diameter", &o->diameter, 1e-3, 100},
+                       {"--length", &o->length, 1e-4, 100},
+                       {"--speed", &o->speed, 0, 300},
+                       {"--fill", &o->fill, 0.1, 90},
+                       {"--lifter-height", &o->lifter_height, 0, 10},
+                       {"--radius", &o->radius, 1e-5, 1}};
+            size_t j = 0;
+            while (j < sizeof num / sizeof num[0] && strcmp(a, num[j].name))
+                j++;
+            if (j < sizeof num / sizeof num[0]) {
+                if (parse_number(a, v, num[j].lo, num[j].hi, num[j].dst))
+                    return -1;
+            } else if (!strcmp(a, "--lifters")) {
+                if (parse_number(a, v, 0, 64, &x))
+                    return -1;
+                o->lifters = (int)x;
+            } else {
+                fprintf(stderr, "mill: unknown option %s (see mill --help)\n", a);
+                return -1;
+            }
+            geometry = 1;
+        }
+    }
+    if (strcmp(o->scene, "default")) {
+        if (geometry) {
+            fprintf(stderr, "mill: --scene %s is fixed by SCENES.md; only --revolutions, "
+                            "--vtk-every and --out may be given with it\n",
+                    o->scene);
+            return -1;
+        }
+        o->radius = 0.003;
+        o->speed = 75;
+        if (!strcmp(o->scene, "drum3d")) {
+            o->particles = 10000;
+            o->site_radius = 0.131;
+        } else if (!strcmp(o->scene, "drum2d")) {
+            o->dim = 2;
+            o->diameter = 1.0;
+            o->lifter_height = 0.03;
+            o->particles = 8000;
+            o->site_radius = 0.466;
+        } else {
+            fprintf(stderr, "mill: unknown scene %s (default, drum3d or drum2d)\n", o->scene);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static demill_world *g_world; /* for check()'s message */
+
+static void check(demill_status s, const char *what)
+{
+    if (s != DEMILL_OK) {
+        fprintf(stderr, "mill: %s failed: %s: %s\n", what, demill_strerror(s),
+                demill_world_last_error(g_world));
+        exit(EXIT_FAILURE);
+    }
+}
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static double drum_value(demill_world *w, demill_id d, int key)
+{
+    double v;
+    check(demill_drum_get(w, d, key, &v), "demill_drum_get");
+    return v;
+}
+
+static double world_energy(demill_world *w, int term)
+{
+    double v;
+    check(demill_world_energy(w, term, &v), "demill_world_energy");
+    return v;
+}
+
+static void drum_shape_of(demill_world *w, demill_id drum, const options *o, drum_shape *s)
+{
+    s->dim = o->dim;
+    s->radius = 0.5 * o->diameter;
+    s->length = o->length;
+    s->angle = drum_value(w, drum, DEMILL_DRUM_ANGLE);
+    s->nlifters = o->lifters;
+    s->lifter_height = s->lifter_width = o->lifter_height;
+    for (int k = 0; k < o->lifters; k++)
+        check(demill_drum_lifter_get(w, drum, (uint32_t)k, DEMILL_LIFTER_ANGLE, &s->lifter_angle[k]),
+              "demill_drum_lifter_get");
+}
+
+/* The VTK frames written so far, for the .pvd series. */
+typedef struct frames {
+    size_t n, cap;
+    char **particles, **drum;
+    double *time;
+} frames;
+
+static void frame_write(frames *fr, const char *dir, demill_world *w, demill_id drum,
+                        const options *o, double t)
+{
+    if (fr->n == fr->cap) {
+        fr->cap = fr->cap ? 2 * fr->cap : 64;
+        fr->particles = realloc(fr->particles, fr->cap * sizeof *fr->particles);
+        fr->drum = realloc(fr->drum, fr->cap * sizeof *fr->drum);
+        fr->time = realloc(fr->time, fr->cap * sizeof *fr->time);
+        if (!fr->particles || !fr->drum || !fr->time) {
+            fprintf(stderr, "mill: out of memory\n");
+            exit(EXIT_FAILURE);
+        }
+    }
+    char name[64], path[4096];
+    drum_shape shape;
+    drum_shape_of(w, drum, o, &shape);
+    snprintf(name, sizeof name, "particles_%04zu.vtu", fr->n);
+    fr->particles[fr->n] = strdup(name);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    if (write_vtu(path, w))
+        exit(EXIT_FAILURE);
+    snprintf(name, sizeof name, "drum_%04zu.vtp", fr->n);
+    fr->drum[fr->n] = strdup(name);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    if (write_drum_vtp(path, &shape))
+        exit(EXIT_FAILURE);
+    fr->time[fr->n++] = t;
+}
+
+int main(int argc, char **argv)
+{
+    options o;
+    if (parse_options(argc, argv, &o))
+        return EXIT_FAILURE;
+    if (demill_check_version(DEMILL_VERSION_NUMBER) != DEMILL_OK) {
+        fprintf(stderr, "mill: built with libdemill %s headers, running with %s\n",
+                DEMILL_VERSION_STRING, demill_version_string());
+        return EXIT_FAILURE;
+    }
+    if (mkdir(o.out, 0777) && errno != EEXIST) {
+        perror(o.out);
+        return EXIT_FAILURE;
+    }
+    const double t_wall0 = now();
+
+    /* the world, its steel, and the drum */
+    demill_world *w;
+    if (demill_world_create(o.dim, &w) != DEMILL_OK) {
+        fprintf(stderr, "mill: cannot create a world\n");
+        return EXIT_FAILURE;
+    }
+    g_world = w;
+    demill_id steel, drum;
+    check(demill_world_set(w, DEMILL_WORLD_TIME_STEP, o.dt), "time step");
+    check(demill_material_create(w, &steel), "material");
+    check(demill_material_set(w, steel, DEMILL_MATERIAL_DENSITY, 7800), "density");
+    check(demill_material_set(w, steel, DEMILL_MATERIAL_YOUNGS_MODULUS, 1e8), "Young's modulus");
+    check(demill_material_set(w, steel, DEMILL_MATERIAL_POISSON_RATIO, 0.3), "Poisson ratio");
+    check(demill_material_set(w, steel, DEMILL_MATERIAL_RESTITUTION, 0.5), "restitution");
+    check(demill_material_set(w, steel, DEMILL_MATERIAL_FRICTION, 0.5), "friction");
+    check(demill_pair_set(w, steel, steel, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ), "normal law");
+    check(demill_pair_set(w, steel, steel, DEMILL_PAIR_DAMPING, DEMILL_DAMPING_RESTITUTION),
+          "damping");
+    check(demill_pair_set(w, steel, steel, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN),
+          "tangential law");
+    /* as in the scenes' reference (LIGGGHTS without limitForce) */
+    check(demill_pair_set(w, steel, steel, DEMILL_PAIR_CLAMP_NORMAL, 0), "clamp");
+    check(demill_drum_create(w, steel, &drum), "drum");
+    check(demill_drum_set(w, drum, DEMILL_DRUM_DIAMETER, o.diameter), "diameter");
+    check(demill_drum_set(w, drum, DEMILL_DRUM_LENGTH, o.length), "length");
+    check(demill_drum_set(w, drum, DEMILL_DRUM_LIFTER_HEIGHT, o.lifter_height), "lifter height");
+    check(demill_drum_set(w, drum, DEMILL_DRUM_LIFTER_WIDTH, o.lifter_height), "lifter width");
+    check(demill_drum_set(w, drum, DEMILL_DRUM_LIFTERS, o.lifters), "lifters");
+
+    /* the charge */
+    size_t n;
+    if (o.particles) {
+        const scene_def sd = {o.dim, o.particles, o.site_radius};
+        double *pos = malloc(3 * o.particles * sizeof *pos), *rad = malloc(o.particles * sizeof *rad);
+        if (!pos || !rad || scene_packing(&sd, pos)) {
+            fprintf(stderr, "mill: cannot build the %s packing\n", o.scene);
+            return EXIT_FAILURE;
+        }
+        for (size_t k = 0; k < o.particles; k++)
+            rad[k] = o.radius;
+        check(demill_particles_add(w, steel, o.particles, pos, rad, NULL, DEMILL_ADD_NO_OVERLAP,
+                                   NULL),
+              "adding the charge");
+        free(pos);
+        free(rad);
+        n = o.particles;
+    } else {
+        const double sizes[2] = {2 * o.radius, 1.0};
+        if (o.dim == 2)
+            check(demill_drum_set(w, drum, DEMILL_DRUM_FILL_POROSITY, 0.2), "porosity");
+        /* 3D: the drum3d charge's mass unless a filling is given; 2D: 30 % */
+        const double fill = o.fill > 0 ? o.fill : o.dim == 2 ? 30 : 0;
+        check(demill_drum_fill(w, drum, steel, DEMILL_SIZES_CLASSES, sizes, 2,
+                               fill > 0 ? DEMILL_FILL_FRACTION : DEMILL_FILL_MASS,
+                               fill > 0 ? fill / 100 : o.mass, 1, NULL, 0, &n),
+              "filling the drum");
+    }
+    double mass = 0.0;
+    {
+        double *m = malloc(n * sizeof *m);
+        size_t count;
+        check(demill_particles_read(w, DEMILL_PARTICLE_MASS, m, n, &count), "masses");
+        for (size_t k = 0; k < n; k++)
+            mass += m[k];
+        free(m);
+    }
+
+    /* settle 0.3 s at rest, then turn */
+    const double settle = 0.3;
+    const double omega_c = drum_value(w, drum, DEMILL_DRUM_CRITICAL_SPEED);
+    const double omega = o.speed / 100 * omega_c, period = omega > 0 ? 2 * PI / omega : 0;
+    const uint64_t sample = (uint64_t)fmax(1, round(1e-3 / o.dt));
+    const uint64_t vtk_steps = o.vtk_every > 0 ? (uint64_t)fmax(1, round(o.vtk_every / o.dt)) : 0;
+    const double total_time = settle + (period > 0 ? o.revolutions * period : 1.0);
+    const uint64_t total_steps = (uint64_t)ceil(total_time / o.dt);
+    fprintf(stderr, "mill: %s, %dD, %zu balls (%.3f kg) in a %.3f m drum, %d lifters, %.0f %% of "
+                    "critical (%.4f rad/s), %.0f revolutions, about %llu steps\n",
+            o.scene, o.dim, n, mass, o.diameter, o.lifters, o.speed, omega, o.revolutions,
+            (unsigned long long)total_steps);
+
+    char path[4096];
+    snprintf(path, sizeof path, "%s/mill.csv", o.out);
+    FILE *csv = fopen(path, "w");
+    if (!csv) {
+        perror(path);
+        return EXIT_FAILURE;
+    }
+    fprintf(csv, "time_s,torque_Nm,power_W,power_cm_W,kinetic_J,dissipated_J,toe_deg,"
+                 "shoulder_deg,com_deg,revolutions\n");
+    size_t nrows = 0, caprows = 1024;
+    double *row_t = malloc(caprows * sizeof *row_t), *row_p = malloc(caprows * sizeof *row_p);
+    frames fr = {0};
+
+    uint64_t steps = 0;
+    double t = 0, last_report = now(), contacts_sum = 0, t_rev_start = NAN, t_rev_end = NAN;
+    int contact_samples = 0, turning = 0;
+    const double t_step0 = now();
+    /* progress: a self-updating line on a terminal, a line every 10 s otherwise */
+    const int tty = isatty(fileno(stderr));
+    const double report_every = tty ? 0.5 : 10.0;
+    while (period > 0 ? drum_value(w, drum, DEMILL_DRUM_REVOLUTIONS) < o.revolutions
+                      : t < total_time) {
+        if (!turning && t >= settle - 0.5 * o.dt) {
+            check(demill_drum_set(w, drum, DEMILL_DRUM_SPEED_FRACTION, o.speed / 100), "speed");
+            turning = 1;
+        }
+        check(demill_world_step(w, sample), "step");
+        steps += sample;
+        check(demill_world_get(w, DEMILL_WORLD_TIME, &t), "time");
+        /* the measurement revolution is the last one */
+        const uint64_t rev = (uint64_t)drum_value(w, drum, DEMILL_DRUM_REVOLUTIONS);
+        if (turning && isnan(t_rev_start) && rev + 1 >= (uint64_t)o.revolutions)
+            t_rev_start = t;
+        if (rev >= (uint64_t)o.revolutions)
+            t_rev_end = t;
+        /* contacts per particle over the measurement revolution, every 1000 steps */
+        if (!isnan(t_rev_start) && steps % 1000 < sample) {
+            double c;
+            check(demill_world_get(w, DEMILL_WORLD_CONTACT_COUNT, &c), "contacts");
+            contacts_sum += 2 * c / n;
+            contact_samples++;
+        }
+        const double power = drum_value(w, drum, DEMILL_DRUM_POWER);
+        fprintf(csv, "%.6f,%.6g,%.6g,%.6g,%.6g,%.6g,%.2f,%.2f,%.2f,%llu\n", t,
+                drum_value(w, drum, DEMILL_DRUM_TORQUE) + 0.0, power + 0.0,
+                drum_value(w, drum, DEMILL_DRUM_POWER_CM) + 0.0,
+                world_energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL) +
+                    world_energy(w, DEMILL_ENERGY_KINETIC_ROTATIONAL),
+                world_energy(w, DEMILL_ENERGY_DISSIPATED),
+                drum_value(w, drum, DEMILL_DRUM_TOE_ANGLE) * 180 / PI,
+                drum_value(w, drum, DEMILL_DRUM_SHOULDER_ANGLE) * 180 / PI,
+                drum_value(w, drum, DEMILL_DRUM_COM_ANGLE) * 180 / PI, (unsigned long long)rev);
+        if (nrows == caprows) {
+            caprows *= 2;
+            row_t = realloc(row_t, caprows * sizeof *row_t);
+            row_p = realloc(row_p, caprows * sizeof *row_p);
+            if (!row_t || !row_p) {
+                fprintf(stderr, "mill: out of memory\n");
+                return EXIT_FAILURE;
+            }
+        }
+        row_t[nrows] = t;
+        row_p[nrows++] = power;
+        if (vtk_steps && steps % vtk_steps < sample)
+            frame_write(&fr, o.out, w, drum, &o, t);
+        if (now() - last_report > report_every) {
+            last_report = now();
+            const double rate = steps * (double)n / (last_report - t_step0);
+            const double eta = (total_steps > steps ? total_steps - steps : 0) * (double)n / rate;
+            fprintf(stderr, "%smill: step %llu/%llu  t = %.3f s  revolution %.2f  %.2f M particle-steps/s  ETA %.0f s%s",
+                    tty ? "\r" : "", (unsigned long long)steps, (unsigned long long)total_steps,
+                    t, turning ? drum_value(w, drum, DEMILL_DRUM_ANGLE) / (2 * PI) : 0.0,
+                    rate / 1e6, eta, tty ? "   " : "\n");
+        }
+    }
+    const double t_step1 = now();
+    if (tty)
+        fprintf(stderr, "\n");
+    if (fclose(csv)) {
+        fprintf(stderr, "mill: error writing mill.csv\n");
+        return EXIT_FAILURE;
+    }
+    frame_write(&fr, o.out, w, drum, &o, t);
+
+    /* pictures, series, summary */
+    drum_shape shape;
+    drum_shape_of(w, drum, &o, &shape);
+    const double mean_power = drum_value(w, drum, DEMILL_DRUM_POWER_MEAN);
+    char title[256];
+    snprintf(title, sizeof title, "libdemill %s mill, %dD: %zu balls, %.0f %% of critical, t = %.2f s, mean power %.2f W",
+             o.scene, o.dim, n, o.speed, t, mean_power);
+    snprintf(path, sizeof path, "%s/charge.png", o.out);
+    if (draw_charge(path, w, &shape, title))
+        return EXIT_FAILURE;
+    /* the power against time, averaged over 10 ms so that impacts do not hide
+     * the trend */
+    const size_t win = 10;
+    double *smooth = malloc((nrows ? nrows : 1) * sizeof *smooth), acc = 0;
+    for (size_t k = 0; k < nrows; k++) {
+        acc += row_p[k] - (k >= win ? row_p[k - win] : 0);
+        smooth[k] = acc / (k + 1 < win ? k + 1 : win);
+    }
+    snprintf(path, sizeof path, "%s/power.png", o.out);
+    if (draw_power(path, row_t, smooth, nrows, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
+                   isnan(t_rev_end) ? t : t_rev_end))
+        return EXIT_FAILURE;
+    if (fr.n) {
+        snprintf(path, sizeof path, "%s/particles.pvd", o.out);
+        if (write_pvd(path, (const char *const *)fr.particles, fr.time, fr.n))
+            return EXIT_FAILURE;
+        snprintf(path, sizeof path, "%s/drum.pvd", o.out);
+        if (write_pvd(path, (const char *const *)fr.drum, fr.time, fr.n))
+            return EXIT_FAILURE;
+    }
+    snprintf(path, sizeof path, "%s/summary.txt", o.out);
+    FILE *sum = fopen(path, "w");
+    if (!sum) {
+        perror(path);
+        return EXIT_FAILURE;
+    }
+    const double wall = now() - t_wall0;
+    fprintf(sum, "scene = %s\ndim = %d\nparticles = %zu\nmass_kg = %.6g\ndiameter_m = %g\n"
+                 "length_m = %g\nlifters = %d\nspeed_fraction_critical = %.6g\n"
+                 "speed_rad_s = %.6g\ncritical_speed_rad_s = %.6g\nrevolutions = %.0f\n"
+                 "mean_power_W = %.6g\nmean_power_cm_W = %.6g\nmean_dissipation_W = %.6g\n"
+                 "toe_deg = %.2f\nshoulder_deg = %.2f\ncom_deg = %.2f\n"
+                 "contacts_per_particle = %.4f\nsteps = %llu\ntime_step_s = %g\n"
+                 "simulated_s = %.6g\nwall_s = %.2f\nparticle_steps_per_s = %.4g\n",
+            o.scene, o.dim, n, mass, o.diameter, o.length, o.lifters, o.speed / 100, omega, omega_c,
+            drum_value(w, drum, DEMILL_DRUM_REVOLUTIONS), mean_power,
+            drum_value(w, drum, DEMILL_DRUM_POWER_CM_MEAN),
+            drum_value(w, drum, DEMILL_DRUM_DISSIPATION_MEAN),
+            drum_value(w, drum, DEMILL_DRUM_TOE_ANGLE_MEAN) * 180 / PI,
+            drum_value(w, drum, DEMILL_DRUM_SHOULDER_ANGLE_MEAN) * 180 / PI,
+            drum_value(w, drum, DEMILL_DRUM_COM_ANGLE_MEAN) * 180 / PI,
+            contact_samples ? contacts_sum / contact_samples : NAN, (unsigned long long)steps,
+            o.dt, t, wall, steps * (double)n / (t_step1 - t_step0));
+    if (fclose(sum)) {
+        fprintf(stderr, "mill: error writing summary.txt\n");
+        return EXIT_FAILURE;
+    }
+    printf("mill: done in %.1f s. Mean power over the last revolution %.2f W (from the centre of "
+           "mass %.2f W);\n      toe %.1f°, shoulder %.1f°; results in %s/\n",
+           wall, mean_power, drum_value(w, drum, DEMILL_DRUM_POWER_CM_MEAN),
+           drum_value(w, drum, DEMILL_DRUM_TOE_ANGLE_MEAN) * 180 / PI,
+           drum_value(w, drum, DEMILL_DRUM_SHOULDER_ANGLE_MEAN) * 180 / PI, o.out);
+    for (size_t k = 0; k < fr.n; k++) {
+        free(fr.particles[k]);
+        free(fr.drum[k]);
+    }
+    free(fr.particles);
+    free(fr.drum);
+    free(fr.time);
+    free(row_t);
+    free(row_p);
+    free(smooth);
+    demill_world_destroy(w);
+    return EXIT_SUCCESS;
+}

@@ -1,0 +1,37 @@
+/* mill.h: the parts of the mill example (mill.c: options and run; scene.c:
+ * the canonical drums; output.c: files and pictures). */
+#ifndef MILL_H
+#define MILL_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include <demill.h>
+
+/* A canonical packing of SCENES.md. */
+typedef struct scene_def {
+    int dim;
+    size_t particles;
+    double site_radius; /* sites with x² + y² at most this squared */
+} scene_def;
+
+/* Positions (3 per particle) of the packing; 0, or -1 on failure. */
+int scene_packing(const scene_def *s, double *pos);
+
+/* What the drawing needs of the drum. */
+typedef struct drum_shape {
+    int dim;
+    double radius, length, angle;
+    int nlifters;
+    double lifter_angle[64], lifter_height, lifter_width;
+} drum_shape;
+
+/* Outputs; each returns 0 or -1 (with a message on stderr). */
+int write_vtu(const char *path, demill_world *w);
+int write_drum_vtp(const char *path, const drum_shape *d);
+int write_pvd(const char *path, const char *const *files, const double *times, size_t n);
+int draw_charge(const char *path, demill_world *w, const drum_shape *d, const char *title);
+int draw_power(const char *path, const double *t, const double *p, size_t n, double mean,
+               double mean_from, double mean_to);
+
+#endif

@@ -1,0 +1,429 @@
+/* output.c: what the mill example writes besides its CSV and summary:
+ * VTK XML files for ParaView (particles as points with their radius,
+ * velocity, speed and material; the drum as surfaces; a .pvd series) and two
+ * pictures drawn with cairo (the charge in cross-section coloured by speed,
+ * and the power draw against time). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cairo.h>
+
+#include "mill.h"
+
+#define PI 3.14159265358979323846
+
+static FILE *open_out(const char *path)
+{
+    FILE *f = fopen(path, "w");
+    if (!f)
+        perror(path);
+    return f;
+}
+
+static int close_out(FILE *f, const char *path)
+{
+    if (ferror(f) | fclose(f)) {
+        fprintf(stderr, "mill: error writing %s\n", path);
+        return -1;
+    }
+    return 0;
+}
+
+/* Reads a particle field of every particle (3 or 1 doubles each); the
+ * caller frees it. */
+static double *read_field(demill_world *w, int field, size_t *n)
+{
+    demill_particles_read(w, field, NULL, 0, n);
+    double *out = malloc((*n ? *n : 1) * 3 * sizeof *out);
+    if (out && demill_particles_read(w, field, out, *n, n) != DEMILL_OK) {
+        free(out);
+        out = NULL;
+    }
+    return out;
+}
+
+int write_vtu(const char *path, demill_world *w)
+{
+    size_t n;
+    double *x = read_field(w, DEMILL_PARTICLE_POSITION, &n);
+    double *v = read_field(w, DEMILL_PARTICLE_VELOCITY, &n);
+    double *om = read_field(w, DEMILL_PARTICLE_ANGULAR_VELOCITY, &n);
+    double *r = read_field(w, DEMILL_PARTICLE_RADIUS, &n);
+    demill_id *mat = malloc((n ? n : 1) * sizeof *mat);
+    FILE *f = open_out(path);
+    int ok = x && v && om && r && mat && f &&
+             demill_particles_read_ids(w, DEMILL_PARTICLE_MATERIAL, mat, n, &n) == DEMILL_OK;
+    if (ok) {
+        fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+                   "byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+                   "<Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n<Points>\n"
+                   "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
+                n, n);
+        for (size_t k = 0; k < n; k++)
+            fprintf(f, "%.9g %.9g %.9g\n", x[3 * k], x[3 * k + 1], x[3 * k + 2]);
+        fprintf(f, "</DataArray>\n</Points>\n<Cells>\n"
+                   "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+        for (size_t k = 0; k < n; k++)
+            fprintf(f, "%zu\n", k);
+        fprintf(f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+        for (size_t k = 0; k < n; k++)
+            fprintf(f, "%zu\n", k + 1);
+        fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+        for (size_t k = 0; k < n; k++)
+            fputs("1\n", f); /* VTK_VERTEX */
+        fprintf(f, "</DataArray>\n</Cells>\n<PointData Scalars=\"radius\" Vectors=\"velocity\">\n"
+                   "<DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n");
+        for (size_t k = 0; k < n; k++)
+            fprintf(f, "%.9g\n", r[k]);
+        fprintf(f, "</DataArray>\n<DataArray type=\"Float64\" Name=\"velocity\" "
+                   "NumberOfComponents=\"3\" format=\"ascii\">\n");
+        for (size_t k = 0; k < n; k++)
+            fprintf(f, "%.6g %.6g %.6g\n", v[3 * k], v[3 * k + 1], v[3 * k + 2]);
+        fprintf(f, "</DataArray>\n<DataArray type=\"Float64\" Name=\"angular_velocity\" "
+                   "NumberOfComponents=\"3\" format=\"ascii\">\n");
+        for (size_t k = 0; k < n; k++)
+            fprintf(f, "%.6g %.6g %.6g\n", om[3 * k], om[3 * k + 1], om[3 * k + 2]);
+        fprintf(f, "</DataArray>\n<DataArray type=\"Float64\" Name=\"speed\" format=\"ascii\">\n");
+        for (size_t k = 0; k < n; k++)
+            fprintf(f, "%.6g\n", hypot(hypot(v[3 * k], v[3 * k + 1]), v[3 * k + 2]));
+        /* materials numbered by order of first appearance */
+        fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">\n");
+        demill_id seen[16];
+        int nseen = 0;
+        for (size_t k = 0; k < n; k++) {
+            int idx = 0;
+            while (idx < nseen && seen[idx] != mat[k])
+                idx++;
+            if (idx == nseen && nseen < 16)
+                seen[nseen++] = mat[k];
+            fprintf(f, "%d\n", idx);
+        }
+        fprintf(f, "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+    }
+    free(x);
+    free(v);
+    free(om);
+    free(r);
+    free(mat);
+    if (!f)
+        return -1;
+    if (!ok) {
+        fclose(f);
+        fprintf(stderr, "mill: cannot read the particles: %s\n", demill_world_last_error(w));
+        return -1;
+    }
+    return close_out(f, path);
+}
+
+/* The visible cross-section of lifter k in the world frame (4 corners):
+ * centre line at its angle, from the shell inwards by its height, its width
+ * at the shell (rectangular lifters, as the example makes them). */
+static void lifter_corners(const drum_shape *d, int k, double xy[8])
+{
+    const double a = d->lifter_angle[k], ux = cos(a), uy = sin(a), tx = -uy, ty = ux;
+    const double rb = d->radius, ri = d->radius - d->lifter_height;
+    const double hw = 0.5 * d->lifter_width, rt[4][2] = {{ri, -hw}, {rb, -hw}, {rb, hw}, {ri, hw}};
+    for (int c = 0; c < 4; c++) {
+        xy[2 * c] = rt[c][0] * ux + rt[c][1] * tx;
+        xy[2 * c + 1] = rt[c][0] * uy + rt[c][1] * ty;
+    }
+}
+
+int write_drum_vtp(const char *path, const drum_shape *d)
+{
+    FILE *f = open_out(path);
+    if (!f)
+        return -1;
+    /* shell as 120 quads (3D) or a closed line (2D); lifters as 4 quads each
+     * (3D) or polygons (2D) */
+    const int seg = 120, zc = d->dim == 3 ? 2 : 1;
+    const double z[2] = {-0.5 * d->length, 0.5 * d->length};
+    const size_t npts = (size_t)seg * zc + (size_t)d->nlifters * 4 * zc;
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+               "byte_order=\"LittleEndian\">\n<PolyData>\n"
+               "<Piece NumberOfPoints=\"%zu\" NumberOfPolys=\"%zu\" NumberOfLines=\"%d\">\n"
+               "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
+            npts, d->dim == 3 ? (size_t)seg + 4 * (size_t)d->nlifters : (size_t)d->nlifters,
+            d->dim == 3 ? 0 : 1);
+    for (int s = 0; s < zc; s++)
+        for (int k = 0; k < seg; k++)
+            fprintf(f, "%.9g %.9g %.9g\n", d->radius * cos(2 * PI * k / seg),
+                    d->radius * sin(2 * PI * k / seg), d->dim == 3 ? z[s] : 0.0);
+    for (int l = 0; l < d->nlifters; l++) {
+        double xy[8];
+        lifter_corners(d, l, xy);
+        for (int s = 0; s < zc; s++)
+            for (int c = 0; c < 4; c++)
+                fprintf(f, "%.9g %.9g %.9g\n", xy[2 * c], xy[2 * c + 1], d->dim == 3 ? z[s] : 0.0);
+    }
+    fprintf(f, "</DataArray>\n</Points>\n");
+    const size_t lift0 = (size_t)seg * zc;
+    if (d->dim == 3) {
+        fprintf(f, "<Polys>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+        for (int k = 0; k < seg; k++)
+            fprintf(f, "%d %d %d %d\n", k, (k + 1) % seg, seg + (k + 1) % seg, seg + k);
+        for (int l = 0; l < d->nlifters; l++)
+            for (int c = 0; c < 4; c++) {
+                size_t b = lift0 + (size_t)l * 8;
+                fprintf(f, "%zu %zu %zu %zu\n", b + c, b + (c + 1) % 4, b + 4 + (c + 1) % 4,
+                        b + 4 + c);
+            }
+        fprintf(f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+        for (int k = 1; k <= seg + 4 * d->nlifters; k++)
+            fprintf(f, "%d\n", 4 * k);
+        fprintf(f, "</DataArray>\n</Polys>\n");
+    } else {
+        fprintf(f, "<Lines>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+        for (int k = 0; k <= seg; k++)
+            fprintf(f, "%d\n", k % seg);
+        fprintf(f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n"
+                   "%d\n</DataArray>\n</Lines>\n<Polys>\n"
+                   "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n",
+                seg + 1);
+        for (int l = 0; l < d->nlifters; l++)
+            fprintf(f, "%zu %zu %zu %zu\n", lift0 + 4 * (size_t)l, lift0 + 4 * (size_t)l + 1,
+                    lift0 + 4 * (size_t)l + 2, lift0 + 4 * (size_t)l + 3);
+        fprintf(f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+        for (int l = 1; l <= d->nlifters; l++)
+            fprintf(f, "%d\n", 4 * l);
+        fprintf(f, "</DataArray>\n</Polys>\n");
+    }
+    fprintf(f, "</Piece>\n</PolyData>\n</VTKFile>\n");
+    return close_out(f, path);
+}
+
+int write_pvd(const char *path, const char *const *files, const double *times, size_t n)
+{
+    FILE *f = open_out(path);
+    if (!f)
+        return -1;
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+               "<Collection>\n");
+    for (size_t k = 0; k < n; k++)
+        fprintf(f, "<DataSet timestep=\"%.9g\" file=\"%s\"/>\n", times[k], files[k]);
+    fprintf(f, "</Collection>\n</VTKFile>\n");
+    return close_out(f, path);
+}
+
+/* ---- pictures ------------------------------------------------------------------- */
+
+/* A perceptually even colour map (viridis, 5 stops) for t in [0, 1]. */
+static void colour(double t, double rgb[3])
+{
+    static const double stops[5][3] = {{0.267, 0.005, 0.329},
+                                       {0.229, 0.322, 0.546},
+                                       {0.128, 0.567, 0.551},
+                                       {0.369, 0.789, 0.383},
+                                       {0.993, 0.906, 0.144}};
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    const double x = t * 4;
+    const int k = x >= 4 ? 3 : (int)x;
+    for (int c = 0; c < 3; c++)
+        rgb[c] = stops[k][c] + (x - k) * (stops[k + 1][c] - stops[k][c]);
+}
+
+static int save_png(cairo_surface_t *s, const char *path)
+{
+    cairo_status_t st = cairo_surface_write_to_png(s, path);
+    cairo_surface_destroy(s);
+    if (st != CAIRO_STATUS_SUCCESS) {
+        fprintf(stderr, "mill: cannot write %s: %s\n", path, cairo_status_to_string(st));
+        return -1;
+    }
+    return 0;
+}
+
+typedef struct drawn {
+    double x, y, z, r, speed;
+} drawn;
+
+static int cmp_depth(const void *a, const void *b)
+{
+    const drawn *p = a, *q = b;
+    return (p->z > q->z) - (p->z < q->z);
+}
+
+int draw_charge(const char *path, demill_world *w, const drum_shape *d, const char *title)
+{
+    const int size = 900, top = 60, bar = 70;
+    size_t n;
+    double *x = read_field(w, DEMILL_PARTICLE_POSITION, &n);
+    double *v = read_field(w, DEMILL_PARTICLE_VELOCITY, &n);
+    double *r = read_field(w, DEMILL_PARTICLE_RADIUS, &n);
+    drawn *p = malloc((n ? n : 1) * sizeof *p);
+    if (!x || !v || !r || !p) {
+        free(x);
+        free(v);
+        free(r);
+        free(p);
+        fprintf(stderr, "mill: cannot read the particles for %s\n", path);
+        return -1;
+    }
+    double vmax = 1e-9;
+    for (size_t k = 0; k < n; k++) {
+        p[k] = (drawn){x[3 * k], x[3 * k + 1], x[3 * k + 2], r[k],
+                       hypot(hypot(v[3 * k], v[3 * k + 1]), v[3 * k + 2])};
+        vmax = fmax(vmax, p[k].speed);
+    }
+    qsort(p, n, sizeof *p, cmp_depth); /* far (-z) first, near last */
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, size + bar, size + top);
+    cairo_t *cr = cairo_create(s);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 18);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_move_to(cr, 20, 36);
+    cairo_show_text(cr, title);
+    /* world to picture: the drum fills the square below the title */
+    const double scale = 0.46 * size / d->radius, cx = 0.5 * size, cy = top + 0.5 * size;
+    cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);
+    cairo_arc(cr, cx, cy, d->radius * scale, 0, 2 * PI);
+    cairo_fill(cr);
+    for (size_t k = 0; k < n; k++) {
+        double rgb[3];
+        colour(p[k].speed / vmax, rgb);
+        cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+        cairo_arc(cr, cx + p[k].x * scale, cy - p[k].y * scale, p[k].r * scale, 0, 2 * PI);
+        cairo_fill(cr);
+    }
+    cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+    for (int l = 0; l < d->nlifters; l++) {
+        double xy[8];
+        lifter_corners(d, l, xy);
+        cairo_move_to(cr, cx + xy[0] * scale, cy - xy[1] * scale);
+        for (int c = 1; c < 4; c++)
+            cairo_line_to(cr, cx + xy[2 * c] * scale, cy - xy[2 * c + 1] * scale);
+        cairo_close_path(cr);
+        cairo_fill(cr);
+    }
+    cairo_set_line_width(cr, 4);
+    cairo_arc(cr, cx, cy, d->radius * scale + 2, 0, 2 * PI);
+    cairo_stroke(cr);
+    /* colour bar */
+    const double bx = size + 10, by = top + 60, bh = size - 120;
+    for (int k = 0; k < (int)bh; k++) {
+        double rgb[3];
+        colour(1.0 - k / bh, rgb);
+        cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+        cairo_rectangle(cr, bx, by + k, 20, 1);
+        cairo_fill(cr);
+    }
+    char label[64];
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_font_size(cr, 14);
+    snprintf(label, sizeof label, "%.2f m/s", vmax);
+    cairo_move_to(cr, bx - 10, by - 10);
+    cairo_show_text(cr, label);
+    cairo_move_to(cr, bx, by + bh + 20);
+    cairo_show_text(cr, "0");
+    cairo_move_to(cr, bx - 5, by + bh + 40);
+    cairo_show_text(cr, "speed");
+    cairo_destroy(cr);
+    free(x);
+    free(v);
+    free(r);
+    free(p);
+    return save_png(s, path);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* A round number near span/5 for axis ticks. */
+static double tick_step(double span)
+{
+    const double raw = span / 5, mag = pow(10, floor(log10(raw))), f = raw / mag;
+    return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * mag;
+}
+
+int draw_power(const char *path, const double *t, const double *pw, size_t n, double mean,
+               double mean_from, double mean_to)
+{
+    const int wd = 1000, ht = 520, l = 80, r = 30, tp = 50, bt = 60;
+    if (n < 2) {
+        fprintf(stderr, "mill: no power samples to draw\n");
+        return -1;
+    }
+    /* the vertical range covers all but the start-up transient: up to twice
+     * the 99th percentile */
+    double t0 = t[0], t1 = t[n - 1], p0 = 0, p1 = 0;
+    double *sorted = malloc(n * sizeof *sorted);
+    if (!sorted)
+        return -1;
+    memcpy(sorted, pw, n * sizeof *sorted);
+    qsort(sorted, n, sizeof *sorted, cmp_double);
+    p1 = 2.0 * sorted[(size_t)(0.99 * (n - 1))];
+    p0 = fmin(0.0, sorted[0]);
+    free(sorted);
+    p1 = p1 > p0 ? p1 : p0 + 1;
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, wd, ht);
+    cairo_t *cr = cairo_create(s);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    const double sx = (wd - l - r) / (t1 - t0), sy = (ht - tp - bt) / (p1 - p0);
+#define PX(tt) (l + ((tt) - t0) * sx)
+#define PY(pp) (ht - bt - ((pp) - p0) * sy)
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 13);
+    cairo_set_line_width(cr, 1);
+    char label[64];
+    const double dtk = tick_step(t1 - t0), dpk = tick_step(p1 - p0);
+    for (double tk = ceil(t0 / dtk) * dtk; tk <= t1 + 1e-12; tk += dtk) {
+        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+        cairo_move_to(cr, PX(tk), tp);
+        cairo_line_to(cr, PX(tk), ht - bt);
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        snprintf(label, sizeof label, "%g", tk);
+        cairo_move_to(cr, PX(tk) - 8, ht - bt + 18);
+        cairo_show_text(cr, label);
+    }
+    for (double pk = ceil(p0 / dpk) * dpk; pk <= p1 + 1e-12; pk += dpk) {
+        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+        cairo_move_to(cr, l, PY(pk));
+        cairo_line_to(cr, wd - r, PY(pk));
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        snprintf(label, sizeof label, "%g", pk);
+        cairo_move_to(cr, l - 45, PY(pk) + 4);
+        cairo_show_text(cr, label);
+    }
+    cairo_save(cr);
+    cairo_rectangle(cr, l, tp, wd - l - r, ht - tp - bt);
+    cairo_clip(cr);
+    cairo_set_source_rgb(cr, 0.13, 0.37, 0.66);
+    cairo_set_line_width(cr, 1.2);
+    cairo_move_to(cr, PX(t[0]), PY(pw[0]));
+    for (size_t k = 1; k < n; k++)
+        cairo_line_to(cr, PX(t[k]), PY(pw[k]));
+    cairo_stroke(cr);
+    cairo_restore(cr);
+    if (isfinite(mean)) {
+        cairo_set_source_rgb(cr, 0.85, 0.2, 0.1);
+        cairo_set_line_width(cr, 2.5);
+        cairo_move_to(cr, PX(mean_from), PY(mean));
+        cairo_line_to(cr, PX(mean_to), PY(mean));
+        cairo_stroke(cr);
+        snprintf(label, sizeof label, "mean over the last revolution: %.2f W", mean);
+        cairo_move_to(cr, PX(mean_from), tp + 20);
+        cairo_show_text(cr, label);
+    }
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1.5);
+    cairo_rectangle(cr, l, tp, wd - l - r, ht - tp - bt);
+    cairo_stroke(cr);
+    cairo_set_font_size(cr, 15);
+    cairo_move_to(cr, wd / 2 - 30, ht - 15);
+    cairo_show_text(cr, "time [s]");
+    cairo_move_to(cr, l, 32);
+    cairo_show_text(cr, "power draw P = -T ω [W], 10 ms running mean");
+#undef PX
+#undef PY
+    cairo_destroy(cr);
+    return save_png(s, path);
+}
