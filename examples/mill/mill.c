@@ -261,38 +261,17 @@ int main(int argc, char **argv)
     const double t_wall0 = now();
 
     /* the world, its steel, and the drum */
+    const drum_geometry geo = {o.dim, o.dt, o.diameter, o.length, o.lifters, o.lifter_height};
     demill_world *w;
-    if (demill_world_create(o.dim, &w) != DEMILL_OK) {
-        fprintf(stderr, "mill: cannot create a world\n");
-        return EXIT_FAILURE;
-    }
-    g_world = w;
     demill_id steel, drum;
-    check(demill_world_set(w, DEMILL_WORLD_TIME_STEP, o.dt), "time step");
-    check(demill_material_create(w, &steel), "material");
-    check(demill_material_set(w, steel, DEMILL_MATERIAL_DENSITY, 7800), "density");
-    check(demill_material_set(w, steel, DEMILL_MATERIAL_YOUNGS_MODULUS, 1e8), "Young's modulus");
-    check(demill_material_set(w, steel, DEMILL_MATERIAL_POISSON_RATIO, 0.3), "Poisson ratio");
-    check(demill_material_set(w, steel, DEMILL_MATERIAL_RESTITUTION, 0.5), "restitution");
-    check(demill_material_set(w, steel, DEMILL_MATERIAL_FRICTION, 0.5), "friction");
-    check(demill_pair_set(w, steel, steel, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ), "normal law");
-    check(demill_pair_set(w, steel, steel, DEMILL_PAIR_DAMPING, DEMILL_DAMPING_RESTITUTION),
-          "damping");
-    check(demill_pair_set(w, steel, steel, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN),
-          "tangential law");
-    /* as in the scenes' reference (LIGGGHTS without limitForce) */
-    check(demill_pair_set(w, steel, steel, DEMILL_PAIR_CLAMP_NORMAL, 0), "clamp");
-    check(demill_drum_create(w, steel, &drum), "drum");
-    check(demill_drum_set(w, drum, DEMILL_DRUM_DIAMETER, o.diameter), "diameter");
-    check(demill_drum_set(w, drum, DEMILL_DRUM_LENGTH, o.length), "length");
-    check(demill_drum_set(w, drum, DEMILL_DRUM_LIFTER_HEIGHT, o.lifter_height), "lifter height");
-    check(demill_drum_set(w, drum, DEMILL_DRUM_LIFTER_WIDTH, o.lifter_height), "lifter width");
-    check(demill_drum_set(w, drum, DEMILL_DRUM_LIFTERS, o.lifters), "lifters");
+    if (scene_world(&geo, &w, &steel, &drum))
+        return EXIT_FAILURE;
+    g_world = w;
 
     /* the charge */
     size_t n;
     if (o.particles) {
-        const scene_def sd = {o.dim, o.particles, o.site_radius};
+        const scene_def sd = {o.dim, o.particles, o.site_radius, 15, -0.046};
         double *pos = malloc(3 * o.particles * sizeof *pos), *rad = malloc(o.particles * sizeof *rad);
         if (!pos || !rad || scene_packing(&sd, pos)) {
             fprintf(stderr, "mill: cannot build the %s packing\n", o.scene);

@@ -1,11 +1,12 @@
 /* scene.c: the canonical drums of SCENES.md, packed exactly as defined
- * there: a lattice of spacing 6.3 mm, the lowest N sites inside the drum
- * (sorted by y, then x, then z index), each coordinate jittered by ±0.1 mm
- * with Python's random.Random(12345). Python's generator is the Mersenne
+ * there (drum3d: 15 layers from z = -0.046 m): a lattice of spacing 6.3 mm,
+ * the lowest N sites inside the drum (sorted by y, then x, then z index),
+ * each coordinate jittered by ±0.1 mm with Python's random.Random(12345). Python's generator is the Mersenne
  * Twister MT19937 seeded through init_by_array; it is reproduced here so that
  * the packing, and the peers' input files made from it, are identical. */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "mill.h"
@@ -99,7 +100,7 @@ int scene_packing(const scene_def *s, double *pos)
 {
     const double a = 0.0063, jitter = 1e-4;
     const long span = (long)(s->site_radius / a) + 1;
-    const long layers = s->dim == 3 ? 15 : 1;
+    const long layers = s->dim == 3 ? s->layers : 1;
     site *sites = malloc((size_t)(2 * span + 1) * (size_t)(2 * span + 1) * (size_t)layers * sizeof *sites);
     if (!sites)
         return -1;
@@ -118,11 +119,55 @@ int scene_packing(const scene_def *s, double *pos)
     mt_seed_python(&g, 12345);
     for (size_t p = 0; p < s->particles; p++) {
         const double base[3] = {sites[p].i * a, sites[p].j * a,
-                                s->dim == 3 ? -0.046 + sites[p].k * a : 0.0};
+                                s->dim == 3 ? s->z0 + sites[p].k * a : 0.0};
         for (int c = 0; c < 3; c++)
             /* base + random.uniform(-jitter, jitter), in Python's arithmetic */
             pos[3 * p + c] = c < s->dim ? base[c] + (-jitter + (jitter - -jitter) * mt_random(&g)) : 0.0;
     }
     free(sites);
+    return 0;
+}
+
+/* ---- the world ------------------------------------------------------------------- */
+
+int scene_world(const drum_geometry *g, demill_world **out, demill_id *steel, demill_id *drum)
+{
+    demill_world *w;
+    if (demill_world_create(g->dim, &w) != DEMILL_OK) {
+        fprintf(stderr, "cannot create a world\n");
+        return -1;
+    }
+    /* in order: the first failure stops the chain */
+    demill_status s = demill_material_create(w, steel);
+    const char *what = "material";
+    const demill_id m = *steel;
+#define STEP(call, name)                                                                           \
+    if (s == DEMILL_OK) {                                                                          \
+        s = (call);                                                                                \
+        what = (name);                                                                             \
+    }
+    STEP(demill_world_set(w, DEMILL_WORLD_TIME_STEP, g->time_step), "time step")
+    STEP(demill_material_set(w, m, DEMILL_MATERIAL_DENSITY, 7800), "density")
+    STEP(demill_material_set(w, m, DEMILL_MATERIAL_YOUNGS_MODULUS, 1e8), "Young's modulus")
+    STEP(demill_material_set(w, m, DEMILL_MATERIAL_POISSON_RATIO, 0.3), "Poisson ratio")
+    STEP(demill_material_set(w, m, DEMILL_MATERIAL_RESTITUTION, 0.5), "restitution")
+    STEP(demill_material_set(w, m, DEMILL_MATERIAL_FRICTION, 0.5), "friction")
+    STEP(demill_pair_set(w, m, m, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ), "normal law")
+    STEP(demill_pair_set(w, m, m, DEMILL_PAIR_DAMPING, DEMILL_DAMPING_RESTITUTION), "damping")
+    STEP(demill_pair_set(w, m, m, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN), "friction law")
+    STEP(demill_pair_set(w, m, m, DEMILL_PAIR_CLAMP_NORMAL, 0), "clamp")
+    STEP(demill_drum_create(w, m, drum), "drum")
+    STEP(demill_drum_set(w, *drum, DEMILL_DRUM_DIAMETER, g->diameter), "diameter")
+    STEP(demill_drum_set(w, *drum, DEMILL_DRUM_LENGTH, g->length), "length")
+    STEP(demill_drum_set(w, *drum, DEMILL_DRUM_LIFTER_HEIGHT, g->lifter_size), "lifter height")
+    STEP(demill_drum_set(w, *drum, DEMILL_DRUM_LIFTER_WIDTH, g->lifter_size), "lifter width")
+    STEP(demill_drum_set(w, *drum, DEMILL_DRUM_LIFTERS, g->lifters), "lifters")
+#undef STEP
+    if (s != DEMILL_OK) {
+        fprintf(stderr, "setting up the %s failed: %s\n", what, demill_world_last_error(w));
+        demill_world_destroy(w);
+        return -1;
+    }
+    *out = w;
     return 0;
 }

@@ -1,0 +1,152 @@
+/* demill_bench.c: libdemill's side of the benchmark (bench/run). Builds a
+ * canonical drum of SCENES.md (or the same drum scaled to another particle
+ * count, the drum grown to keep the fill), settles it for 0.3 s, turns it at
+ * 75 % of critical for 0.3 s, then times a window of steps on the moving
+ * charge and prints one line:
+ *
+ *   bench scene=drum3d code=libdemill threads=1 particles=10000 steps=10000
+ *   particle_steps_per_s=1.23e7 peak_rss_mb=42.0
+ *
+ * Energy tracking is off, as the peers do not tally energy. --dump-packing
+ * writes the initial positions (x y z r per line) for the peers' inputs.
+ */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+
+#include "../examples/mill/mill.h"
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static void usage(FILE *f)
+{
+    fputs("usage: demill_bench [options]\n"
+          "  --scene drum3d|drum2d   the canonical scene [drum3d]\n"
+          "  --particles N           scale the drum to N particles [the scene's]\n"
+          "  --threads N             threads [1]\n"
+          "  --steps N               timed steps [10000]\n"
+          "  --settle S --rotate S   seconds before the timed window [0.3 0.3]\n"
+          "  --energy                keep the energy tally on\n"
+          "  --dump-packing FILE     write the initial packing (x y z r) and exit\n",
+          f);
+}
+
+static void fail(demill_world *w, demill_status s, const char *what)
+{
+    if (s != DEMILL_OK) {
+        fprintf(stderr, "demill_bench: %s: %s (%s)\n", what, demill_strerror(s),
+                demill_world_last_error(w));
+        exit(EXIT_FAILURE);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    const char *scene = "drum3d", *dump = NULL;
+    long particles = 0, threads = 1, steps = 10000;
+    double settle = 0.3, rotate = 0.3;
+    int energy = 0;
+    for (int k = 1; k < argc; k++) {
+        const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
+        if (!strcmp(a, "--help")) {
+            usage(stdout);
+            return EXIT_SUCCESS;
+        } else if (!strcmp(a, "--energy")) {
+            energy = 1;
+        } else if (!v) {
+            fprintf(stderr, "demill_bench: %s needs a value\n", a);
+            return EXIT_FAILURE;
+        } else if (!strcmp(a, "--scene")) {
+            scene = argv[++k];
+        } else if (!strcmp(a, "--dump-packing")) {
+            dump = argv[++k];
+        } else if (!strcmp(a, "--particles")) {
+            particles = atol(argv[++k]);
+        } else if (!strcmp(a, "--threads")) {
+            threads = atol(argv[++k]);
+        } else if (!strcmp(a, "--steps")) {
+            steps = atol(argv[++k]);
+        } else if (!strcmp(a, "--settle")) {
+            settle = atof(argv[++k]);
+        } else if (!strcmp(a, "--rotate")) {
+            rotate = atof(argv[++k]);
+        } else {
+            usage(stderr);
+            return EXIT_FAILURE;
+        }
+    }
+    const int is3d = !strcmp(scene, "drum3d");
+    if (!is3d && strcmp(scene, "drum2d")) {
+        fprintf(stderr, "demill_bench: unknown scene %s\n", scene);
+        return EXIT_FAILURE;
+    }
+    const long n0 = is3d ? 10000 : 8000;
+    if (particles <= 0)
+        particles = n0;
+    if (threads < 1 || steps < 1) {
+        fprintf(stderr, "demill_bench: --threads and --steps must be positive\n");
+        return EXIT_FAILURE;
+    }
+    /* the scene, or the same drum grown by s in every length to hold
+     * `particles` at the same fill */
+    const double s = is3d ? cbrt((double)particles / n0) : sqrt((double)particles / n0);
+    const double a = 0.0063;
+    drum_geometry geo = {is3d ? 3 : 2, 1e-5, (is3d ? 0.3 : 1.0) * s, 0.1 * s, 8,
+                         (is3d ? 0.015 : 0.03) * s};
+    scene_def sd = {is3d ? 3 : 2, (size_t)particles, (is3d ? 0.131 : 0.466) * s, 15, -0.046};
+    if (particles != n0) { /* layers centred in the grown length */
+        sd.layers = (long)floor((geo.length - 0.008) / a) + 1;
+        sd.z0 = -0.5 * a * (sd.layers - 1);
+    }
+    double *pos = malloc(3 * (size_t)particles * sizeof *pos);
+    double *rad = malloc((size_t)particles * sizeof *rad);
+    if (!pos || !rad || scene_packing(&sd, pos)) {
+        fprintf(stderr, "demill_bench: cannot pack %ld particles\n", particles);
+        return EXIT_FAILURE;
+    }
+    for (long k = 0; k < particles; k++)
+        rad[k] = 0.003;
+    if (dump) {
+        FILE *f = fopen(dump, "w");
+        if (!f) {
+            perror(dump);
+            return EXIT_FAILURE;
+        }
+        for (long k = 0; k < particles; k++)
+            fprintf(f, "%.17g %.17g %.17g %.17g\n", pos[3 * k], pos[3 * k + 1], pos[3 * k + 2],
+                    rad[k]);
+        return fclose(f) ? EXIT_FAILURE : EXIT_SUCCESS;
+    }
+    demill_world *w;
+    demill_id steel, drum;
+    if (scene_world(&geo, &w, &steel, &drum))
+        return EXIT_FAILURE;
+    fail(w, demill_world_set(w, DEMILL_WORLD_ENERGY_TRACKING, energy), "energy tracking");
+    fail(w, demill_particles_add(w, steel, (size_t)particles, pos, rad, NULL, 0, NULL), "charge");
+    free(pos);
+    free(rad);
+    fail(w, demill_world_step(w, (uint64_t)llround(settle / geo.time_step)), "settling");
+    fail(w, demill_drum_set(w, drum, DEMILL_DRUM_SPEED_FRACTION, 0.75), "speed");
+    fail(w, demill_world_step(w, (uint64_t)llround(rotate / geo.time_step)), "turning");
+    const double t0 = now();
+    fail(w, demill_world_step(w, (uint64_t)steps), "the timed window");
+    const double t1 = now();
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    printf("bench scene=%s code=libdemill threads=%ld particles=%ld steps=%ld "
+           "particle_steps_per_s=%.3g peak_rss_mb=%.1f\n",
+           scene, threads, particles, steps, (double)particles * steps / (t1 - t0),
+           ru.ru_maxrss / 1024.0);
+    demill_world_destroy(w);
+    return EXIT_SUCCESS;
+}
