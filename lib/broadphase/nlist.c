@@ -14,14 +14,17 @@ static int bucket_push(dm_bucket *b, uint32_t i, uint32_t j)
 {
     if (b->n == b->cap) {
         size_t cap = dm_grown_capacity(b->cap, (size_t)b->n + 1);
-        void **const arrays[] = {(void **)&b->i, (void **)&b->j, (void **)&b->hist};
-        const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), (size_t)b->hs * sizeof(double)};
-        if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, b->hs ? 3 : 2, cap))
+        void **const arrays[] = {(void **)&b->i, (void **)&b->j, (void **)&b->on,
+                                 (void **)&b->hist};
+        const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint8_t),
+                                (size_t)b->hs * sizeof(double)};
+        if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, b->hs ? 4 : 3, cap))
             return -1;
         b->cap = (uint32_t)cap;
     }
     b->i[b->n] = i;
     b->j[b->n] = j;
+    b->on[b->n] = 0;
     for (int c = 0; c < b->hs; c++)
         b->hist[(size_t)b->hs * b->n + c] = 0.0;
     b->n++;
@@ -50,20 +53,24 @@ void dm_clist_clear(demill_world *w)
     clist_empty(w, &w->pw);
 }
 
+/* Moves pair `from` of a bucket to slot `to` (to <= from) as pair (i, j). */
+void dm_bucket_move(dm_bucket *b, uint32_t to, uint32_t from, uint32_t i, uint32_t j)
+{
+    b->i[to] = i;
+    b->j[to] = j;
+    b->on[to] = b->on[from];
+    memmove(b->hist + (size_t)b->hs * to, b->hist + (size_t)b->hs * from,
+            (size_t)b->hs * sizeof *b->hist);
+}
+
 void dm_clist_drop_wall(demill_world *w, uint32_t wall_slot)
 {
     for (int k = 0; k < DM_KERNELS; k++) {
         dm_bucket *b = &w->pw.b[k];
         uint32_t m = 0;
-        for (uint32_t p = 0; p < b->n; p++) {
-            if (b->j[p] == wall_slot)
-                continue;
-            b->i[m] = b->i[p];
-            b->j[m] = b->j[p];
-            memmove(b->hist + (size_t)b->hs * m, b->hist + (size_t)b->hs * p,
-                    (size_t)b->hs * sizeof *b->hist);
-            m++;
-        }
+        for (uint32_t p = 0; p < b->n; p++)
+            if (b->j[p] != wall_slot)
+                dm_bucket_move(b, m++, p, b->i[p], b->j[p]);
         b->n = m;
     }
 }
@@ -74,6 +81,7 @@ static void clist_free(dm_clist *l)
         free(l->b[k].i);
         free(l->b[k].j);
         free(l->b[k].hist);
+        free(l->b[k].on);
     }
 }
 
@@ -114,7 +122,7 @@ int dm_grid_reserve(dm_grid *g, uint32_t n)
     return 0;
 }
 
-/* Remembers every contact with a non-zero history, in storage indices. */
+/* Remembers every contact that is on, in storage indices. */
 static int carry_collect(demill_world *w)
 {
     dm_grid *g = &w->grid;
@@ -123,13 +131,10 @@ static int carry_collect(demill_world *w)
         const dm_clist *l = side ? &w->pw : &w->pp;
         for (int k = 0; k < DM_KERNELS; k++) {
             const dm_bucket *b = &l->b[k];
-            for (uint32_t p = 0; b->hs && p < b->n; p++) {
-                const double *h = b->hist + (size_t)b->hs * p;
-                int any = 0;
-                for (int c = 0; c < b->hs; c++)
-                    any |= h[c] != 0.0;
-                if (!any)
+            for (uint32_t p = 0; p < b->n; p++) {
+                if (!b->on[p])
                     continue;
+                const double *h = b->hist + (size_t)b->hs * p;
                 if (g->nc == g->ccap) {
                     size_t cap = dm_grown_capacity(g->ccap, (size_t)g->nc + 1);
                     void **const arrays[] = {(void **)&g->ci, (void **)&g->cj, (void **)&g->ck,
@@ -145,7 +150,8 @@ static int carry_collect(demill_world *w)
                 g->ck[g->nc] = (uint16_t)(k + side * DM_KERNELS);
                 double *ch = g->ch + DM_MAX_HIST * (size_t)g->nc;
                 memset(ch, 0, DM_MAX_HIST * sizeof *ch); /* a longer new layout gets zeros */
-                memcpy(ch, h, (size_t)b->hs * sizeof *h);
+                if (b->hs)
+                    memcpy(ch, h, (size_t)b->hs * sizeof *h);
                 g->nc++;
             }
         }
@@ -163,7 +169,7 @@ static void carry_restore(demill_world *w)
         dm_clist *l = side ? &w->pw : &w->pp;
         for (int k = 0; k < DM_KERNELS; k++) {
             dm_bucket *b = &l->b[k];
-            if (!b->hs || !b->n)
+            if (!b->n)
                 continue;
             uint16_t key = (uint16_t)(k + side * DM_KERNELS);
             int have = 0;
@@ -191,6 +197,7 @@ static void carry_restore(demill_world *w)
                 }
                 for (uint32_t q = g->row[i]; q < g->row[i + 1]; q++)
                     if (b->j[q] == j) {
+                        b->on[q] = 1;
                         for (int d = 0; d < b->hs; d++)
                             b->hist[(size_t)b->hs * q + d] =
                                 (d < spring ? sign : 1.0) * g->ch[DM_MAX_HIST * (size_t)c + d];
@@ -201,10 +208,76 @@ static void carry_restore(demill_world *w)
     }
 }
 
-/* Forward half of the 3x3(x3) stencil: offsets with a positive linear index. */
-static const int stencil3[13][3] = {
-    {1, 0, 0}, {-1, 1, 0}, {0, 1, 0}, {1, 1, 0}, {-1, -1, 1}, {0, -1, 1}, {1, -1, 1},
-    {-1, 0, 1}, {0, 0, 1}, {1, 0, 1}, {-1, 1, 1}, {0, 1, 1}, {1, 1, 1}};
+/* The forward half of the 3x3(x3) stencil as rows along x: (dy, dz), each
+ * row the cells x-1..x+1, whose particles are contiguous in storage order;
+ * the first is the particle's own row, from the particle itself to cell x+1. */
+static const int stencil_rows[5][2] = {{0, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+
+#define SCAN_BLOCK 64
+
+/* Lists the pairs of particle i with particles j0..j1-1 that are within
+ * reach, in the bucket of their kernel. */
+static int scan_row(demill_world *w, uint32_t i, uint32_t j0, uint32_t j1)
+{
+    const int D = w->dim;
+    const dm_particles *P = &w->p;
+    const double *x = P->x, *r = P->r, *xi = P->x + D * i;
+    const double ri = r[i] + w->skin;
+    const dm_pairparam *row = w->ptab + P->mat[i] * w->nmat_tab;
+    uint32_t near[SCAN_BLOCK];
+    for (uint32_t b0 = j0; b0 < j1; b0 += SCAN_BLOCK) {
+        const uint32_t b1 = j1 - b0 < SCAN_BLOCK ? j1 : b0 + SCAN_BLOCK;
+        uint32_t m = 0;
+        for (uint32_t j = b0; j < b1; j++) {
+            double r2 = 0.0;
+            for (int c = 0; c < D; c++) {
+                const double d = x[D * j + c] - xi[c];
+                r2 += d * d;
+            }
+            const double reach = ri + r[j];
+            near[m] = j;
+            m += r2 < reach * reach;
+        }
+        for (uint32_t q = 0; q < m; q++) {
+            const int kern = row[P->mat[near[q]]].kernel;
+            if (kern >= 0 && bucket_push(&w->pp.b[kern], i, near[q]))
+                return -1;
+        }
+    }
+    return 0;
+}
+
+/* Every pair within reach, once (i < j), in cell order. */
+static int pair_search(demill_world *w, const int64_t nc[3])
+{
+    const uint32_t *start = w->grid.cell_start;
+    const int nrows = w->dim == 3 ? 5 : 2;
+    for (int64_t cz = 0; cz < nc[2]; cz++)
+        for (int64_t cy = 0; cy < nc[1]; cy++)
+            for (int64_t cx = 0; cx < nc[0]; cx++) {
+                const uint64_t cell = ((uint64_t)cz * nc[1] + cy) * nc[0] + cx;
+                const uint32_t b0 = start[cell], b1 = start[cell + 1];
+                if (b0 == b1)
+                    continue;
+                uint32_t lo[5], hi[5];
+                int nr = 0;
+                for (int q = 0; q < nrows; q++) {
+                    const int64_t y = cy + stencil_rows[q][0], z = cz + stencil_rows[q][1];
+                    if (y < 0 || y >= nc[1] || z >= nc[2])
+                        continue;
+                    const int64_t x0 = q == 0 || cx == 0 ? cx : cx - 1;
+                    const int64_t x1 = cx + 1 < nc[0] ? cx + 1 : cx;
+                    const uint64_t base = ((uint64_t)z * nc[1] + y) * nc[0];
+                    lo[nr] = start[base + x0];
+                    hi[nr++] = start[base + x1 + 1];
+                }
+                for (uint32_t i = b0; i < b1; i++)
+                    for (int q = 0; q < nr; q++)
+                        if (scan_row(w, i, q ? lo[q] : i + 1, hi[q]))
+                            return -1;
+            }
+    return 0;
+}
 
 demill_status dm_nlist_build(demill_world *w)
 {
@@ -286,55 +359,15 @@ demill_status dm_nlist_build(demill_world *w)
 
     /* pairs within reach, each once, into the bucket of their kernel */
     dm_clist_clear(w);
+    if (pair_search(w, nc))
+        goto oom;
     const dm_pairparam *tab = w->ptab;
     const uint32_t nm = w->nmat_tab;
     const double skin = w->skin;
-    const int nst = D == 3 ? 13 : 4;
-    int64_t cxyz[3] = {0, 0, 0};
-    for (uint64_t cell = 0; cell < ncells; cell++) {
-        cxyz[0] = (int64_t)(cell % (uint64_t)nc[0]);
-        cxyz[1] = (int64_t)(cell / (uint64_t)nc[0] % (uint64_t)nc[1]);
-        cxyz[2] = (int64_t)(cell / ((uint64_t)nc[0] * (uint64_t)nc[1]));
-        const uint32_t b0 = g->cell_start[cell], b1 = g->cell_start[cell + 1];
-        for (uint32_t i = b0; i < b1; i++) {
-            for (int s = -1; s < nst; s++) {
-                uint32_t j0, j1;
-                if (s < 0) {
-                    j0 = i + 1;
-                    j1 = b1;
-                } else {
-                    uint64_t nb = 0, stride = 1;
-                    int inside = 1;
-                    for (int c = 0; c < D; c++) {
-                        int64_t q = cxyz[c] + stencil3[s][c];
-                        inside &= q >= 0 && q < nc[c];
-                        nb += (uint64_t)q * stride;
-                        stride *= (uint64_t)nc[c];
-                    }
-                    if (!inside)
-                        continue;
-                    j0 = g->cell_start[nb];
-                    j1 = g->cell_start[nb + 1];
-                }
-                for (uint32_t j = j0; j < j1; j++) {
-                    double r2 = 0.0, reach = P->r[i] + P->r[j] + skin;
-                    for (int c = 0; c < D; c++) {
-                        double d = P->x[D * j + c] - P->x[D * i + c];
-                        r2 += d * d;
-                    }
-                    if (r2 >= reach * reach)
-                        continue;
-                    int kern = tab[P->mat[i] * nm + P->mat[j]].kernel;
-                    if (kern >= 0 && bucket_push(&w->pp.b[kern], i, j))
-                        goto oom;
-                }
-            }
-        }
-    }
     for (uint32_t i = 0; i < n; i++)
         for (uint32_t k = 0; k < w->nwalls; k++) {
             const dm_wall *wall = &w->walls[k];
-            if (!wall->kind || dm_wall_distance(wall, P->x + D * i, D) >= P->r[i] + skin)
+            if (!wall->kind || dm_wall_distance_bound(wall, P->x + D * i, D) >= P->r[i] + skin)
                 continue;
             int kern = tab[P->mat[i] * nm + wall->material].kernel;
             if (kern >= 0 && bucket_push(&w->pw.b[kern], i, k))

@@ -83,14 +83,10 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
 static void contact_record(int dim, dm_laws l, const dm_pairparam *pp, const dm_kin *q,
                            const double *xa, const double *hist, dm_contact_eval *e)
 {
-    double h[DM_MAX_HIST] = {0.0};
-    int hs = dm_law_hist_size(l.normal, l.damping, l.tangential, dim);
-    if (hs)
-        memcpy(h, hist, (size_t)hs * sizeof *h);
+    double h[DM_MAX_HIST];
     dm_law_out o;
-    dm_tally unused = {0};
     dm_law(dim, l.normal, l.damping, l.tangential, l.rolling, pp, q->n, q->delta, q->vc, q->dc,
-           q->wrel, q->rstar, q->mstar, 0.0, 0.0, 0, h, &o, &unused);
+           q->wrel, q->rstar, q->mstar, 0.0, 0.0, hist, h, &o);
     memset(e->point, 0, sizeof e->point);
     memset(e->normal, 0, sizeof e->normal);
     memset(e->fn, 0, sizeof e->fn);
@@ -124,10 +120,11 @@ void dm_contacts_visit(demill_world *w, dm_contact_visitor fn, void *ctx)
         dm_laws l = dm_kernel_laws(k);
         for (uint32_t p = 0; p < b->n; p++) {
             uint32_t i = b->i[p], j = b->j[p];
-            dm_kin q;
-            double r2;
-            if (!dm_pp_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, i, j, &q, &r2))
+            double d[3], r2;
+            if (!dm_pp_touch(D, P, i, j, d, &r2))
                 continue;
+            dm_kin q;
+            dm_pp_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, i, j, d, r2, &q);
             const dm_pairparam *pp = &w->ptab[P->mat[i] * w->nmat_tab + P->mat[j]];
             contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, &e);
             e.a = dm_particle_id(w, i);
@@ -142,10 +139,10 @@ void dm_contacts_visit(demill_world *w, dm_contact_visitor fn, void *ctx)
         for (uint32_t p = 0; p < b->n; p++) {
             uint32_t i = b->i[p];
             const dm_wall *wall = &w->walls[b->j[p]];
-            dm_kin q;
-            if (!dm_pw_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, &w->wg, g0 + p, i, wall,
-                           &q))
+            if (!(w->wg.delta[g0 + p] > 0.0))
                 continue;
+            dm_kin q;
+            dm_pw_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, &w->wg, g0 + p, i, wall, &q);
             const dm_pairparam *pp = &w->ptab[P->mat[i] * w->nmat_tab + wall->material];
             contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, &e);
             e.a = dm_particle_id(w, i);

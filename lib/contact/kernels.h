@@ -80,33 +80,34 @@ DM_INLINE void dm_contact_velocity(const int D, const int SPIN, const double *va
     }
 }
 
-/* Particle-particle kinematics; returns 0 when i and j do not touch, with
- * *r2 the squared distance. SPIN: include rotation in the contact velocities;
- * ROLL: compute wrel. vp, wp: the velocities the dashpots see. */
-DM_INLINE int dm_pp_kin(const int D, const int SPIN, const int ROLL, const dm_particles *P,
-                        const double *vp, const double *wp, uint32_t i, uint32_t j, dm_kin *k,
-                        double *r2out)
+/* Whether particles i and j touch; d receives x_j - x_i, *r2 its square. */
+DM_INLINE int dm_pp_touch(const int D, const dm_particles *P, uint32_t i, uint32_t j, double *d,
+                          double *r2)
 {
-    const int W = D == 3 ? 3 : 1;
-    const double *x = P->x, *v = P->v, *om = P->w, *rad = P->r;
-    double d[3], r2 = 0.0;
+    const double *x = P->x;
+    double s = 0.0;
     for (int c = 0; c < D; c++) {
         d[c] = x[D * j + c] - x[D * i + c];
-        r2 += d[c] * d[c];
+        s += d[c] * d[c];
     }
+    const double sum = P->r[i] + P->r[j];
+    *r2 = s;
+    return s < sum * sum;
+}
+
+/* Particle-particle kinematics of a touching pair, from d = x_j - x_i and
+ * its square r2. SPIN: include rotation in the contact velocities; ROLL:
+ * compute wrel. vp, wp: the velocities the dashpots see. */
+DM_INLINE void dm_pp_kin(const int D, const int SPIN, const int ROLL, const dm_particles *P,
+                         const double *vp, const double *wp, uint32_t i, uint32_t j,
+                         const double *d, double r2, dm_kin *k)
+{
+    const int W = D == 3 ? 3 : 1;
+    const double *v = P->v, *om = P->w, *rad = P->r;
+    const double dist = sqrt(r2), inv = 1.0 / dist;
+    for (int c = 0; c < D; c++) /* coincident centres: any normal will do */
+        k->n[c] = dist > 0.0 ? d[c] * inv : c == 0;
     const double sum = rad[i] + rad[j];
-    *r2out = r2;
-    if (r2 >= sum * sum)
-        return 0;
-    const double dist = sqrt(r2);
-    if (dist > 0.0) {
-        const double inv = 1.0 / dist;
-        for (int c = 0; c < D; c++)
-            k->n[c] = d[c] * inv;
-    } else {
-        for (int c = 0; c < D; c++)
-            k->n[c] = c == 0;
-    }
     k->delta = sum - dist;
     k->ai = rad[i] - 0.5 * k->delta;
     k->aj = rad[j] - 0.5 * k->delta;
@@ -125,20 +126,16 @@ DM_INLINE int dm_pp_kin(const int D, const int SPIN, const int ROLL, const dm_pa
             k->wrel[c] = wp[W * i + c] - wp[W * j + c];
     k->rstar = rad[i] * rad[j] / sum;
     k->mstar = P->m[i] * P->m[j] / (P->m[i] + P->m[j]);
-    return 1;
 }
 
-/* Particle-wall kinematics from the candidate's geometry gk; returns 0 when
- * the particle does not touch the wall. */
-DM_INLINE int dm_pw_kin(const int D, const int SPIN, const int ROLL, const dm_particles *P,
-                        const double *vp, const double *wp, const dm_wgeom *g, uint32_t gk,
-                        uint32_t i, const dm_wall *wall, dm_kin *k)
+/* Particle-wall kinematics of a touching candidate, from its geometry gk. */
+DM_INLINE void dm_pw_kin(const int D, const int SPIN, const int ROLL, const dm_particles *P,
+                         const double *vp, const double *wp, const dm_wgeom *g, uint32_t gk,
+                         uint32_t i, const dm_wall *wall, dm_kin *k)
 {
     const int W = D == 3 ? 3 : 1;
     const double *om = P->w;
     k->delta = g->delta[gk];
-    if (k->delta <= 0.0)
-        return 0;
     for (int c = 0; c < D; c++)
         k->n[c] = g->nrm[D * gk + c];
     k->ai = P->r[i] - 0.5 * k->delta;
@@ -158,14 +155,13 @@ DM_INLINE int dm_pw_kin(const int D, const int SPIN, const int ROLL, const dm_pa
             k->wrel[c] = wp[W * i + c] - wall->omega[D == 3 ? c : 2];
     k->rstar = P->r[i];
     k->mstar = P->m[i];
-    return 1;
 }
 
 /* A contact with the exit correction found apart (dm_law_exit): returns the
  * force along n on b that applies the impulse its last sample in contact
- * missed or added, the exit time found by interpolating the overlap, and
- * forgets the contact. hb: the two boundary slots of its history. */
-DM_INLINE double dm_exit_force(double *hb, double delta_now, double reach,
+ * missed or added, the exit time found by interpolating the overlap. hb:
+ * the two boundary slots of its history. */
+DM_INLINE double dm_exit_force(const double *hb, double delta_now, double reach,
                                const dm_pairparam *pp)
 {
     const double d_last = hb[1];
@@ -174,8 +170,96 @@ DM_INLINE double dm_exit_force(double *hb, double delta_now, double reach,
     double jump = hb[0] - pp->kn * d_last;
     if (pp->clamp && jump < 0.0)
         jump = 0.0;
-    hb[0] = hb[1] = 0.0;
     return jump * (d_last / (d_last - delta_now) - reach);
+}
+
+/* A kernel works through its bucket in chunks of DM_CHUNK candidates, in
+ * three passes: the narrow phase lists the pairs that touch (and ends the
+ * contacts that came apart); the law, the same arithmetic for every touching
+ * pair with no branch on the pair, runs as a vectorised loop; the forces,
+ * torques, tallies and histories are then applied in pair order, so that the
+ * sums do not depend on the vector width. */
+#define DM_CHUNK 128
+#define DM_LANES 8 /* the law's loop runs over a multiple of this many pairs */
+
+typedef struct dm_chunk {
+    uint32_t touch[DM_CHUNK];          /* whether each candidate touches */
+    uint32_t k[DM_CHUNK];              /* the touching pairs, indices in the bucket */
+    uint32_t pp[DM_CHUNK];             /* and their entries in the pair table */
+    double f[3][DM_CHUNK];             /* force on b */
+    double ta[3][DM_CHUNK], tb[3][DM_CHUNK]; /* torques on a and b (W components) */
+    double diss[4][DM_CHUNK];          /* normal, tangential, friction, rolling */
+    double h[DM_MAX_HIST][DM_CHUNK];   /* histories, then their new values */
+} dm_chunk;
+
+/* Copies the histories of the chunk's m touching pairs into it, and their
+ * entries in the pair table (WALLS: the pairs of bucket b are particle-wall
+ * pairs); pads the list with copies of its last pair to a whole number of
+ * vector lanes, which the law's loop then needs no scalar remainder for.
+ * Returns the padded length. */
+DM_INLINE uint32_t dm_chunk_load(const int HSL, const int WALLS, const demill_world *w,
+                                 const dm_bucket *b, dm_chunk *ch, uint32_t m)
+{
+    const uint16_t *mat = w->p.mat;
+    for (uint32_t s = 0; s < m; s++) {
+        const uint32_t k = ch->k[s], j = b->j[k];
+        for (int c = 0; c < HSL; c++)
+            ch->h[c][s] = b->hist[(size_t)b->hs * k + c];
+        ch->pp[s] = mat[b->i[k]] * w->nmat_tab + (WALLS ? w->walls[j].material : mat[j]);
+    }
+    const uint32_t padded = m ? (m + DM_LANES - 1) / DM_LANES * DM_LANES : 0;
+    for (uint32_t s = m; s < padded; s++) {
+        ch->k[s] = ch->k[m - 1];
+        ch->pp[s] = ch->pp[m - 1];
+        for (int c = 0; c < HSL; c++)
+            ch->h[c][s] = ch->h[c][m - 1];
+    }
+    return padded;
+}
+
+/* The law's results for pair s of a chunk: the force on b, the torques on a
+ * (lever arm ai) and b (aj), the dissipation and the new history. */
+DM_INLINE void dm_chunk_store(const int D, const int HSL, dm_chunk *ch, uint32_t s,
+                              const dm_kin *q, const dm_law_out *o, const double *hout)
+{
+    const int W = D == 3 ? 3 : 1;
+    double nf[3];
+    dm_n_cross(D, q->n, o->ft, nf);
+    for (int c = 0; c < D; c++)
+        ch->f[c][s] = o->fn * q->n[c] + o->ft[c];
+    for (int c = 0; c < W; c++) {
+        ch->ta[c][s] = o->mr[c] - q->ai * nf[c];
+        ch->tb[c][s] = -o->mr[c] - q->aj * nf[c];
+    }
+    ch->diss[0][s] = o->diss_normal;
+    ch->diss[1][s] = o->diss_tangential;
+    ch->diss[2][s] = o->diss_friction;
+    ch->diss[3][s] = o->diss_rolling;
+    for (int c = 0; c < HSL; c++)
+        ch->h[c][s] = hout[c];
+}
+
+/* Applies a pair's results to its history and tally: the contact is on.
+ * Returns the energy it dissipated over the step. */
+DM_INLINE double dm_chunk_commit(const int HSL, const int EV, const dm_chunk *ch, uint32_t s,
+                                 double *h, uint8_t *on, int advance, int tally, dm_tally *t)
+{
+    double lost = 0.0;
+    if (advance) {
+        for (int c = 0; c < HSL; c++)
+            h[c] = ch->h[c][s];
+        *on = 1;
+    }
+    if (tally) {
+        lost = ch->diss[0][s] + ch->diss[1][s] + ch->diss[2][s] + ch->diss[3][s];
+        t->diss_normal += ch->diss[0][s];
+        t->diss_tangential += ch->diss[1][s];
+        t->diss_friction += ch->diss[2][s];
+        t->diss_rolling += ch->diss[3][s];
+        if (EV)
+            h[HSL] += lost;
+    }
+    return lost;
 }
 
 /* Particle-particle loop. */
@@ -197,73 +281,82 @@ DM_INLINE void dm_pp_loop(const int D, const int NL, const int DL, const int TL,
     const uint32_t nm = w->nmat_tab, np = b->n;
     const uint32_t *restrict bi = b->i, *restrict bj = b->j;
     double *restrict hist = b->hist;
+    uint8_t *restrict on = b->on;
     const double dt_hist = a->dt_hist, reach = a->reach;
-    const int tally = a->tally;
+    const int tally = a->tally, advance = dt_hist > 0.0;
     dm_tally t = {0};
+    dm_chunk ch;
     uint32_t contacts = 0;
 
-    for (uint32_t k = 0; k < np; k++) {
-        const uint32_t i = bi[k], j = bj[k];
-        double *h = hist + (size_t)HS * k;
-        dm_kin q;
-        double r2;
-        if (!dm_pp_kin(D, SPIN, RL, P, vp, wp, i, j, &q, &r2)) {
+    for (uint32_t k0 = 0; k0 < np; k0 += DM_CHUNK) {
+        const uint32_t k1 = np - k0 < DM_CHUNK ? np : k0 + DM_CHUNK;
+        for (uint32_t k = k0; k < k1; k++) {
+            double d[3], r2;
+            ch.touch[k - k0] = (uint32_t)dm_pp_touch(D, P, bi[k], bj[k], d, &r2);
+        }
+        uint32_t m = 0;
+        for (uint32_t k = k0; k < k1; k++) {
+            const uint32_t touch = ch.touch[k - k0];
+            ch.k[m] = k;
+            m += touch;
+            if (touch | !on[k] | !advance)
+                continue;
+            /* the contact came apart during the step */
+            const uint32_t i = bi[k], j = bj[k];
+            double *h = hist + (size_t)HS * k;
             if (EXIT) {
-                if (dt_hist == 0.0)
-                    continue; /* keep the history for the next real step */
-                if (h[HSP + 1] > 0.0) {
-                    const double dist = sqrt(r2);
-                    const double fc = dm_exit_force(h + HSP, P->r[i] + P->r[j] - dist, reach,
-                                                    &tab[mat[i] * nm + mat[j]]);
-                    double vn = 0.0;
-                    for (int c = 0; c < D; c++) {
-                        const double nc = (P->x[D * j + c] - P->x[D * i + c]) / dist;
-                        f[D * i + c] -= fc * nc;
-                        f[D * j + c] += fc * nc;
-                        vn += (vp[D * j + c] - vp[D * i + c]) * nc;
-                    }
-                    if (tally) {
-                        t.diss_normal -= fc * vn * dt_hist;
-                        if (EV)
-                            h[HSL] -= fc * vn * dt_hist;
-                    }
+                double d[3], r2;
+                dm_pp_touch(D, P, i, j, d, &r2);
+                const double dist = sqrt(r2);
+                const double fc = dm_exit_force(h + HSP, P->r[i] + P->r[j] - dist, reach,
+                                                &tab[mat[i] * nm + mat[j]]);
+                double vn = 0.0;
+                for (int c = 0; c < D; c++) {
+                    const double nc = d[c] / dist;
+                    f[D * i + c] -= fc * nc;
+                    f[D * j + c] += fc * nc;
+                    vn += (vp[D * j + c] - vp[D * i + c]) * nc;
+                }
+                if (tally) {
+                    t.diss_normal -= fc * vn * dt_hist;
+                    if (EV)
+                        h[HSL] -= fc * vn * dt_hist;
                 }
             }
             if (EV && h[HSL] > 0.0)
                 dm_spectrum_record(w, i, j, -1, h[HSL]);
             for (int c = 0; c < HS; c++)
                 h[c] = 0.0;
-            continue;
+            on[k] = 0;
         }
-        contacts++;
-        const dm_pairparam *pp = &tab[mat[i] * nm + mat[j]];
-        dm_law_out o;
-        dm_tally lt = {0};
-        dm_law(D, NL, DL, TL, RL, pp, q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar, q.mstar, dt_hist,
-               reach, tally, h, &o, &lt);
-        if (tally) {
-            dm_tally_add(&t, &lt);
-            if (EV)
-                h[HSL] += dm_tally_dissipated(&lt);
+        const uint32_t lanes = dm_chunk_load(HSL, 0, w, b, &ch, m);
+        for (uint32_t s = 0; s < lanes; s++) {
+            const uint32_t k = ch.k[s], i = bi[k], j = bj[k];
+            double d[3], r2, hin[DM_MAX_HIST], hout[DM_MAX_HIST];
+            dm_pp_touch(D, P, i, j, d, &r2);
+            for (int c = 0; c < HSL; c++)
+                hin[c] = ch.h[c][s];
+            dm_kin q;
+            dm_pp_kin(D, SPIN, RL, P, vp, wp, i, j, d, r2, &q);
+            dm_law_out o;
+            dm_law(D, NL, DL, TL, RL, &tab[ch.pp[s]], q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar,
+                   q.mstar, dt_hist, reach, hin, hout, &o);
+            dm_chunk_store(D, HSL, &ch, s, &q, &o, hout);
         }
-        for (int c = 0; c < D; c++) {
-            const double fc = o.fn * q.n[c] + o.ft[c];
-            f[D * i + c] -= fc;
-            f[D * j + c] += fc;
-        }
-        if (SPIN) {
-            double nf[3];
-            dm_n_cross(D, q.n, o.ft, nf);
-            for (int c = 0; c < W; c++) {
-                tq[W * i + c] -= q.ai * nf[c];
-                tq[W * j + c] -= q.aj * nf[c];
+        for (uint32_t s = 0; s < m; s++) {
+            const uint32_t k = ch.k[s], i = bi[k], j = bj[k];
+            for (int c = 0; c < D; c++) {
+                f[D * i + c] -= ch.f[c][s];
+                f[D * j + c] += ch.f[c][s];
             }
+            if (SPIN || RL)
+                for (int c = 0; c < W; c++) {
+                    tq[W * i + c] += ch.ta[c][s];
+                    tq[W * j + c] += ch.tb[c][s];
+                }
+            dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
         }
-        if (RL)
-            for (int c = 0; c < W; c++) {
-                tq[W * i + c] += o.mr[c];
-                tq[W * j + c] -= o.mr[c];
-            }
+        contacts += m;
     }
     a->contacts = contacts;
     if (tally)
@@ -288,38 +381,45 @@ DM_INLINE void dm_pw_loop(const int D, const int NL, const int DL, const int TL,
     const dm_pairparam *tab = w->ptab;
     const uint32_t nm = w->nmat_tab, np = b->n, g0 = a->geom_offset;
     const dm_wgeom *g = &w->wg;
+    double *restrict hist = b->hist;
+    uint8_t *restrict on = b->on;
     const double dt_hist = a->dt_hist, reach = a->reach;
-    const int tally = a->tally;
+    const int tally = a->tally, advance = dt_hist > 0.0;
     dm_tally t = {0};
+    dm_chunk ch;
     uint32_t contacts = 0;
 
-    for (uint32_t k = 0; k < np; k++) {
-        const uint32_t i = b->i[k], gk = g0 + k;
-        double *h = b->hist + (size_t)HS * k;
-        dm_wall *wall = &w->walls[b->j[k]];
-        dm_kin q;
-        if (!dm_pw_kin(D, SPIN, RL, P, vp, wp, g, gk, i, wall, &q)) {
+    for (uint32_t k0 = 0; k0 < np; k0 += DM_CHUNK) {
+        const uint32_t k1 = np - k0 < DM_CHUNK ? np : k0 + DM_CHUNK;
+        uint32_t m = 0;
+        for (uint32_t k = k0; k < k1; k++) {
+            const uint32_t gk = g0 + k;
+            const int touch = g->delta[gk] > 0.0;
+            ch.k[m] = k;
+            m += (uint32_t)touch;
+            if (touch | !on[k] | !advance)
+                continue;
+            /* the contact came apart during the step */
+            const uint32_t i = b->i[k];
+            dm_wall *wall = &w->walls[b->j[k]];
+            double *h = hist + (size_t)HS * k;
             if (EXIT) {
-                if (dt_hist == 0.0)
-                    continue; /* keep the history for the next real step */
-                if (h[HSP + 1] > 0.0) {
-                    const double fc = dm_exit_force(h + HSP, g->delta[gk], reach,
-                                                    &tab[mat[i] * nm + wall->material]);
-                    double absorbed = 0.0, delivered = 0.0;
-                    for (int c = 0; c < D; c++) {
-                        const double fw = fc * g->nrm[D * gk + c];
-                        f[D * i + c] -= fw;
-                        wall->force[c] += fw;
-                        absorbed += fw * (vp[D * i + c] - g->vw[D * gk + c]);
-                        delivered -= fw * g->vw[D * gk + c];
-                    }
-                    if (tally) {
-                        t.diss_normal += absorbed * dt_hist;
-                        t.wall_work += delivered * dt_hist;
-                        wall->dissipated += absorbed * dt_hist;
-                        if (EV)
-                            h[HSL] += absorbed * dt_hist;
-                    }
+                const double fc = dm_exit_force(h + HSP, g->delta[gk], reach,
+                                                &tab[mat[i] * nm + wall->material]);
+                double absorbed = 0.0, delivered = 0.0;
+                for (int c = 0; c < D; c++) {
+                    const double fw = fc * g->nrm[D * gk + c];
+                    f[D * i + c] -= fw;
+                    wall->force[c] += fw;
+                    absorbed += fw * (vp[D * i + c] - g->vw[D * gk + c]);
+                    delivered -= fw * g->vw[D * gk + c];
+                }
+                if (tally) {
+                    t.diss_normal += absorbed * dt_hist;
+                    t.wall_work += delivered * dt_hist;
+                    wall->dissipated += absorbed * dt_hist;
+                    if (EV)
+                        h[HSL] += absorbed * dt_hist;
                 }
             }
             if (EV && h[HSL] > 0.0 && wall->drum_part)
@@ -329,54 +429,58 @@ DM_INLINE void dm_pw_loop(const int D, const int NL, const int DL, const int TL,
                                    h[HSL]);
             for (int c = 0; c < HS; c++)
                 h[c] = 0.0;
-            continue;
+            on[k] = 0;
         }
-        contacts++;
-        const dm_pairparam *pp = &tab[mat[i] * nm + wall->material];
-        dm_law_out o;
-        dm_tally lt = {0};
-        dm_law(D, NL, DL, TL, RL, pp, q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar, q.mstar, dt_hist,
-               reach, tally, h, &o, &lt);
-        if (tally) {
-            const double lost = dm_tally_dissipated(&lt);
-            dm_tally_add(&t, &lt);
-            wall->dissipated += lost;
-            if (EV)
-                h[HSL] += lost;
+        const uint32_t lanes = dm_chunk_load(HSL, 1, w, b, &ch, m);
+        for (uint32_t s = 0; s < lanes; s++) {
+            const uint32_t k = ch.k[s], i = b->i[k];
+            const dm_wall *wall = &w->walls[b->j[k]];
+            double hin[DM_MAX_HIST], hout[DM_MAX_HIST];
+            for (int c = 0; c < HSL; c++)
+                hin[c] = ch.h[c][s];
+            dm_kin q;
+            dm_pw_kin(D, SPIN, RL, P, vp, wp, g, g0 + k, i, wall, &q);
+            dm_law_out o;
+            dm_law(D, NL, DL, TL, RL, &tab[ch.pp[s]], q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar,
+                   q.mstar, dt_hist, reach, hin, hout, &o);
+            dm_chunk_store(D, HSL, &ch, s, &q, &o, hout);
         }
-        double fw[3] = {0.0, 0.0, 0.0}, arm[3] = {0.0, 0.0, 0.0};
-        for (int c = 0; c < D; c++) {
-            fw[c] = o.fn * q.n[c] + o.ft[c];
-            f[D * i + c] -= fw[c];
-            wall->force[c] += fw[c];
-            arm[c] = g->cp[D * gk + c] - wall->c[c];
-        }
-        /* torque on the wall about its centre: arm × F, minus the rolling
-         * torque on the particle */
-        wall->torque[0] += arm[1] * fw[2] - arm[2] * fw[1];
-        wall->torque[1] += arm[2] * fw[0] - arm[0] * fw[2];
-        wall->torque[2] += arm[0] * fw[1] - arm[1] * fw[0];
-        if (SPIN) {
-            double nf[3];
-            dm_n_cross(D, q.n, o.ft, nf);
-            for (int c = 0; c < W; c++)
-                tq[W * i + c] -= q.ai * nf[c];
-        }
-        if (RL)
-            for (int c = 0; c < W; c++) {
-                tq[W * i + c] += o.mr[c];
-                wall->torque[D == 3 ? c : 2] -= o.mr[c];
+        for (uint32_t s = 0; s < m; s++) {
+            const uint32_t k = ch.k[s], i = b->i[k], gk = g0 + k;
+            dm_wall *wall = &w->walls[b->j[k]];
+            double fw[3] = {0.0, 0.0, 0.0}, arm[3] = {0.0, 0.0, 0.0};
+            for (int c = 0; c < D; c++) {
+                fw[c] = ch.f[c][s];
+                f[D * i + c] -= fw[c];
+                wall->force[c] += fw[c];
+                arm[c] = g->cp[D * gk + c] - wall->c[c];
             }
-        if (tally) {
-            /* power the wall delivers: -F·v_wall(contact) + M_r·Ω_wall */
-            double pw = 0.0;
-            for (int c = 0; c < D; c++)
-                pw -= fw[c] * g->vw[D * gk + c];
+            /* torque on the wall about its centre: arm × F, plus the rolling
+             * torque (the law's torque on b) */
+            wall->torque[0] += arm[1] * fw[2] - arm[2] * fw[1];
+            wall->torque[1] += arm[2] * fw[0] - arm[0] * fw[2];
+            wall->torque[2] += arm[0] * fw[1] - arm[1] * fw[0];
+            if (SPIN || RL)
+                for (int c = 0; c < W; c++)
+                    tq[W * i + c] += ch.ta[c][s];
             if (RL)
                 for (int c = 0; c < W; c++)
-                    pw += o.mr[c] * wall->omega[D == 3 ? c : 2];
-            t.wall_work += pw * dt_hist;
+                    wall->torque[D == 3 ? c : 2] += ch.tb[c][s];
+            const double lost =
+                dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
+            if (tally) {
+                /* power the wall delivers: -F·v_wall(contact) - M_b·Ω_wall */
+                double pw = 0.0;
+                for (int c = 0; c < D; c++)
+                    pw -= fw[c] * g->vw[D * gk + c];
+                if (RL)
+                    for (int c = 0; c < W; c++)
+                        pw -= ch.tb[c][s] * wall->omega[D == 3 ? c : 2];
+                t.wall_work += pw * dt_hist;
+                wall->dissipated += lost;
+            }
         }
+        contacts += m;
     }
     a->contacts = contacts;
     if (tally)
@@ -384,11 +488,11 @@ DM_INLINE void dm_pw_loop(const int D, const int NL, const int DL, const int TL,
 }
 
 #define DM_DEFINE_KERNELS(D, NL, DL, TL, RL)                                                     \
-    static void dm_pp_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)                          \
+    DM_VECTOR_CLONES static void dm_pp_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
         dm_pp_loop(D, NL, DL, TL, RL, a);                                                         \
     }                                                                                             \
-    static void dm_pw_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)                          \
+    DM_VECTOR_CLONES static void dm_pw_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
         dm_pw_loop(D, NL, DL, TL, RL, a);                                                         \
     }

@@ -26,6 +26,8 @@ typedef struct dm_law_out {
     double fel;   /* its elastic part */
     double ft[3]; /* tangential force on b (D components) */
     double mr[3]; /* rolling torque on a (W components) */
+    /* energy dissipated over the step, by mechanism (see dm_tally) */
+    double diss_normal, diss_tangential, diss_friction, diss_rolling;
 } dm_law_out;
 
 DM_INLINE void dm_tally_add(dm_tally *to, const dm_tally *from)
@@ -35,12 +37,6 @@ DM_INLINE void dm_tally_add(dm_tally *to, const dm_tally *from)
     to->diss_friction += from->diss_friction;
     to->diss_rolling += from->diss_rolling;
     to->wall_work += from->wall_work;
-}
-
-/* Energy dissipated in a tally, all mechanisms. */
-DM_INLINE double dm_tally_dissipated(const dm_tally *t)
-{
-    return t->diss_normal + t->diss_tangential + t->diss_friction + t->diss_rolling;
 }
 
 /* History doubles of the tangential spring's displacement (a vector in 3D,
@@ -93,18 +89,25 @@ DM_INLINE int dm_law_hist_size(int normal, int damping, int tangential, int dim)
  * point at the end of the step (drives dashpots and friction); dc: the rate
  * of relative displacement over the step (drives the tangential spring).
  * dt_hist: time the history advances by (0 for an evaluation that does not
- * advance time); the energy tally (when tally != 0) uses the same interval.
- * reach: how far past a force sample its impulse reaches, in steps (1/2
- * for velocity Verlet, whose kicks apply a sample half a step either side;
- * 1 for symplectic Euler, which applies it over the following step).
- * hist: the contact's history, updated in place. */
+ * advance time, which leaves the history as it was); the dissipation in o
+ * is over the same interval. reach: how far past a force sample its impulse
+ * reaches, in steps (1/2 for velocity Verlet, whose kicks apply a sample
+ * half a step either side; 1 for symplectic Euler, which applies it over the
+ * following step). hin: the contact's history (zeros for a new contact);
+ * hout receives its new value (dm_law_hist_size doubles).
+ *
+ * The law has no branches that depend on the contact: every choice selects
+ * between values computed for both outcomes, so that the kernels' loops
+ * over contacts vectorise. Values computed for the outcome not taken may be
+ * infinite or NaN; they are discarded. */
 DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, const int RL,
                       const dm_pairparam *pp, const double *n, double delta, const double *vc,
                       const double *dc, const double *wrel, double rstar, double mstar,
-                      double dt_hist, double reach, const int tally, double *hist, dm_law_out *o,
-                      dm_tally *t)
+                      double dt_hist, double reach, const double *hin, double *hout,
+                      dm_law_out *o)
 {
     const int W = D == 3 ? 3 : 1;
+    const int advance = dt_hist > 0.0;
 
     /* normal law (§2): elastic force and contact stiffness S = dF/dδ */
     double fel, stiff, sq = 0.0;
@@ -128,47 +131,42 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
         root_ms = sqrt(mstar * stiff);
         cn = pp->dcoef * root_ms;
     }
-    double *hb = hist + dm_law_tangential_size(TL, D); /* exit slots: last force, overlap */
+    const int HT = dm_law_tangential_size(TL, D); /* exit slots: last force, overlap */
     double vnd = vn; /* the normal velocity the dashpot sees */
-    if (dm_law_exit(NL, DL) && !pp->clamp && hb[1] > 0.0) {
-        /* the contact's own force change over the step, implicitly:
-         * v = v_pred + h (F_new - F_last)/m*, F_new = k δ - c v, with h the
-         * part of the step the integrator's second kick covers */
+    if (dm_law_exit(NL, DL)) {
+        /* unclamped, in a continuing contact: the contact's own force
+         * change over the step, implicitly: v = v_pred + h (F_new -
+         * F_last)/m*, F_new = k δ - c v, with h the part of the step the
+         * integrator's second kick covers */
         const double hm = (1.0 - reach) * dt_hist / mstar;
-        vnd = (vn + hm * (fel - hb[0])) / (1.0 + hm * cn);
+        const double implicit = (vn + hm * (fel - hin[HT])) / (1.0 + hm * cn);
+        vnd = !pp->clamp & (hin[HT + 1] > 0.0) ? implicit : vn;
     }
     double fn = fel - cn * vnd;
-    if (pp->clamp && fn < 0.0)
-        fn = 0.0;
+    fn = pp->clamp & (fn < 0.0) ? 0.0 : fn;
     const double fn_now = fn;
-    if (dm_law_entry(DL) && dt_hist > 0.0) {
+    if (dm_law_entry(DL)) {
         /* first sample of a new contact: age from the overlap under the
          * current deceleration, then the onset-exponent weight (see above):
          * the impulse from contact to the end of the sample's window,
          * ∫ (t/age)^p dt over [0, age + reach Δt], divided by Δt */
-        const double va = -vn;
-        if (va > 0.0 && delta < va * dt_hist) {
-            const double dec = fn / mstar;
-            double age = delta / va;
-            if (dec > 0.0)
-                age = (sqrt(va * va + 2.0 * dec * delta) - va) / dec;
-            if (age < dt_hist) {
-                const double a = age / dt_hist, e = a + reach; /* in steps */
-                const double w_d = NL == DEMILL_NORMAL_LINEAR
-                                       ? e
-                                       : e * sqrt(sqrt(e)) / (1.25 * sqrt(sqrt(a)));
-                fn = fel + w_d * (fn - fel);
-            }
-        }
+        const double va = -vn, dec = fn / mstar;
+        /* δ = va age - dec age²/2, solved for the root that is stable
+         * for dec -> 0 */
+        const double age = 2.0 * delta / (va + sqrt(va * va + 2.0 * dec * delta));
+        const double a = age / dt_hist, e = a + reach; /* in steps */
+        const double w_d = NL == DEMILL_NORMAL_LINEAR ? e : 0.8 * e * sqrt(sqrt(e / a));
+        const int young = advance & (va > 0.0) & (delta < va * dt_hist) & (age < dt_hist);
+        fn = young ? fel + w_d * (fn - fel) : fn;
     }
-    if (dm_law_exit(NL, DL) && dt_hist > 0.0) {
-        hb[0] = fn_now;
-        hb[1] = delta;
+    if (dm_law_exit(NL, DL)) {
+        hout[HT] = advance ? fn_now : hin[HT];
+        hout[HT + 1] = advance ? delta : hin[HT + 1];
     }
     o->fn = fn;
     o->fel = fel;
-    if (tally)
-        t->diss_normal -= (fn - fel) * vnd * dt_hist;
+    o->diss_normal = -(fn - fel) * vnd * dt_hist;
+    o->diss_tangential = o->diss_friction = o->diss_rolling = 0.0;
 
     /* tangential law (§4) */
     double vt[3], dt_rate[3], dn = 0.0;
@@ -184,22 +182,16 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
         double vt2 = 0.0;
         for (int c = 0; c < D; c++)
             vt2 += vt[c] * vt[c];
-        if (vt2 > 0.0) {
-            if (DL != DEMILL_DAMPING_RESTITUTION)
-                root_ms = sqrt(mstar * stiff);
-            double vtm = sqrt(vt2), fm = pp->coul_reg * root_ms * vtm;
-            int slip = fm > cap;
-            if (slip)
-                fm = cap;
-            for (int c = 0; c < D; c++)
-                o->ft[c] = -fm * vt[c] / vtm;
-            if (tally) {
-                if (slip)
-                    t->diss_friction += fm * vtm * dt_hist;
-                else
-                    t->diss_tangential += fm * vtm * dt_hist;
-            }
-        }
+        if (DL != DEMILL_DAMPING_RESTITUTION)
+            root_ms = sqrt(mstar * stiff);
+        const double vtm = sqrt(vt2), fr = pp->coul_reg * root_ms * vtm;
+        const int slip = fr > cap;
+        const double fm = slip ? cap : fr, scale = vt2 > 0.0 ? fm / vtm : 0.0;
+        for (int c = 0; c < D; c++)
+            o->ft[c] = -scale * vt[c];
+        const double lost = fm * vtm * dt_hist;
+        o->diss_friction = slip ? lost : 0.0;
+        o->diss_tangential = slip ? 0.0 : lost;
     }
     if (TL == DEMILL_TANGENTIAL_SPRING || TL == DEMILL_TANGENTIAL_MINDLIN) {
         double kt;
@@ -238,8 +230,8 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
         }
         double xn = 0.0;
         for (int c = 0; c < NS; c++) {
-            e_old += hist[c] * hist[c];
-            xi[c] = hist[c] + ds[c];
+            e_old += hin[c] * hin[c];
+            xi[c] = hin[c] + ds[c];
             if (D == 3)
                 xn += xi[c] * n[c];
         }
@@ -251,29 +243,24 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
             f2 += ftr[c] * ftr[c];
         }
         const int slip = f2 > cap * cap;
-        const double scale = slip ? cap / sqrt(f2) : 1.0;
+        const double scale = slip ? cap / sqrt(f2) : 1.0, ikt = 1.0 / kt;
         double work = 0.0, e_new = 0.0;
         for (int c = 0; c < NS; c++) {
             ftr[c] *= scale;
-            if (slip)
-                xi[c] = -ftr[c] / kt;
+            xi[c] = slip ? -ftr[c] * ikt : xi[c];
             work -= ftr[c] * vtl[c] * dt_hist;
             e_new += xi[c] * xi[c];
-            hist[c] = xi[c];
+            hout[c] = advance ? xi[c] : hin[c];
         }
         /* spring energies before and after the step; Mindlin's previous one
          * was stored, with the previous k_t */
         e_new *= 0.5 * kt;
-        e_old = TL == DEMILL_TANGENTIAL_MINDLIN ? hist[NS] : 0.5 * kt * e_old;
+        e_old = TL == DEMILL_TANGENTIAL_MINDLIN ? hin[NS] : 0.5 * kt * e_old;
         if (TL == DEMILL_TANGENTIAL_MINDLIN)
-            hist[NS] = e_new;
-        if (tally) {
-            const double lost = work - (e_new - e_old);
-            if (slip)
-                t->diss_friction += lost;
-            else
-                t->diss_tangential += lost;
-        }
+            hout[NS] = advance ? e_new : hin[NS];
+        const double lost = work - (e_new - e_old);
+        o->diss_friction = slip ? lost : 0.0;
+        o->diss_tangential = slip ? 0.0 : lost;
         if (D == 3) {
             for (int c = 0; c < 3; c++)
                 o->ft[c] = ftr[c];
@@ -290,17 +277,13 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
         double w2 = 0.0;
         for (int c = 0; c < W; c++)
             w2 += wrel[c] * wrel[c];
-        if (w2 > 0.0) {
-            double wm = sqrt(w2);
-            double mm = pp->roll_reg * rstar * rstar * sqrt(mstar * stiff) * wm;
-            double mcap = pp->mu_r * rstar * fabs(fn);
-            if (mm > mcap)
-                mm = mcap;
-            for (int c = 0; c < W; c++)
-                o->mr[c] = -mm * wrel[c] / wm;
-            if (tally)
-                t->diss_rolling += mm * wm * dt_hist;
-        }
+        const double wm = sqrt(w2);
+        const double mr = pp->roll_reg * rstar * rstar * sqrt(mstar * stiff) * wm;
+        const double mcap = pp->mu_r * rstar * fabs(fn);
+        const double mm = mr > mcap ? mcap : mr, scale = w2 > 0.0 ? mm / wm : 0.0;
+        for (int c = 0; c < W; c++)
+            o->mr[c] = -scale * wrel[c];
+        o->diss_rolling = mm * wm * dt_hist;
     }
 }
 

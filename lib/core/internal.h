@@ -50,6 +50,16 @@ typedef struct dm_laws {
     int normal, damping, tangential, rolling;
 } dm_laws;
 
+/* The hot loops (contact kernels, integration) are also built for AVX2
+ * (x86-64-v3) and AVX-512 (x86-64-v4) on x86-64, the best version chosen
+ * when the library loads. */
+#ifdef DEMILL_HAVE_TARGET_CLONES
+#define DM_VECTOR_CLONES                                                                          \
+    __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define DM_VECTOR_CLONES
+#endif
+
 #define DM_KERNELS (2 * 3 * 4 * 2)
 #define DM_MAX_HIST 7 /* history doubles per contact, at most (contact/law.h + event slot) */
 int dm_kernel_index(dm_laws laws);
@@ -85,7 +95,11 @@ typedef struct dm_wall {
     double radius;         /* DM_WALL_SHELL: inner radius */
     int npoly;             /* DM_WALL_PRISM: convex cross-section, counter-clockwise, */
     double poly[2 * DM_MAX_POLY];  /* in the drum frame (at drum angle 0) */
-    double cpoly[2 * DM_MAX_POLY]; /* and at the current angle */
+    double cpoly[2 * DM_MAX_POLY]; /* and at the current angle, with per edge k (from */
+    double cedge[4 * DM_MAX_POLY]; /* vertex k to k + 1) its outward unit normal and */
+                                   /* its vector over its squared length */
+    double bc0[2], bc[2], brad;    /* circle about the section: centre in the drum
+                                      frame, at the current angle, radius */
     double reach;          /* largest distance of the wall's surface from its centre of
                               rotation that can move (0: the rotation does not move it) */
     /* reference geometry at time t0 and motion */
@@ -128,7 +142,8 @@ typedef struct dm_bucket {
     int hs;                  /* history doubles per pair */
     uint32_t n, cap;
     uint32_t *i, *j;         /* for walls: i = particle, j = wall slot */
-    double *hist;
+    double *hist;            /* zeros unless on */
+    uint8_t *on;             /* 1: touching at the last step */
 } dm_bucket;
 
 typedef struct dm_clist {
@@ -354,6 +369,7 @@ void dm_nlist_free(demill_world *w);
 int dm_grid_reserve(dm_grid *g, uint32_t n);
 void dm_clist_clear(demill_world *w);
 void dm_clist_drop_wall(demill_world *w, uint32_t wall_slot);
+void dm_bucket_move(dm_bucket *b, uint32_t to, uint32_t from, uint32_t i, uint32_t j);
 
 /* geometry/wall.c */
 uint32_t dm_wall_slot_alloc(demill_world *w);
@@ -362,6 +378,7 @@ void dm_walls_retime(demill_world *w, double time);
 void dm_wgeom_update(demill_world *w);
 int dm_wgeom_reserve(demill_world *w);
 double dm_wall_distance(const dm_wall *wall, const double *x, int dim);
+double dm_wall_distance_bound(const dm_wall *wall, const double *x, int dim);
 double dm_wall_closest(const dm_wall *wall, const double *x, int dim, double *normal);
 double dm_walls_max_shift(const demill_world *w);
 void dm_walls_mark_built(demill_world *w);

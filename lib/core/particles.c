@@ -240,13 +240,8 @@ static void clist_remap(dm_clist *l, const uint32_t *map, int walls)
         uint32_t m = 0;
         for (uint32_t p = 0; p < b->n; p++) {
             uint32_t i = map[b->i[p]], j = walls ? b->j[p] : map[b->j[p]];
-            if (i == DM_FREE || j == DM_FREE)
-                continue;
-            b->i[m] = i;
-            b->j[m] = j;
-            memmove(b->hist + (size_t)b->hs * m, b->hist + (size_t)b->hs * p,
-                    (size_t)b->hs * sizeof *b->hist);
-            m++;
+            if (i != DM_FREE && j != DM_FREE)
+                dm_bucket_move(b, m++, p, i, j);
         }
         b->n = m;
     }

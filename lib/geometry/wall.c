@@ -94,11 +94,24 @@ static void wall_at_drum(dm_wall *wall, double theta, double omega)
     wall->omega[2] = omega;
     mat_vec(R, wall->p0, wall->p);
     mat_vec(R, wall->n0, wall->n);
-    for (int k = 0; k < wall->npoly; k++) {
+    const int n = wall->npoly;
+    for (int k = 0; k < n; k++) {
         const double x = wall->poly[2 * k], y = wall->poly[2 * k + 1];
         wall->cpoly[2 * k] = c * x - s * y;
         wall->cpoly[2 * k + 1] = s * x + c * y;
     }
+    for (int k = 0; k < n; k++) {
+        const double *a = wall->cpoly + 2 * k, *b = wall->cpoly + 2 * ((k + 1) % n);
+        const double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey;
+        const double len = sqrt(l2);
+        double *e = wall->cedge + 4 * k;
+        e[0] = ey / len;
+        e[1] = -ex / len;
+        e[2] = ex / l2;
+        e[3] = ey / l2;
+    }
+    wall->bc[0] = c * wall->bc0[0] - s * wall->bc0[1];
+    wall->bc[1] = s * wall->bc0[0] + c * wall->bc0[1];
 }
 
 void dm_walls_advance(demill_world *w, double time)
@@ -144,20 +157,20 @@ double dm_wall_closest(const dm_wall *wall, const double *x, int dim, double *no
         double best_sep = -HUGE_VAL, best_n[2] = {0.0, 0.0}, best_d2 = HUGE_VAL;
         double best_c[2] = {0.0, 0.0};
         for (int k = 0; k < n; k++) {
+            const double *e = wall->cedge + 4 * k;
             const double ax = v[2 * k], ay = v[2 * k + 1];
             const double bx = v[2 * ((k + 1) % n)], by = v[2 * ((k + 1) % n) + 1];
-            const double ex = bx - ax, ey = by - ay, len = sqrt(ex * ex + ey * ey);
-            const double nx = ey / len, ny = -ex / len; /* outward */
-            const double sep = (x[0] - ax) * nx + (x[1] - ay) * ny;
+            const double rx = x[0] - ax, ry = x[1] - ay;
+            const double sep = rx * e[0] + ry * e[1];
             if (sep > best_sep) {
                 best_sep = sep;
-                best_n[0] = nx;
-                best_n[1] = ny;
+                best_n[0] = e[0];
+                best_n[1] = e[1];
             }
             /* closest point of the edge segment */
-            double t = ((x[0] - ax) * ex + (x[1] - ay) * ey) / (len * len);
+            double t = rx * e[2] + ry * e[3];
             t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-            const double cx = ax + t * ex, cy = ay + t * ey;
+            const double cx = ax + t * (bx - ax), cy = ay + t * (by - ay);
             const double d2 = (x[0] - cx) * (x[0] - cx) + (x[1] - cy) * (x[1] - cy);
             if (d2 < best_d2) {
                 best_d2 = d2;
@@ -191,6 +204,16 @@ double dm_wall_distance(const dm_wall *wall, const double *x, int dim)
 {
     double n[3];
     return dm_wall_closest(wall, x, dim, n);
+}
+
+/* A lower bound of the signed distance of x from the wall's surface (see
+ * dm_wall_closest), cheaper than the distance for a prism. */
+double dm_wall_distance_bound(const dm_wall *wall, const double *x, int dim)
+{
+    if (wall->kind != DM_WALL_PRISM)
+        return dm_wall_distance(wall, x, dim);
+    const double dx = x[0] - wall->bc[0], dy = x[1] - wall->bc[1];
+    return sqrt(dx * dx + dy * dy) - wall->brad;
 }
 
 void dm_walls_mark_built(demill_world *w)

@@ -179,8 +179,14 @@ static demill_status drum_walls_build(demill_world *w)
         dm_wall *lw = drum_wall_new(w, DM_WALL_PRISM, DM_PART_LIFTER);
         lw->lifter = (int)k;
         lw->npoly = lifter_polygon(&d->lifters[k], R, lw->poly);
-        for (int v = 0; v < lw->npoly; v++)
+        for (int v = 0; v < lw->npoly; v++) {
             lw->reach = fmax(lw->reach, hypot(lw->poly[2 * v], lw->poly[2 * v + 1]));
+            lw->bc0[0] += lw->poly[2 * v] / lw->npoly;
+            lw->bc0[1] += lw->poly[2 * v + 1] / lw->npoly;
+        }
+        for (int v = 0; v < lw->npoly; v++)
+            lw->brad = fmax(lw->brad, hypot(lw->poly[2 * v] - lw->bc0[0],
+                                            lw->poly[2 * v + 1] - lw->bc0[1]));
     }
     dm_walls_advance(w, w->time);
     for (uint32_t k = 0; k < d->nwall; k++) {

@@ -158,8 +158,8 @@ START_TEST(grid_matches_all_pairs)
 END_TEST
 
 /* Marks every listed contact's history with a value derived from the pair's
- * handles, rebuilds after a shuffle of the storage order, and checks that
- * each value followed its pair. */
+ * handles (and the contact on), rebuilds after a shuffle of the storage
+ * order, and checks that each value followed its pair. */
 START_TEST(history_follows_pairs)
 {
     srand(7);
@@ -177,6 +177,7 @@ START_TEST(history_follows_pairs)
                 uint32_t hi = P->hid[b->i[p]], hj = P->hid[b->j[p]];
                 for (int c = 0; c < b->hs; c++)
                     b->hist[(size_t)b->hs * p + c] = 1000.0 * hi + hj + 0.25 * c;
+                b->on[p] = 1;
                 if (b->hs && marked < 40000)
                     before[marked++] = (pair_key){hi < hj ? hi : hj, hi < hj ? hj : hi, k};
             }
@@ -197,6 +198,8 @@ START_TEST(history_follows_pairs)
                 uint32_t hi = P->hid[b->i[p]], hj = P->hid[b->j[p]];
                 pair_key key = {hi < hj ? hi : hj, hi < hj ? hj : hi, k};
                 int was_listed = bsearch(&key, before, marked, sizeof *before, cmp_key) != NULL;
+                if (b->hs)
+                    ck_assert_int_eq(b->on[p], was_listed);
                 for (int c = 0; c < b->hs; c++) {
                     double v = b->hist[(size_t)b->hs * p + c];
                     if (!was_listed) { /* a pair that came into reach starts afresh */
