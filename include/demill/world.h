@@ -48,6 +48,12 @@ enum {
     DEMILL_WORLD_ENERGY_TRACKING = 107,
     /** Simulated time in s. Settable, e.g. to continue a run. */
     DEMILL_WORLD_TIME = 108,
+    /** Threads that stepping uses, a whole number in [0, 1024]; 0 takes
+     *  OpenMP's default (OMP_NUM_THREADS, or one per core). Default 1.
+     *  Results are bitwise the same for every thread count. More than one
+     *  needs a library built with OpenMP (DEMILL_ERR_UNSUPPORTED otherwise);
+     *  getting the key gives the number in use. */
+    DEMILL_WORLD_THREADS = 109,
 
     /** 2 or 3. */
     DEMILL_WORLD_DIMENSION = 150,

@@ -51,6 +51,7 @@ void dm_clist_clear(demill_world *w)
 {
     clist_empty(w, &w->pp);
     clist_empty(w, &w->pw);
+    w->res.valid = false;
 }
 
 /* Moves pair `from` of a bucket to slot `to` (to <= from) as pair (i, j). */
@@ -73,6 +74,7 @@ void dm_clist_drop_wall(demill_world *w, uint32_t wall_slot)
                 dm_bucket_move(b, m++, p, b->i[p], b->j[p]);
         b->n = m;
     }
+    w->res.valid = false;
 }
 
 static void clist_free(dm_clist *l)
@@ -104,6 +106,7 @@ void dm_nlist_free(demill_world *w)
     free(w->wg.delta);
     free(w->wg.vw);
     free(w->wg.cp);
+    free(w->wg.lost);
 }
 
 /* Sizes the per-particle scratch for n particles. */
@@ -373,7 +376,7 @@ demill_status dm_nlist_build(demill_world *w)
             if (kern >= 0 && bucket_push(&w->pw.b[kern], i, k))
                 goto oom;
         }
-    if (dm_wgeom_reserve(w))
+    if (dm_wgeom_reserve(w) || dm_results_reserve(w))
         goto oom;
     carry_restore(w);
     memcpy(P->x0, P->x, (size_t)D * n * sizeof *P->x);

@@ -30,49 +30,166 @@ int dm_kernel_hist_size(int kernel, int dim)
     return dm_law_hist_size(l.normal, l.damping, l.tangential, dim);
 }
 
-/* Evaluates all forces and torques at the current state. dt_hist > 0 advances
- * the contact histories by that time (a real step); tally adds the step's
- * dissipation and wall work to the world's energy account. vp, wp: the
- * velocities dashpots and friction see; reach: how far past a sample its impulse
- * reaches, in steps (see dm_law). */
-void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
-               int tally)
+/* The forces and torques of particles p0 .. p1-1: gravity, then the
+ * results of their pairs in pair-id order, which is the order of a walk
+ * through the chunks' lists of pairs with results. The walk starts at the
+ * first pair that can reach p0 (j - i is at most the bucket's span). */
+DM_INLINE void sum_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1)
 {
-    const int D = w->dim, W = D == 3 ? 3 : 1;
+    const int W = D == 3 ? 3 : 1, S = D + 2 * W;
     dm_particles *P = &w->p;
-    for (uint32_t i = 0; i < P->n; i++) {
+    const dm_results *q = &w->res;
+    const double *restrict out = q->out, *restrict m = P->m;
+    double *restrict f = P->f, *restrict tq = P->t;
+    const double g[3] = {w->g[0], w->g[1], w->g[2]};
+    for (uint32_t i = p0; i < p1; i++) {
         for (int c = 0; c < D; c++)
-            P->f[D * i + c] = P->m[i] * w->g[c];
+            f[D * i + c] = m[i] * g[c];
         for (int c = 0; c < W; c++)
-            P->t[W * i + c] = 0.0;
+            tq[W * i + c] = 0.0;
     }
+    for (int side = 0; side < 2; side++)
+        for (int k = 0; k < DM_KERNELS; k++) {
+            const dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
+            const uint32_t *restrict bi = b->i, *restrict bj = b->j;
+            const uint32_t lo = side || p0 < b->span ? (side ? p0 : 0) : p0 - b->span;
+            uint32_t first = 0, last = b->n; /* the first pair with i >= lo */
+            while (first < last) {
+                const uint32_t mid = first + (last - first) / 2;
+                if (bi[mid] < lo)
+                    first = mid + 1;
+                else
+                    last = mid;
+            }
+            /* the chunks from there, through their lists of pairs with results */
+            for (uint32_t k0 = first / DM_CHUNK * DM_CHUNK; k0 < b->n && bi[k0] < p1;
+                 k0 += DM_CHUNK) {
+                const uint32_t *list = q->list + b->base + k0;
+                const uint32_t listed = q->chunk_listed[b->chunk0 + k0 / DM_CHUNK];
+                for (uint32_t e = 0; e < listed; e++) {
+                    const uint32_t p = list[e], i = bi[p];
+                    const double *o = out + (size_t)S * (b->base + p);
+                    if (i >= p0 && i < p1) {
+                        for (int c = 0; c < D; c++)
+                            f[D * i + c] -= o[c];
+                        for (int c = 0; c < W; c++)
+                            tq[W * i + c] += o[D + c];
+                    }
+                    const uint32_t j = bj[p];
+                    if (!side && j >= p0 && j < p1) {
+                        for (int c = 0; c < D; c++)
+                            f[D * j + c] += o[c];
+                        for (int c = 0; c < W; c++)
+                            tq[W * j + c] += o[D + W + c];
+                    }
+                }
+            }
+        }
+}
+
+static void sum_forces2(demill_world *w, void *arg, int t, uint32_t p0, uint32_t p1)
+{
+    (void)arg, (void)t;
+    sum_forces(2, w, p0, p1);
+}
+
+static void sum_forces3(demill_world *w, void *arg, int t, uint32_t p0, uint32_t p1)
+{
+    (void)arg, (void)t;
+    sum_forces(3, w, p0, p1);
+}
+
+/* The walls' forces and torques (about their centres) from their contacts'
+ * results, in pair-id order; with tally, their dissipation and the work
+ * they deliver over dt. */
+DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_tally *t)
+{
+    const int W = D == 3 ? 3 : 1, S = D + 2 * W;
+    const dm_results *q = &w->res;
+    const dm_wgeom *g = &w->wg;
     for (uint32_t k = 0; k < w->nwalls; k++) {
         memset(w->walls[k].force, 0, sizeof w->walls[k].force);
         memset(w->walls[k].torque, 0, sizeof w->walls[k].torque);
     }
-    const dm_kernel_fn *pp = D == 3 ? dm_pp_kernels3 : dm_pp_kernels2;
-    const dm_kernel_fn *pw = D == 3 ? dm_pw_kernels3 : dm_pw_kernels2;
-    dm_tally t = {0};
-    dm_kernel_args a = {.w = w, .vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach,
-                        .tally = tally, .t = &t};
-    w->ncontacts = 0;
     for (int k = 0; k < DM_KERNELS; k++) {
-        if (!w->pp.b[k].n)
-            continue;
-        a.b = &w->pp.b[k];
-        pp[k](&a);
-        w->ncontacts += a.contacts;
-    }
-    dm_wgeom_update(w);
-    w->nwall_contacts = 0;
-    for (int k = 0; k < DM_KERNELS; k++) {
-        if (w->pw.b[k].n) {
-            a.b = &w->pw.b[k];
-            pw[k](&a);
-            w->nwall_contacts += a.contacts;
+        const dm_bucket *b = &w->pw.b[k];
+        for (uint32_t k0 = 0; k0 < b->n; k0 += DM_CHUNK) {
+            const uint32_t *list = q->list + b->base + k0;
+            const uint32_t listed = q->chunk_listed[b->chunk0 + k0 / DM_CHUNK];
+            for (uint32_t e = 0; e < listed; e++) {
+                const uint32_t p = list[e], pid = b->base + p, gk = pid - q->npp;
+                dm_wall *wall = &w->walls[b->j[p]];
+                const double *fw = q->out + (size_t)S * pid, *tw = fw + D + W;
+                double arm[3] = {0.0, 0.0, 0.0}, f3[3] = {0.0, 0.0, 0.0}, work = 0.0;
+                for (int c = 0; c < D; c++) {
+                    f3[c] = fw[c];
+                    wall->force[c] += fw[c];
+                    arm[c] = g->cp[D * gk + c] - wall->c[c];
+                    work -= fw[c] * g->vw[D * gk + c];
+                }
+                wall->torque[0] += arm[1] * f3[2] - arm[2] * f3[1];
+                wall->torque[1] += arm[2] * f3[0] - arm[0] * f3[2];
+                wall->torque[2] += arm[0] * f3[1] - arm[1] * f3[0];
+                for (int c = 0; c < W; c++) {
+                    const int z = D == 3 ? c : 2;
+                    wall->torque[z] += tw[c];
+                    work -= tw[c] * wall->omega[z];
+                }
+                if (tally) {
+                    wall->dissipated += g->lost[gk];
+                    t->wall_work += work * dt;
+                }
+            }
         }
-        a.geom_offset += w->pw.b[k].n;
     }
+}
+
+/* Evaluates all forces and torques at the current state. dt_hist > 0 advances
+ * the contact histories by that time (a real step); tally adds the step's
+ * dissipation and wall work to the world's energy account. vp, wp: the
+ * velocities dashpots and friction see; reach: how far past a sample its impulse
+ * reaches, in steps (see dm_law). The chunks of pairs, then the particles'
+ * sums, run on w->threads threads; every sum is taken in an order that does
+ * not depend on them. */
+void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
+               int tally)
+{
+    const int D = w->dim, T = w->threads;
+    dm_results *q = &w->res;
+    if (!q->valid)
+        dm_results_layout(w);
+    dm_wgeom_update(w);
+    const dm_kernel_fn *ppk = D == 3 ? dm_pp_kernels3 : dm_pp_kernels2;
+    const dm_kernel_fn *pwk = D == 3 ? dm_pw_kernels3 : dm_pw_kernels2;
+    const uint32_t nchunks = q->nchunks;
+    (void)T;
+    DM_OMP("omp parallel for schedule(dynamic, 8) num_threads(T) if (T > 1)")
+    for (uint32_t c = 0; c < nchunks; c++) {
+        const dm_chunkref r = q->chunks[c];
+        dm_bucket *b = r.walls ? &w->pw.b[r.kernel] : &w->pp.b[r.kernel];
+        dm_kernel_args a = {.w = w, .b = b, .k0 = r.k0, .geom_offset = b->base - q->npp,
+                            .vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach,
+                            .tally = tally};
+        (r.walls ? pwk : ppk)[r.kernel](&a);
+        q->chunk_tally[c] = a.t;
+        q->chunk_contacts[c] = a.contacts;
+        q->chunk_listed[c] = a.listed;
+    }
+    dm_tally t = {0};
+    w->ncontacts = w->nwall_contacts = 0;
+    for (uint32_t c = 0; c < nchunks; c++) {
+        if (q->chunks[c].walls)
+            w->nwall_contacts += q->chunk_contacts[c];
+        else
+            w->ncontacts += q->chunk_contacts[c];
+        if (tally)
+            dm_tally_add(&t, &q->chunk_tally[c]);
+    }
+    dm_parallel(w, w->p.n, D == 3 ? sum_forces3 : sum_forces2, NULL);
+    if (D == 3)
+        sum_walls(3, w, tally, dt_hist, &t);
+    else
+        sum_walls(2, w, tally, dt_hist, &t);
     if (tally)
         dm_tally_add(&w->tally, &t);
     w->forces_valid = true;

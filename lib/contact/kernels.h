@@ -1,9 +1,9 @@
 /* kernels.h: the contact loops, specialised per dimension and contact model.
  *
- * A kernel is one loop over a bucket of candidate pairs that share a
- * combination of laws. kernels2.c and kernels3.c instantiate every
+ * A kernel works through one chunk of a bucket of candidate pairs that share
+ * a combination of laws. kernels2.c and kernels3.c instantiate every
  * combination for their dimension through DM_FOR_EACH_KERNEL; forces.c picks
- * the kernel of each bucket, so the loops contain no branch on options and
+ * the kernel of each chunk, so the loops contain no branch on options and
  * no indirect call.
  */
 #ifndef DM_KERNELS_H
@@ -14,12 +14,14 @@
 typedef struct dm_kernel_args {
     demill_world *w;
     dm_bucket *b;
-    uint32_t geom_offset; /* walls: index of the bucket's first pair in w->wg */
+    uint32_t k0;           /* the chunk: candidates k0 .. k0 + DM_CHUNK - 1 of b */
+    uint32_t geom_offset;  /* walls: index of the bucket's first pair in w->wg */
     const double *vp, *wp; /* velocities the dashpots see (see dm_law) */
     double dt_hist, reach;
     int tally;
-    dm_tally *t;
-    uint32_t contacts; /* out: pairs in contact */
+    dm_tally t;            /* out: the chunk's dissipation */
+    uint32_t contacts;     /* out: pairs in contact */
+    uint32_t listed;       /* out: pairs with a result, listed in w->res.list */
 } dm_kernel_args;
 
 typedef void (*dm_kernel_fn)(dm_kernel_args *a);
@@ -173,12 +175,12 @@ DM_INLINE double dm_exit_force(const double *hb, double delta_now, double reach,
     return jump * (d_last / (d_last - delta_now) - reach);
 }
 
-/* A kernel works through its bucket in chunks of DM_CHUNK candidates, in
- * three passes: the narrow phase lists the pairs that touch (and ends the
- * contacts that came apart); the law, the same arithmetic for every touching
- * pair with no branch on the pair, runs as a vectorised loop; the forces,
- * torques, tallies and histories are then applied in pair order, so that the
- * sums do not depend on the vector width. */
+/* A kernel works through a chunk of DM_CHUNK candidates in three passes:
+ * the narrow phase finds the pairs that touch (and ends the contacts that
+ * came apart); the law, the same arithmetic for every touching pair with no
+ * branch on the pair, runs as a vectorised loop; the results, each pair's
+ * force and torques, are then stored by pair id (dm_results) with the new
+ * histories, and summed per particle afterwards. */
 #define DM_CHUNK 128
 #define DM_LANES 8 /* the law's loop runs over a multiple of this many pairs */
 
@@ -239,11 +241,21 @@ DM_INLINE void dm_chunk_store(const int D, const int HSL, dm_chunk *ch, uint32_t
         ch->h[c][s] = hout[c];
 }
 
-/* Applies a pair's results to its history and tally: the contact is on.
+/* Commits touching pair s of a chunk: its results into out (S = D + 2W
+ * doubles: force on b, torques on a and on b), its new history, the contact
+ * on (for a step), its dissipation into the tally and the event slot.
  * Returns the energy it dissipated over the step. */
-DM_INLINE double dm_chunk_commit(const int HSL, const int EV, const dm_chunk *ch, uint32_t s,
-                                 double *h, uint8_t *on, int advance, int tally, dm_tally *t)
+DM_INLINE double dm_chunk_commit(const int D, const int HSL, const int EV, const dm_chunk *ch,
+                                 uint32_t s, double *out, double *h, uint8_t *on, int advance,
+                                 int tally, dm_tally *t)
 {
+    const int W = D == 3 ? 3 : 1;
+    for (int c = 0; c < D; c++)
+        out[c] = ch->f[c][s];
+    for (int c = 0; c < W; c++) {
+        out[D + c] = ch->ta[c][s];
+        out[D + W + c] = ch->tb[c][s];
+    }
     double lost = 0.0;
     if (advance) {
         for (int c = 0; c < HSL; c++)
@@ -262,112 +274,21 @@ DM_INLINE double dm_chunk_commit(const int HSL, const int EV, const dm_chunk *ch
     return lost;
 }
 
-/* Particle-particle loop. */
-DM_INLINE void dm_pp_loop(const int D, const int NL, const int DL, const int TL, const int RL,
-                          dm_kernel_args *a)
+/* A force fc n on b (and -fc n on a) with no torques, into out. */
+DM_INLINE void dm_out_normal(const int D, double *out, double fc, const double *n)
 {
     const int W = D == 3 ? 3 : 1;
-    const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
-    const int EXIT = dm_law_exit(NL, DL);
-    const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
-    demill_world *w = a->w;
-    const dm_particles *P = &w->p;
-    const dm_bucket *b = a->b;
-    const int EV = w->events, HS = b->hs; /* HS = HSL + EV: the event slot is last */
-    double *restrict f = w->p.f, *restrict tq = w->p.t;
-    const double *vp = a->vp, *wp = a->wp;
-    const uint16_t *restrict mat = w->p.mat;
-    const dm_pairparam *tab = w->ptab;
-    const uint32_t nm = w->nmat_tab, np = b->n;
-    const uint32_t *restrict bi = b->i, *restrict bj = b->j;
-    double *restrict hist = b->hist;
-    uint8_t *restrict on = b->on;
-    const double dt_hist = a->dt_hist, reach = a->reach;
-    const int tally = a->tally, advance = dt_hist > 0.0;
-    dm_tally t = {0};
-    dm_chunk ch;
-    uint32_t contacts = 0;
-
-    for (uint32_t k0 = 0; k0 < np; k0 += DM_CHUNK) {
-        const uint32_t k1 = np - k0 < DM_CHUNK ? np : k0 + DM_CHUNK;
-        for (uint32_t k = k0; k < k1; k++) {
-            double d[3], r2;
-            ch.touch[k - k0] = (uint32_t)dm_pp_touch(D, P, bi[k], bj[k], d, &r2);
-        }
-        uint32_t m = 0;
-        for (uint32_t k = k0; k < k1; k++) {
-            const uint32_t touch = ch.touch[k - k0];
-            ch.k[m] = k;
-            m += touch;
-            if (touch | !on[k] | !advance)
-                continue;
-            /* the contact came apart during the step */
-            const uint32_t i = bi[k], j = bj[k];
-            double *h = hist + (size_t)HS * k;
-            if (EXIT) {
-                double d[3], r2;
-                dm_pp_touch(D, P, i, j, d, &r2);
-                const double dist = sqrt(r2);
-                const double fc = dm_exit_force(h + HSP, P->r[i] + P->r[j] - dist, reach,
-                                                &tab[mat[i] * nm + mat[j]]);
-                double vn = 0.0;
-                for (int c = 0; c < D; c++) {
-                    const double nc = d[c] / dist;
-                    f[D * i + c] -= fc * nc;
-                    f[D * j + c] += fc * nc;
-                    vn += (vp[D * j + c] - vp[D * i + c]) * nc;
-                }
-                if (tally) {
-                    t.diss_normal -= fc * vn * dt_hist;
-                    if (EV)
-                        h[HSL] -= fc * vn * dt_hist;
-                }
-            }
-            if (EV && h[HSL] > 0.0)
-                dm_spectrum_record(w, i, j, -1, h[HSL]);
-            for (int c = 0; c < HS; c++)
-                h[c] = 0.0;
-            on[k] = 0;
-        }
-        const uint32_t lanes = dm_chunk_load(HSL, 0, w, b, &ch, m);
-        for (uint32_t s = 0; s < lanes; s++) {
-            const uint32_t k = ch.k[s], i = bi[k], j = bj[k];
-            double d[3], r2, hin[DM_MAX_HIST], hout[DM_MAX_HIST];
-            dm_pp_touch(D, P, i, j, d, &r2);
-            for (int c = 0; c < HSL; c++)
-                hin[c] = ch.h[c][s];
-            dm_kin q;
-            dm_pp_kin(D, SPIN, RL, P, vp, wp, i, j, d, r2, &q);
-            dm_law_out o;
-            dm_law(D, NL, DL, TL, RL, &tab[ch.pp[s]], q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar,
-                   q.mstar, dt_hist, reach, hin, hout, &o);
-            dm_chunk_store(D, HSL, &ch, s, &q, &o, hout);
-        }
-        for (uint32_t s = 0; s < m; s++) {
-            const uint32_t k = ch.k[s], i = bi[k], j = bj[k];
-            for (int c = 0; c < D; c++) {
-                f[D * i + c] -= ch.f[c][s];
-                f[D * j + c] += ch.f[c][s];
-            }
-            if (SPIN || RL)
-                for (int c = 0; c < W; c++) {
-                    tq[W * i + c] += ch.ta[c][s];
-                    tq[W * j + c] += ch.tb[c][s];
-                }
-            dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
-        }
-        contacts += m;
-    }
-    a->contacts = contacts;
-    if (tally)
-        dm_tally_add(a->t, &t);
+    for (int c = 0; c < D; c++)
+        out[c] = fc * n[c];
+    for (int c = 0; c < 2 * W; c++)
+        out[D + c] = 0.0;
 }
 
-/* Particle-wall loop over the geometry computed by dm_wgeom_update(). */
-DM_INLINE void dm_pw_loop(const int D, const int NL, const int DL, const int TL, const int RL,
-                          dm_kernel_args *a)
+/* Particle-particle chunk. */
+DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
+                           dm_kernel_args *a)
 {
-    const int W = D == 3 ? 3 : 1;
+    const int S = D + 2 * (D == 3 ? 3 : 1);
     const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
     const int EXIT = dm_law_exit(NL, DL);
     const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
@@ -375,126 +296,184 @@ DM_INLINE void dm_pw_loop(const int D, const int NL, const int DL, const int TL,
     const dm_particles *P = &w->p;
     const dm_bucket *b = a->b;
     const int EV = w->events, HS = b->hs; /* HS = HSL + EV: the event slot is last */
-    double *restrict f = w->p.f, *restrict tq = w->p.t;
     const double *vp = a->vp, *wp = a->wp;
     const uint16_t *restrict mat = w->p.mat;
     const dm_pairparam *tab = w->ptab;
-    const uint32_t nm = w->nmat_tab, np = b->n, g0 = a->geom_offset;
-    const dm_wgeom *g = &w->wg;
-    double *restrict hist = b->hist;
+    const uint32_t nm = w->nmat_tab, k0 = a->k0;
+    const uint32_t k1 = b->n - k0 < DM_CHUNK ? b->n : k0 + DM_CHUNK;
+    const uint32_t *restrict bi = b->i, *restrict bj = b->j;
+    double *restrict hist = b->hist, *restrict out = w->res.out + (size_t)S * b->base;
     uint8_t *restrict on = b->on;
     const double dt_hist = a->dt_hist, reach = a->reach;
     const int tally = a->tally, advance = dt_hist > 0.0;
     dm_tally t = {0};
     dm_chunk ch;
-    uint32_t contacts = 0;
 
-    for (uint32_t k0 = 0; k0 < np; k0 += DM_CHUNK) {
-        const uint32_t k1 = np - k0 < DM_CHUNK ? np : k0 + DM_CHUNK;
-        uint32_t m = 0;
-        for (uint32_t k = k0; k < k1; k++) {
-            const uint32_t gk = g0 + k;
-            const int touch = g->delta[gk] > 0.0;
-            ch.k[m] = k;
-            m += (uint32_t)touch;
-            if (touch | !on[k] | !advance)
-                continue;
-            /* the contact came apart during the step */
-            const uint32_t i = b->i[k];
-            dm_wall *wall = &w->walls[b->j[k]];
-            double *h = hist + (size_t)HS * k;
-            if (EXIT) {
-                const double fc = dm_exit_force(h + HSP, g->delta[gk], reach,
-                                                &tab[mat[i] * nm + wall->material]);
-                double absorbed = 0.0, delivered = 0.0;
-                for (int c = 0; c < D; c++) {
-                    const double fw = fc * g->nrm[D * gk + c];
-                    f[D * i + c] -= fw;
-                    wall->force[c] += fw;
-                    absorbed += fw * (vp[D * i + c] - g->vw[D * gk + c]);
-                    delivered -= fw * g->vw[D * gk + c];
-                }
-                if (tally) {
-                    t.diss_normal += absorbed * dt_hist;
-                    t.wall_work += delivered * dt_hist;
-                    wall->dissipated += absorbed * dt_hist;
-                    if (EV)
-                        h[HSL] += absorbed * dt_hist;
-                }
-            }
-            if (EV && h[HSL] > 0.0 && wall->drum_part)
-                dm_spectrum_record(w, i, 0,
-                                   wall->drum_part == DM_PART_LIFTER ? DEMILL_SPECTRUM_LIFTER
-                                                                     : DEMILL_SPECTRUM_SHELL,
-                                   h[HSL]);
-            for (int c = 0; c < HS; c++)
-                h[c] = 0.0;
-            on[k] = 0;
-        }
-        const uint32_t lanes = dm_chunk_load(HSL, 1, w, b, &ch, m);
-        for (uint32_t s = 0; s < lanes; s++) {
-            const uint32_t k = ch.k[s], i = b->i[k];
-            const dm_wall *wall = &w->walls[b->j[k]];
-            double hin[DM_MAX_HIST], hout[DM_MAX_HIST];
-            for (int c = 0; c < HSL; c++)
-                hin[c] = ch.h[c][s];
-            dm_kin q;
-            dm_pw_kin(D, SPIN, RL, P, vp, wp, g, g0 + k, i, wall, &q);
-            dm_law_out o;
-            dm_law(D, NL, DL, TL, RL, &tab[ch.pp[s]], q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar,
-                   q.mstar, dt_hist, reach, hin, hout, &o);
-            dm_chunk_store(D, HSL, &ch, s, &q, &o, hout);
-        }
-        for (uint32_t s = 0; s < m; s++) {
-            const uint32_t k = ch.k[s], i = b->i[k], gk = g0 + k;
-            dm_wall *wall = &w->walls[b->j[k]];
-            double fw[3] = {0.0, 0.0, 0.0}, arm[3] = {0.0, 0.0, 0.0};
-            for (int c = 0; c < D; c++) {
-                fw[c] = ch.f[c][s];
-                f[D * i + c] -= fw[c];
-                wall->force[c] += fw[c];
-                arm[c] = g->cp[D * gk + c] - wall->c[c];
-            }
-            /* torque on the wall about its centre: arm × F, plus the rolling
-             * torque (the law's torque on b) */
-            wall->torque[0] += arm[1] * fw[2] - arm[2] * fw[1];
-            wall->torque[1] += arm[2] * fw[0] - arm[0] * fw[2];
-            wall->torque[2] += arm[0] * fw[1] - arm[1] * fw[0];
-            if (SPIN || RL)
-                for (int c = 0; c < W; c++)
-                    tq[W * i + c] += ch.ta[c][s];
-            if (RL)
-                for (int c = 0; c < W; c++)
-                    wall->torque[D == 3 ? c : 2] += ch.tb[c][s];
-            const double lost =
-                dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
-            if (tally) {
-                /* power the wall delivers: -F·v_wall(contact) - M_b·Ω_wall */
-                double pw = 0.0;
-                for (int c = 0; c < D; c++)
-                    pw -= fw[c] * g->vw[D * gk + c];
-                if (RL)
-                    for (int c = 0; c < W; c++)
-                        pw -= ch.tb[c][s] * wall->omega[D == 3 ? c : 2];
-                t.wall_work += pw * dt_hist;
-                wall->dissipated += lost;
-            }
-        }
-        contacts += m;
+    for (uint32_t k = k0; k < k1; k++) {
+        double d[3], r2;
+        ch.touch[k - k0] = (uint32_t)dm_pp_touch(D, P, bi[k], bj[k], d, &r2);
     }
-    a->contacts = contacts;
-    if (tally)
-        dm_tally_add(a->t, &t);
+    uint32_t m = 0, listed = 0;
+    uint32_t *restrict list = w->res.list + b->base + k0;
+    for (uint32_t k = k0; k < k1; k++) {
+        const uint32_t touch = ch.touch[k - k0];
+        ch.k[m] = k;
+        m += touch;
+        list[listed] = k;
+        listed += touch;
+        if (touch | !on[k] | !advance)
+            continue;
+        /* the contact came apart during the step */
+        const uint32_t i = bi[k], j = bj[k];
+        double *h = hist + (size_t)HS * k;
+        if (EXIT) {
+            double d[3], r2, n[3];
+            dm_pp_touch(D, P, i, j, d, &r2);
+            const double dist = sqrt(r2);
+            const double fc = dm_exit_force(h + HSP, P->r[i] + P->r[j] - dist, reach,
+                                            &tab[mat[i] * nm + mat[j]]);
+            double vn = 0.0;
+            for (int c = 0; c < D; c++) {
+                n[c] = d[c] / dist;
+                vn += (vp[D * j + c] - vp[D * i + c]) * n[c];
+            }
+            dm_out_normal(D, out + (size_t)S * k, fc, n);
+            list[listed++] = k;
+            if (tally) {
+                t.diss_normal -= fc * vn * dt_hist;
+                if (EV)
+                    h[HSL] -= fc * vn * dt_hist;
+            }
+        }
+        if (EV && h[HSL] > 0.0)
+            dm_spectrum_record(w, i, j, -1, h[HSL]);
+        for (int c = 0; c < HS; c++)
+            h[c] = 0.0;
+        on[k] = 0;
+    }
+    const uint32_t lanes = dm_chunk_load(HSL, 0, w, b, &ch, m);
+    for (uint32_t s = 0; s < lanes; s++) {
+        const uint32_t k = ch.k[s], i = bi[k], j = bj[k];
+        double d[3], r2, hin[DM_MAX_HIST], hout[DM_MAX_HIST];
+        dm_pp_touch(D, P, i, j, d, &r2);
+        for (int c = 0; c < HSL; c++)
+            hin[c] = ch.h[c][s];
+        dm_kin q;
+        dm_pp_kin(D, SPIN, RL, P, vp, wp, i, j, d, r2, &q);
+        dm_law_out o;
+        dm_law(D, NL, DL, TL, RL, &tab[ch.pp[s]], q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar,
+               q.mstar, dt_hist, reach, hin, hout, &o);
+        dm_chunk_store(D, HSL, &ch, s, &q, &o, hout);
+    }
+    for (uint32_t s = 0; s < m; s++) {
+        const uint32_t k = ch.k[s];
+        dm_chunk_commit(D, HSL, EV, &ch, s, out + (size_t)S * k, hist + (size_t)HS * k, on + k,
+                        advance, tally, &t);
+    }
+    a->t = t;
+    a->contacts = m;
+    a->listed = listed;
+}
+
+/* Particle-wall chunk, over the geometry computed by dm_wgeom_update(). The
+ * walls' forces, torques and energies are summed afterwards (forces.c), from
+ * out and the geometry's lost. */
+DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
+                           dm_kernel_args *a)
+{
+    const int S = D + 2 * (D == 3 ? 3 : 1);
+    const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
+    const int EXIT = dm_law_exit(NL, DL);
+    const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
+    demill_world *w = a->w;
+    const dm_particles *P = &w->p;
+    const dm_bucket *b = a->b;
+    const int EV = w->events, HS = b->hs; /* HS = HSL + EV: the event slot is last */
+    const double *vp = a->vp, *wp = a->wp;
+    const uint16_t *restrict mat = w->p.mat;
+    const dm_pairparam *tab = w->ptab;
+    const uint32_t nm = w->nmat_tab, g0 = a->geom_offset, k0 = a->k0;
+    const uint32_t k1 = b->n - k0 < DM_CHUNK ? b->n : k0 + DM_CHUNK;
+    dm_wgeom *g = &w->wg;
+    double *restrict hist = b->hist, *restrict out = w->res.out + (size_t)S * b->base;
+    uint8_t *restrict on = b->on;
+    const double dt_hist = a->dt_hist, reach = a->reach;
+    const int tally = a->tally, advance = dt_hist > 0.0;
+    dm_tally t = {0};
+    dm_chunk ch;
+
+    uint32_t m = 0, listed = 0;
+    uint32_t *restrict list = w->res.list + b->base + k0;
+    for (uint32_t k = k0; k < k1; k++) {
+        const uint32_t gk = g0 + k;
+        const uint32_t touch = g->delta[gk] > 0.0;
+        ch.k[m] = k;
+        m += touch;
+        list[listed] = k;
+        listed += touch;
+        if (touch | !on[k] | !advance)
+            continue;
+        /* the contact came apart during the step */
+        const uint32_t i = b->i[k];
+        const dm_wall *wall = &w->walls[b->j[k]];
+        double *h = hist + (size_t)HS * k;
+        if (EXIT) {
+            const double *n = g->nrm + D * gk;
+            const double fc = dm_exit_force(h + HSP, g->delta[gk], reach,
+                                            &tab[mat[i] * nm + wall->material]);
+            double absorbed = 0.0;
+            for (int c = 0; c < D; c++)
+                absorbed += fc * n[c] * (vp[D * i + c] - g->vw[D * gk + c]);
+            dm_out_normal(D, out + (size_t)S * k, fc, n);
+            list[listed++] = k;
+            g->lost[gk] = absorbed * dt_hist;
+            if (tally) {
+                t.diss_normal += absorbed * dt_hist;
+                if (EV)
+                    h[HSL] += absorbed * dt_hist;
+            }
+        }
+        if (EV && h[HSL] > 0.0 && wall->drum_part)
+            dm_spectrum_record(w, i, 0,
+                               wall->drum_part == DM_PART_LIFTER ? DEMILL_SPECTRUM_LIFTER
+                                                                 : DEMILL_SPECTRUM_SHELL,
+                               h[HSL]);
+        for (int c = 0; c < HS; c++)
+            h[c] = 0.0;
+        on[k] = 0;
+    }
+    const uint32_t lanes = dm_chunk_load(HSL, 1, w, b, &ch, m);
+    for (uint32_t s = 0; s < lanes; s++) {
+        const uint32_t k = ch.k[s], i = b->i[k];
+        const dm_wall *wall = &w->walls[b->j[k]];
+        double hin[DM_MAX_HIST], hout[DM_MAX_HIST];
+        for (int c = 0; c < HSL; c++)
+            hin[c] = ch.h[c][s];
+        dm_kin q;
+        dm_pw_kin(D, SPIN, RL, P, vp, wp, g, g0 + k, i, wall, &q);
+        dm_law_out o;
+        dm_law(D, NL, DL, TL, RL, &tab[ch.pp[s]], q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar,
+               q.mstar, dt_hist, reach, hin, hout, &o);
+        dm_chunk_store(D, HSL, &ch, s, &q, &o, hout);
+    }
+    for (uint32_t s = 0; s < m; s++) {
+        const uint32_t k = ch.k[s];
+        g->lost[g0 + k] = dm_chunk_commit(D, HSL, EV, &ch, s, out + (size_t)S * k,
+                                          hist + (size_t)HS * k, on + k, advance, tally, &t);
+    }
+    a->t = t;
+    a->contacts = m;
+    a->listed = listed;
 }
 
 #define DM_DEFINE_KERNELS(D, NL, DL, TL, RL)                                                     \
     DM_VECTOR_CLONES static void dm_pp_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
-        dm_pp_loop(D, NL, DL, TL, RL, a);                                                         \
+        dm_pp_chunk(D, NL, DL, TL, RL, a);                                                        \
     }                                                                                             \
     DM_VECTOR_CLONES static void dm_pw_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
-        dm_pw_loop(D, NL, DL, TL, RL, a);                                                         \
+        dm_pw_chunk(D, NL, DL, TL, RL, a);                                                        \
     }
 #define DM_PP_ENTRY(D, NL, DL, TL, RL) dm_pp_##D##_##NL##_##DL##_##TL##_##RL,
 #define DM_PW_ENTRY(D, NL, DL, TL, RL) dm_pw_##D##_##NL##_##DL##_##TL##_##RL,

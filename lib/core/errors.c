@@ -20,6 +20,7 @@ DEMILL_API const char *demill_strerror(demill_status code)
     case DEMILL_ERR_READ_ONLY: return "the parameter or field is read-only";
     case DEMILL_ERR_DIMENSION: return "the value is not allowed in a world of this dimension";
     case DEMILL_ERR_VERSION: return "the library version is not compatible with the headers";
+    case DEMILL_ERR_UNSUPPORTED: return "the library was built without what this needs";
     default: return "unknown status code";
     }
 }

@@ -60,6 +60,13 @@ typedef struct dm_laws {
 #define DM_VECTOR_CLONES
 #endif
 
+/* OpenMP directives, when built with OpenMP. */
+#ifdef _OPENMP
+#define DM_OMP(directive) _Pragma(directive)
+#else
+#define DM_OMP(directive)
+#endif
+
 #define DM_KERNELS (2 * 3 * 4 * 2)
 #define DM_MAX_HIST 7 /* history doubles per contact, at most (contact/law.h + event slot) */
 int dm_kernel_index(dm_laws laws);
@@ -144,6 +151,9 @@ typedef struct dm_bucket {
     uint32_t *i, *j;         /* for walls: i = particle, j = wall slot */
     double *hist;            /* zeros unless on */
     uint8_t *on;             /* 1: touching at the last step */
+    uint32_t base;           /* pair id of the first pair (see dm_results) */
+    uint32_t chunk0;         /* index of its first chunk */
+    uint32_t span;           /* largest j - i of its particle pairs */
 } dm_bucket;
 
 typedef struct dm_clist {
@@ -173,12 +183,39 @@ typedef struct dm_wgeom {
     double *delta; /* overlap (<= 0: no contact) */
     double *vw;    /* D: wall velocity at the contact point */
     double *cp;    /* D: contact point */
+    double *lost;  /* energy dissipated in the contact over the step (tally) */
 } dm_wgeom;
 
-/* ---- energy tallies ------------------------------------------------------ */
+/* Energy tallies: dissipation by mechanism and work done by walls. */
 typedef struct dm_tally {
     double diss_normal, diss_tangential, diss_friction, diss_rolling, wall_work;
 } dm_tally;
+
+/* A chunk of candidates that one kernel call works through (forces.c). */
+typedef struct dm_chunkref {
+    uint32_t k0;     /* first candidate */
+    uint16_t kernel; /* bucket */
+    uint16_t walls;  /* 1: of the particle-wall lists */
+} dm_chunkref;
+
+/* The results of a force evaluation per pair, and what sums them. Pair ids
+ * number the particle-particle buckets in kernel order, then the
+ * particle-wall ones. The kernels store each pair's force and torques by
+ * pair id; then the particles' sums are taken in pair-id order, each thread
+ * summing for its own range of particles, so that no sum depends on how the
+ * work was shared among threads (forces.c). */
+typedef struct dm_results {
+    uint32_t n, npp, cap;   /* pairs, of them particle-particle, room */
+    double *out;            /* S = D + 2W per pair: force on b, torques on a and on b */
+    uint32_t *list;         /* per chunk, from its first pair's id: its pairs with a
+                               result in out (indices in the bucket, in order) */
+    dm_chunkref *chunks;    /* in pair-id order */
+    dm_tally *chunk_tally;  /* per chunk: dissipation, */
+    uint32_t *chunk_contacts; /* pairs in contact, */
+    uint32_t *chunk_listed;   /* and pairs in its list */
+    uint32_t nchunks, cap_chunks;
+    bool valid;             /* matches the lists */
+} dm_results;
 
 /* ---- the mill (mill/) ------------------------------------------------------ */
 #define DM_MAX_LIFTERS 64
@@ -251,6 +288,7 @@ struct demill_world {
     double skin_fraction;
     double disc_thickness;
     int energy_tracking;
+    int threads;            /* threads the loops run on (world.threads) */
     char error[512];
 
     /* materials */
@@ -280,6 +318,7 @@ struct demill_world {
 
     /* contacts */
     dm_clist pp, pw;
+    dm_results res;
     dm_wgeom wg;
     dm_grid grid;
     bool nlist_valid;        /* pair lists match the particles and walls */
@@ -345,6 +384,12 @@ demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
 demill_id dm_material_id(const demill_world *w, uint32_t material);
 demill_id dm_drum_id(const demill_world *w);
 
+/* threads.c */
+#define DM_MAX_THREADS 1024
+typedef void (*dm_range_fn)(demill_world *w, void *arg, int t, uint32_t begin, uint32_t end);
+int dm_threads_available(int requested);
+int dm_parallel(demill_world *w, uint32_t n, dm_range_fn fn, void *arg);
+
 /* params.c */
 demill_status dm_check_value(demill_world *w, int32_t key, double value);
 
@@ -383,7 +428,12 @@ double dm_wall_closest(const dm_wall *wall, const double *x, int dim, double *no
 double dm_walls_max_shift(const demill_world *w);
 void dm_walls_mark_built(demill_world *w);
 
-/* contact/kernels.c */
+/* contact/results.c */
+int dm_results_reserve(demill_world *w);
+void dm_results_layout(demill_world *w);
+void dm_results_free(demill_world *w);
+
+/* contact/forces.c */
 void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
                int tally);
 typedef struct dm_contact_eval {

@@ -26,6 +26,7 @@ static const param_info params[] = {
     {DEMILL_WORLD_DISC_THICKNESS, "world.disc_thickness", "m", 0, 1e6, 0, 0},
     {DEMILL_WORLD_ENERGY_TRACKING, "world.energy_tracking", "bool", 0, 1, 1, WHOLE},
     {DEMILL_WORLD_TIME, "world.time", "s", -1e300, 1e300, 0, 0},
+    {DEMILL_WORLD_THREADS, "world.threads", "1", 0, 1024, 1, WHOLE},
     {DEMILL_WORLD_DIMENSION, "world.dimension", "1", 2, 3, 3, WHOLE | READ_ONLY},
     {DEMILL_WORLD_STEP_COUNT, "world.step_count", "1", 0, 1.8e19, 0, WHOLE | READ_ONLY},
     {DEMILL_WORLD_PARTICLE_COUNT, "world.particle_count", "1", 0, 4.3e9, 0, WHOLE | READ_ONLY},

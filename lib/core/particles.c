@@ -306,6 +306,7 @@ DEMILL_API demill_status demill_particles_remove(demill_world *w, size_t n, cons
     P->n = m;
     clist_remap(&w->pp, map, 0);
     clist_remap(&w->pw, map, 1);
+    w->res.valid = false;
     w->ptab_dirty = true;
     w->forces_valid = false;
     dm_clear_error(w);

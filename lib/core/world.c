@@ -37,6 +37,7 @@ DEMILL_API demill_status demill_world_create(int32_t dimension, demill_world **o
     w->integrator = (int)param_default(DEMILL_WORLD_INTEGRATOR);
     w->skin_fraction = param_default(DEMILL_WORLD_SKIN);
     w->energy_tracking = (int)param_default(DEMILL_WORLD_ENERGY_TRACKING);
+    w->threads = (int)param_default(DEMILL_WORLD_THREADS);
     w->ptab_dirty = true;
     dm_clist_clear(w);
     *out = w;
@@ -49,6 +50,7 @@ DEMILL_API void demill_world_destroy(demill_world *w)
         return;
     dm_particles_free(w);
     dm_nlist_free(w);
+    dm_results_free(w);
     dm_spectrum_free(w);
     dm_handles_free(&w->wh);
     free(w->walls);
@@ -56,6 +58,17 @@ DEMILL_API void demill_world_destroy(demill_world *w)
     free(w->ptab);
     w->magic = 0;
     free(w);
+}
+
+/* The threads the loops run on: n, or OpenMP's default for 0. */
+static demill_status set_threads(demill_world *w, int n)
+{
+    const int t = dm_threads_available(n);
+    if (!t)
+        return dm_fail(w, DEMILL_ERR_UNSUPPORTED,
+                       "world.threads = %d: the library was built without OpenMP", n);
+    w->threads = t < DM_MAX_THREADS ? t : DM_MAX_THREADS;
+    return DEMILL_OK;
 }
 
 DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double value)
@@ -91,6 +104,11 @@ DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double v
         }
         break;
     case DEMILL_WORLD_ENERGY_TRACKING: w->energy_tracking = (int)value; break;
+    case DEMILL_WORLD_THREADS: /* changes no result */
+        if ((s = set_threads(w, (int)value)))
+            return s;
+        dm_clear_error(w);
+        return DEMILL_OK;
     case DEMILL_WORLD_TIME:
         dm_walls_retime(w, value);
         w->drum.t_set += value - w->time; /* the drum keeps its angle and speed */
@@ -121,6 +139,7 @@ DEMILL_API demill_status demill_world_get(const demill_world *cw, int32_t key, d
     case DEMILL_WORLD_DISC_THICKNESS: *value = w->disc_thickness; break;
     case DEMILL_WORLD_ENERGY_TRACKING: *value = w->energy_tracking; break;
     case DEMILL_WORLD_TIME: *value = w->time; break;
+    case DEMILL_WORLD_THREADS: *value = w->threads; break;
     case DEMILL_WORLD_DIMENSION: *value = w->dim; break;
     case DEMILL_WORLD_STEP_COUNT: *value = (double)w->steps; break;
     case DEMILL_WORLD_PARTICLE_COUNT: *value = w->p.n; break;

@@ -275,10 +275,10 @@ int dm_wgeom_reserve(demill_world *w)
         return 0;
     size_t cap = dm_grown_capacity(g->cap, total);
     void **const arrays[] = {(void **)&g->nrm, (void **)&g->vw, (void **)&g->cp,
-                             (void **)&g->delta};
+                             (void **)&g->delta, (void **)&g->lost};
     const size_t sizes[] = {3 * sizeof(double), 3 * sizeof(double), 3 * sizeof(double),
-                            sizeof(double)};
-    if (dm_grow_arrays(arrays, sizes, 4, cap))
+                            sizeof(double), sizeof(double)};
+    if (dm_grow_arrays(arrays, sizes, 5, cap))
         return -1;
     g->cap = (uint32_t)cap;
     return 0;
@@ -289,19 +289,26 @@ int dm_wgeom_reserve(demill_world *w)
 void dm_wgeom_update(demill_world *w)
 {
     dm_wgeom *g = &w->wg;
-    const int D = w->dim;
+    const int D = w->dim, T = w->threads;
     const dm_particles *P = &w->p;
-    uint32_t gk = 0;
+    uint32_t g0[DM_KERNELS], gk = 0;
+    for (int k = 0; k < DM_KERNELS; k++) {
+        g0[k] = gk;
+        gk += w->pw.b[k].n;
+    }
+    (void)T;
+    DM_OMP("omp parallel num_threads(T) if (T > 1 && gk > 1024)")
     for (int k = 0; k < DM_KERNELS; k++) {
         const dm_bucket *b = &w->pw.b[k];
-        for (uint32_t p = 0; p < b->n; p++, gk++) {
-            const uint32_t i = b->i[p];
+        DM_OMP("omp for schedule(static) nowait")
+        for (uint32_t p = 0; p < b->n; p++) {
+            const uint32_t i = b->i[p], q = g0[k] + p;
             const dm_wall *wall = &w->walls[b->j[p]];
             const double *x = P->x + D * i;
             double n[3];
             const double delta = P->r[i] - dm_wall_closest(wall, x, D, n);
-            double *nrm = g->nrm + D * gk, *cp = g->cp + D * gk, *vw = g->vw + D * gk;
-            g->delta[gk] = delta;
+            double *nrm = g->nrm + D * q, *cp = g->cp + D * q, *vw = g->vw + D * q;
+            g->delta[q] = delta;
             double arm = P->r[i] - 0.5 * delta, rel[3] = {0.0, 0.0, 0.0};
             for (int c = 0; c < D; c++) {
                 nrm[c] = n[c];

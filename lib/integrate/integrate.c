@@ -32,26 +32,35 @@ DM_INLINE double from_bits(uint64_t u)
     return d;
 }
 
+/* What the loops below need, and what they return per range (dm_parallel):
+ * the largest squared displacement since the last neighbour build, as bits. */
+typedef struct step_args {
+    double dt, h, hth;
+    int kick, predict;
+    uint64_t worst[DM_MAX_THREADS];
+} step_args;
+
 /* Velocity Verlet's first half, after the second half of the step before
  * when kick is set (the forces have not changed in between): v += dt/2 a;
  * then vp = v + dt a (the end-of-step velocity the dashpots see), v += dt/2 a,
- * x += dt v. Returns the largest squared displacement since the last
- * neighbour build. */
-DM_INLINE double verlet_drift(const int D, dm_particles *P, double dt, const int kick)
+ * x += dt v. */
+DM_INLINE void verlet_drift(const int D, dm_particles *P, const step_args *a, uint32_t i0,
+                            uint32_t i1, uint64_t *worst_out)
 {
     double *restrict x = P->x, *restrict v = P->v, *restrict vp = P->vp;
     const double *restrict f = P->f, *restrict im = P->im, *restrict x0 = P->x0;
-    const double h = 0.5 * dt;
+    const double dt = a->dt, h = a->h;
+    const int kick = a->kick;
     uint64_t worst = 0;
-    for (uint32_t i = 0; i < P->n; i++) {
+    for (uint32_t i = i0; i < i1; i++) {
         double d2 = 0.0;
         for (int c = 0; c < D; c++) {
-            const double a = f[D * i + c] * im[i];
+            const double acc = f[D * i + c] * im[i];
             double vc = v[D * i + c];
             if (kick)
-                vc += h * a;
-            vp[D * i + c] = vc + dt * a;
-            vc += h * a;
+                vc += h * acc;
+            vp[D * i + c] = vc + dt * acc;
+            vc += h * acc;
             v[D * i + c] = vc;
             x[D * i + c] += dt * vc;
             const double d = x[D * i + c] - x0[D * i + c];
@@ -59,16 +68,18 @@ DM_INLINE double verlet_drift(const int D, dm_particles *P, double dt, const int
         }
         worst = max_bits(worst, d2);
     }
-    return from_bits(worst);
+    *worst_out = worst;
 }
 
-/* Symplectic Euler: v += dt a, x += dt v. Returns as verlet_drift(). */
-DM_INLINE double euler_drift(const int D, dm_particles *P, double dt)
+/* Symplectic Euler: v += dt a, x += dt v. */
+DM_INLINE void euler_drift(const int D, dm_particles *P, const step_args *a, uint32_t i0,
+                           uint32_t i1, uint64_t *worst_out)
 {
     double *restrict x = P->x, *restrict v = P->v;
     const double *restrict f = P->f, *restrict im = P->im, *restrict x0 = P->x0;
+    const double dt = a->dt;
     uint64_t worst = 0;
-    for (uint32_t i = 0; i < P->n; i++) {
+    for (uint32_t i = i0; i < i1; i++) {
         double d2 = 0.0;
         for (int c = 0; c < D; c++) {
             v[D * i + c] += dt * f[D * i + c] * im[i];
@@ -78,15 +89,16 @@ DM_INLINE double euler_drift(const int D, dm_particles *P, double dt)
         }
         worst = max_bits(worst, d2);
     }
-    return from_bits(worst);
+    *worst_out = worst;
 }
 
 /* Velocity Verlet's second half: v += h a. */
-DM_INLINE void kick(const int D, dm_particles *P, double h)
+DM_INLINE void kick(const int D, dm_particles *P, const step_args *a, uint32_t i0, uint32_t i1)
 {
     double *restrict v = P->v;
     const double *restrict f = P->f, *restrict im = P->im;
-    for (uint32_t i = 0; i < P->n; i++)
+    const double h = a->h;
+    for (uint32_t i = i0; i < i1; i++)
         for (int c = 0; c < D; c++)
             v[D * i + c] += h * (f[D * i + c] * im[i]);
 }
@@ -94,13 +106,14 @@ DM_INLINE void kick(const int D, dm_particles *P, double h)
 /* The rotational half steps: with kick, first ω += h α (the second half of
  * the step before); with predict, wp = ω + 2h α; then ω += h α, and in 2D
  * θ += hth ω. */
-DM_INLINE void spin(const int D, dm_particles *P, double h, const int kick, const int predict,
-                    double hth)
+DM_INLINE void spin(const int D, dm_particles *P, const step_args *a, uint32_t i0, uint32_t i1)
 {
     const int W = D == 3 ? 3 : 1;
-    double *restrict om = P->w, *restrict wp = P->wp;
+    double *restrict om = P->w, *restrict wp = P->wp, *restrict theta = P->theta;
     const double *restrict t = P->t, *restrict ii = P->iinv;
-    for (uint32_t i = 0; i < P->n; i++)
+    const double h = a->h, hth = a->hth;
+    const int kick = a->kick, predict = a->predict;
+    for (uint32_t i = i0; i < i1; i++) {
         for (int c = 0; c < W; c++) {
             const double al = t[W * i + c] * ii[i];
             double o = om[W * i + c];
@@ -110,9 +123,48 @@ DM_INLINE void spin(const int D, dm_particles *P, double h, const int kick, cons
                 wp[W * i + c] = o + 2.0 * h * al;
             om[W * i + c] = o + h * al;
         }
-    if (D == 2 && hth != 0.0)
-        for (uint32_t i = 0; i < P->n; i++)
-            P->theta[i] += hth * om[i];
+        if (D == 2)
+            theta[i] += hth * om[i];
+    }
+}
+
+/* The loops for each dimension, as dm_parallel() ranges. */
+#define DM_STEP_LOOPS(D)                                                                          \
+    DM_VECTOR_CLONES static void verlet_drift##D(demill_world *w, void *a, int t, uint32_t i0,    \
+                                                 uint32_t i1)                                     \
+    {                                                                                             \
+        step_args *s = a;                                                                         \
+        verlet_drift(D, &w->p, s, i0, i1, &s->worst[t]);                                          \
+    }                                                                                             \
+    DM_VECTOR_CLONES static void euler_drift##D(demill_world *w, void *a, int t, uint32_t i0,     \
+                                                uint32_t i1)                                      \
+    {                                                                                             \
+        step_args *s = a;                                                                         \
+        euler_drift(D, &w->p, s, i0, i1, &s->worst[t]);                                           \
+    }                                                                                             \
+    DM_VECTOR_CLONES static void kick##D(demill_world *w, void *a, int t, uint32_t i0,            \
+                                         uint32_t i1)                                             \
+    {                                                                                             \
+        (void)t;                                                                                  \
+        kick(D, &w->p, a, i0, i1);                                                                \
+    }                                                                                             \
+    DM_VECTOR_CLONES static void spin##D(demill_world *w, void *a, int t, uint32_t i0,            \
+                                         uint32_t i1)                                             \
+    {                                                                                             \
+        (void)t;                                                                                  \
+        spin(D, &w->p, a, i0, i1);                                                                \
+    }
+DM_STEP_LOOPS(2)
+DM_STEP_LOOPS(3)
+
+/* Runs a drift loop; returns the largest squared displacement. */
+static double drift(demill_world *w, dm_range_fn fn, step_args *a)
+{
+    const int ranges = dm_parallel(w, w->p.n, fn, a);
+    uint64_t worst = 0;
+    for (int t = 0; t < ranges; t++)
+        worst = a->worst[t] > worst ? a->worst[t] : worst;
+    return from_bits(worst);
 }
 
 /* The end of every step: the clock, the walls, the lists and the forces of
@@ -135,38 +187,39 @@ static demill_status finish_step(demill_world *w, double max_disp2, const double
 
 /* Velocity Verlet; within one call the second half of each step is done
  * together with the first half of the next. */
-DM_INLINE demill_status verlet(const int D, demill_world *w, uint64_t steps)
+static demill_status verlet(demill_world *w, uint64_t steps)
 {
+    const int d3 = w->dim == 3;
     dm_particles *P = &w->p;
-    const double dt = w->dt, h = 0.5 * dt;
+    step_args a = {.dt = w->dt, .h = 0.5 * w->dt, .hth = w->dt, .predict = 1};
     if (!steps)
         return DEMILL_OK;
     for (uint64_t s = 0; s < steps; s++) {
-        const double d2 = s ? verlet_drift(D, P, dt, 1) : verlet_drift(D, P, dt, 0);
-        if (w->rotation) {
-            if (s)
-                spin(D, P, h, 1, 1, dt);
-            else
-                spin(D, P, h, 0, 1, dt);
-        }
+        a.kick = s > 0;
+        const double d2 = drift(w, d3 ? verlet_drift3 : verlet_drift2, &a);
+        if (w->rotation)
+            dm_parallel(w, P->n, d3 ? spin3 : spin2, &a);
         demill_status st = finish_step(w, d2, P->vp, P->wp, 0.5);
         if (st)
             return st;
     }
-    kick(D, P, h);
+    a.kick = a.predict = 0;
+    a.hth = 0.0;
+    dm_parallel(w, P->n, d3 ? kick3 : kick2, &a);
     if (w->rotation)
-        spin(D, P, h, 0, 0, 0.0);
+        dm_parallel(w, P->n, d3 ? spin3 : spin2, &a);
     return DEMILL_OK;
 }
 
-DM_INLINE demill_status euler(const int D, demill_world *w, uint64_t steps)
+static demill_status euler(demill_world *w, uint64_t steps)
 {
+    const int d3 = w->dim == 3;
     dm_particles *P = &w->p;
+    step_args a = {.dt = w->dt, .h = w->dt, .hth = w->dt};
     for (uint64_t s = 0; s < steps; s++) {
-        const double dt = w->dt;
-        double d2 = euler_drift(D, P, dt);
+        const double d2 = drift(w, d3 ? euler_drift3 : euler_drift2, &a);
         if (w->rotation)
-            spin(D, P, dt, 0, 0, dt);
+            dm_parallel(w, P->n, d3 ? spin3 : spin2, &a);
         demill_status st = finish_step(w, d2, P->v, P->w, 1.0);
         if (st)
             return st;
@@ -188,17 +241,10 @@ demill_status dm_prepare_step(demill_world *w)
     return DEMILL_OK;
 }
 
-/* (static: a cloned function with external linkage would be exported) */
-DM_VECTOR_CLONES static demill_status integrate(demill_world *w, uint64_t steps)
-{
-    if (w->integrator == DEMILL_INTEGRATOR_SYMPLECTIC_EULER)
-        return w->dim == 3 ? euler(3, w, steps) : euler(2, w, steps);
-    return w->dim == 3 ? verlet(3, w, steps) : verlet(2, w, steps);
-}
-
 demill_status dm_integrate(demill_world *w, uint64_t steps)
 {
-    return integrate(w, steps);
+    return w->integrator == DEMILL_INTEGRATOR_SYMPLECTIC_EULER ? euler(w, steps)
+                                                               : verlet(w, steps);
 }
 
 DEMILL_API demill_status demill_world_step(demill_world *w, uint64_t steps)

@@ -577,7 +577,7 @@ static void both_dims(scene_fn setup, scene_fn bad, scene_fn fix)
 static void bad_world_set(scene *sc)
 {
     demill_world *w = sc->w;
-    for (int32_t key = 100; key <= 108; key++) {
+    for (int32_t key = 100; key <= 109; key++) {
         const char *name = demill_param_name(key);
         ck_assert_ptr_nonnull(name);
         /* NaN is also a nonzero gravity z in 2D, and disc thickness is 2D only */
@@ -603,6 +603,8 @@ static void bad_world_set(scene *sc)
         {DEMILL_WORLD_SKIN, 0.009},           {DEMILL_WORLD_SKIN, 10.5},
         {DEMILL_WORLD_ENERGY_TRACKING, 2},    {DEMILL_WORLD_ENERGY_TRACKING, -1},
         {DEMILL_WORLD_ENERGY_TRACKING, 0.5},
+        {DEMILL_WORLD_THREADS, -1},           {DEMILL_WORLD_THREADS, 1.5},
+        {DEMILL_WORLD_THREADS, 1025},
     };
     for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
         ctx(sc, "world_set key %d = %g", (int)invalid[k].key, invalid[k].v);
@@ -623,13 +625,22 @@ static void bad_world_set(scene *sc)
         BAD(sc, DEMILL_ERR_DIMENSION, demill_world_set(w, DEMILL_WORLD_DISC_THICKNESS, 0.01),
             "world.disc_thickness");
     }
+    /* more than one thread needs OpenMP; the failed setting changes nothing */
+    ctx(sc, "world.threads = 2");
+    demill_status st = demill_world_set(w, DEMILL_WORLD_THREADS, 2);
+    ck_assert_msg(st == DEMILL_OK || st == DEMILL_ERR_UNSUPPORTED, "world.threads = 2: %s",
+                  demill_strerror(st));
+    double threads;
+    DM_OK(w, demill_world_get(w, DEMILL_WORLD_THREADS, &threads));
+    ck_assert_double_eq(threads, st == DEMILL_OK ? 2 : 1);
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_THREADS, 1));
     static const double integrators[] = {0, 3, 7, -1, 1000};
     for (size_t k = 0; k < sizeof integrators / sizeof integrators[0]; k++) {
         ctx(sc, "integrator %g", integrators[k]);
         BAD(sc, DEMILL_ERR_UNKNOWN_KEY,
             demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrators[k]), "world.integrator");
     }
-    static const int32_t unknown[] = {0,   1,   99,  109, 120,  149, 156, 199,
+    static const int32_t unknown[] = {0,   1,   99,  110, 120,  149, 156, 199,
                                       200, 250, 300, 399, -1, 2147483647, -2147483647 - 1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
@@ -651,7 +662,7 @@ static void bad_world_set(scene *sc)
                 demill_param_name(key), "read");
         }
     }
-    for (int32_t key = 100; key <= 155; key += (key == 108 ? 42 : 1)) {
+    for (int32_t key = 100; key <= 155; key += (key == 109 ? 41 : 1)) {
         ctx(sc, "world_get key %d into NULL", (int)key);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_world_get(w, key, NULL), "NULL");
     }
