@@ -10,24 +10,18 @@
 
 #include "../core/internal.h"
 
-static int bucket_push(dm_bucket *b, uint32_t i, uint32_t j)
+/* Makes room for n pairs in a bucket. */
+static int bucket_reserve(dm_bucket *b, uint32_t n)
 {
-    if (b->n == b->cap) {
-        size_t cap = dm_grown_capacity(b->cap, (size_t)b->n + 1);
-        void **const arrays[] = {(void **)&b->i, (void **)&b->j, (void **)&b->on,
-                                 (void **)&b->hist};
-        const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint8_t),
-                                (size_t)b->hs * sizeof(double)};
-        if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, b->hs ? 4 : 3, cap))
-            return -1;
-        b->cap = (uint32_t)cap;
-    }
-    b->i[b->n] = i;
-    b->j[b->n] = j;
-    b->on[b->n] = 0;
-    for (int c = 0; c < b->hs; c++)
-        b->hist[(size_t)b->hs * b->n + c] = 0.0;
-    b->n++;
+    if (n <= b->cap)
+        return 0;
+    size_t cap = dm_grown_capacity(b->cap, n);
+    void **const arrays[] = {(void **)&b->i, (void **)&b->j, (void **)&b->on, (void **)&b->hist};
+    const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint8_t),
+                            (size_t)b->hs * sizeof(double)};
+    if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, b->hs ? 4 : 3, cap))
+        return -1;
+    b->cap = (uint32_t)cap;
     return 0;
 }
 
@@ -102,6 +96,12 @@ void dm_nlist_free(demill_world *w)
     free(g->cj);
     free(g->ck);
     free(g->ch);
+    for (int t = 0; t < g->npb; t++) {
+        free(g->pb[t].i);
+        free(g->pb[t].j);
+        free(g->pb[t].k);
+    }
+    free(g->pb);
     free(w->wg.nrm);
     free(w->wg.delta);
     free(w->wg.vw);
@@ -218,9 +218,26 @@ static const int stencil_rows[5][2] = {{0, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
 
 #define SCAN_BLOCK 64
 
-/* Lists the pairs of particle i with particles j0..j1-1 that are within
- * reach, in the bucket of their kernel. */
-static int scan_row(demill_world *w, uint32_t i, uint32_t j0, uint32_t j1)
+static void pairbuf_push(dm_pairbuf *pb, uint32_t i, uint32_t j, int k)
+{
+    if (pb->n == pb->cap) {
+        size_t cap = dm_grown_capacity(pb->cap, (size_t)pb->n + 1);
+        void **const arrays[] = {(void **)&pb->i, (void **)&pb->j, (void **)&pb->k};
+        const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint8_t)};
+        if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 3, cap)) {
+            pb->failed = true;
+            return;
+        }
+        pb->cap = (uint32_t)cap;
+    }
+    pb->i[pb->n] = i;
+    pb->j[pb->n] = j;
+    pb->k[pb->n++] = (uint8_t)k;
+    pb->next[k]++;
+}
+
+/* Lists the pairs of particle i with particles j0..j1-1 that are within reach. */
+static void scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t j0, uint32_t j1)
 {
     const int D = w->dim;
     const dm_particles *P = &w->p;
@@ -243,42 +260,138 @@ static int scan_row(demill_world *w, uint32_t i, uint32_t j0, uint32_t j1)
         }
         for (uint32_t q = 0; q < m; q++) {
             const int kern = row[P->mat[near[q]]].kernel;
-            if (kern >= 0 && bucket_push(&w->pp.b[kern], i, near[q]))
-                return -1;
+            if (kern >= 0)
+                pairbuf_push(pb, i, near[q], kern);
         }
     }
-    return 0;
 }
 
-/* Every pair within reach, once (i < j), in cell order. */
+typedef struct search_args {
+    int64_t nc[3];
+    uint64_t ncells;
+} search_args;
+
+/* The first cell whose particles start at or after storage index p. */
+static uint64_t first_cell(const uint32_t *start, uint64_t ncells, uint32_t p)
+{
+    uint64_t lo = 0, hi = ncells;
+    while (lo < hi) {
+        const uint64_t mid = lo + (hi - lo) / 2;
+        if (start[mid] < p)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Range t of the search: the cells whose first particle lies in
+ * [begin, end), every pair of their particles with a particle of the same or
+ * a forward neighbour cell (i < j), then their particles' wall candidates.
+ * Pairs come out in increasing i, so the ranges joined in order list them as
+ * one range would. */
+static void search_range(demill_world *w, void *arg, int t, uint32_t begin, uint32_t end)
+{
+    const search_args *a = arg;
+    const int64_t *nc = a->nc;
+    const uint32_t *start = w->grid.cell_start;
+    dm_pairbuf *pb = &w->grid.pb[t];
+    pb->n = 0;
+    pb->failed = false;
+    memset(pb->next, 0, sizeof pb->next);
+    const int nrows = w->dim == 3 ? 5 : 2;
+    const uint64_t c0 = first_cell(start, a->ncells, begin);
+    uint64_t cell = c0;
+    for (; cell < a->ncells && start[cell] < end; cell++) {
+        const uint32_t b0 = start[cell], b1 = start[cell + 1];
+        if (b0 == b1)
+            continue;
+        const int64_t cx = (int64_t)(cell % (uint64_t)nc[0]);
+        const int64_t cy = (int64_t)(cell / (uint64_t)nc[0] % (uint64_t)nc[1]);
+        const int64_t cz = (int64_t)(cell / ((uint64_t)nc[0] * (uint64_t)nc[1]));
+        uint32_t lo[5], hi[5];
+        int nr = 0;
+        for (int q = 0; q < nrows; q++) {
+            const int64_t y = cy + stencil_rows[q][0], z = cz + stencil_rows[q][1];
+            if (y < 0 || y >= nc[1] || z >= nc[2])
+                continue;
+            const int64_t x0 = q == 0 || cx == 0 ? cx : cx - 1;
+            const int64_t x1 = cx + 1 < nc[0] ? cx + 1 : cx;
+            const uint64_t base = ((uint64_t)z * nc[1] + y) * nc[0];
+            lo[nr] = start[base + x0];
+            hi[nr++] = start[base + x1 + 1];
+        }
+        for (uint32_t i = b0; i < b1; i++)
+            for (int q = 0; q < nr; q++)
+                scan_row(w, pb, i, q ? lo[q] : i + 1, hi[q]);
+    }
+
+    const int D = w->dim;
+    const dm_particles *P = &w->p;
+    const dm_pairparam *tab = w->ptab;
+    const uint32_t nm = w->nmat_tab;
+    const double skin = w->skin;
+    for (uint32_t i = start[c0], i1 = start[cell]; i < i1; i++)
+        for (uint32_t k = 0; k < w->nwalls; k++) {
+            const dm_wall *wall = &w->walls[k];
+            if (!wall->kind || dm_wall_distance_bound(wall, P->x + D * i, D) >= P->r[i] + skin)
+                continue;
+            const int kern = tab[P->mat[i] * nm + wall->material].kernel;
+            if (kern >= 0)
+                pairbuf_push(pb, i, k, kern + DM_KERNELS);
+        }
+}
+
+/* Range t's pairs into the buckets, at the places the counts of the ranges
+ * before it leave free. */
+static void place_range(demill_world *w, void *arg, int t, uint32_t begin, uint32_t end)
+{
+    (void)arg, (void)begin, (void)end;
+    dm_pairbuf *pb = &w->grid.pb[t];
+    for (uint32_t q = 0; q < pb->n; q++) {
+        const int k = pb->k[q];
+        dm_bucket *b = k < DM_KERNELS ? &w->pp.b[k] : &w->pw.b[k - DM_KERNELS];
+        const uint32_t p = pb->next[k]++;
+        b->i[p] = pb->i[q];
+        b->j[p] = pb->j[q];
+        b->on[p] = 0;
+        for (int c = 0; c < b->hs; c++)
+            b->hist[(size_t)b->hs * p + c] = 0.0;
+    }
+}
+
+/* Every pair within reach, once (i < j for particle pairs), in the bucket of
+ * its kernel, in increasing i, for any number of threads. */
 static int pair_search(demill_world *w, const int64_t nc[3])
 {
-    const uint32_t *start = w->grid.cell_start;
-    const int nrows = w->dim == 3 ? 5 : 2;
-    for (int64_t cz = 0; cz < nc[2]; cz++)
-        for (int64_t cy = 0; cy < nc[1]; cy++)
-            for (int64_t cx = 0; cx < nc[0]; cx++) {
-                const uint64_t cell = ((uint64_t)cz * nc[1] + cy) * nc[0] + cx;
-                const uint32_t b0 = start[cell], b1 = start[cell + 1];
-                if (b0 == b1)
-                    continue;
-                uint32_t lo[5], hi[5];
-                int nr = 0;
-                for (int q = 0; q < nrows; q++) {
-                    const int64_t y = cy + stencil_rows[q][0], z = cz + stencil_rows[q][1];
-                    if (y < 0 || y >= nc[1] || z >= nc[2])
-                        continue;
-                    const int64_t x0 = q == 0 || cx == 0 ? cx : cx - 1;
-                    const int64_t x1 = cx + 1 < nc[0] ? cx + 1 : cx;
-                    const uint64_t base = ((uint64_t)z * nc[1] + y) * nc[0];
-                    lo[nr] = start[base + x0];
-                    hi[nr++] = start[base + x1 + 1];
-                }
-                for (uint32_t i = b0; i < b1; i++)
-                    for (int q = 0; q < nr; q++)
-                        if (scan_row(w, i, q ? lo[q] : i + 1, hi[q]))
-                            return -1;
-            }
+    dm_grid *g = &w->grid;
+    const int want = w->threads > 1 ? w->threads : 1;
+    if (want > g->npb) {
+        dm_pairbuf *pb = realloc(g->pb, (size_t)want * sizeof *pb);
+        if (!pb)
+            return -1;
+        memset(pb + g->npb, 0, (size_t)(want - g->npb) * sizeof *pb);
+        g->pb = pb;
+        g->npb = want;
+    }
+    search_args a = {{nc[0], nc[1], nc[2]}, (uint64_t)nc[0] * nc[1] * nc[2]};
+    const int ranges = dm_parallel(w, w->p.n, search_range, &a);
+    for (int t = 0; t < ranges; t++)
+        if (g->pb[t].failed)
+            return -1;
+    for (int k = 0; k < 2 * DM_KERNELS; k++) {
+        dm_bucket *b = k < DM_KERNELS ? &w->pp.b[k] : &w->pw.b[k - DM_KERNELS];
+        uint64_t total = 0;
+        for (int t = 0; t < ranges; t++) {
+            const uint32_t count = g->pb[t].next[k];
+            g->pb[t].next[k] = (uint32_t)total;
+            total += count;
+        }
+        if (total > UINT32_MAX || bucket_reserve(b, (uint32_t)total))
+            return -1;
+        b->n = (uint32_t)total;
+    }
+    dm_parallel(w, w->p.n, place_range, NULL);
     return 0;
 }
 
@@ -364,18 +477,6 @@ demill_status dm_nlist_build(demill_world *w)
     dm_clist_clear(w);
     if (pair_search(w, nc))
         goto oom;
-    const dm_pairparam *tab = w->ptab;
-    const uint32_t nm = w->nmat_tab;
-    const double skin = w->skin;
-    for (uint32_t i = 0; i < n; i++)
-        for (uint32_t k = 0; k < w->nwalls; k++) {
-            const dm_wall *wall = &w->walls[k];
-            if (!wall->kind || dm_wall_distance_bound(wall, P->x + D * i, D) >= P->r[i] + skin)
-                continue;
-            int kern = tab[P->mat[i] * nm + wall->material].kernel;
-            if (kern >= 0 && bucket_push(&w->pw.b[kern], i, k))
-                goto oom;
-        }
     if (dm_wgeom_reserve(w) || dm_results_reserve(w))
         goto oom;
     carry_restore(w);

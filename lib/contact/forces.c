@@ -144,6 +144,48 @@ DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_
     }
 }
 
+typedef struct chunk_args {
+    const double *vp, *wp;
+    double dt_hist, reach;
+    int tally;
+} chunk_args;
+
+/* The chunks whose first pair belongs to a particle of [begin, end): the
+ * ranges that sum the particles' forces next find most of their pairs' results
+ * in their own core's cache. */
+static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca,
+                              uint32_t begin, uint32_t end)
+{
+    dm_results *q = &w->res;
+    const dm_kernel_fn *ppk = D == 3 ? dm_pp_kernels3 : dm_pp_kernels2;
+    const dm_kernel_fn *pwk = D == 3 ? dm_pw_kernels3 : dm_pw_kernels2;
+    for (uint32_t c = 0; c < q->nchunks; c++) {
+        const dm_chunkref r = q->chunks[c];
+        if (r.i0 < begin || r.i0 >= end)
+            continue;
+        dm_bucket *b = r.walls ? &w->pw.b[r.kernel] : &w->pp.b[r.kernel];
+        dm_kernel_args a = {.w = w, .b = b, .k0 = r.k0, .geom_offset = b->base - q->npp,
+                            .vp = ca->vp, .wp = ca->wp, .dt_hist = ca->dt_hist,
+                            .reach = ca->reach, .tally = ca->tally};
+        (r.walls ? pwk : ppk)[r.kernel](&a);
+        q->chunk_tally[c] = a.t;
+        q->chunk_contacts[c] = a.contacts;
+        q->chunk_listed[c] = a.listed;
+    }
+}
+
+static void run_chunks2(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)
+{
+    (void)t;
+    run_chunks(2, w, a, begin, end);
+}
+
+static void run_chunks3(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)
+{
+    (void)t;
+    run_chunks(3, w, a, begin, end);
+}
+
 /* Evaluates all forces and torques at the current state. dt_hist > 0 advances
  * the contact histories by that time (a real step); tally adds the step's
  * dissipation and wall work to the world's energy account. vp, wp: the
@@ -154,27 +196,14 @@ DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_
 void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
                int tally)
 {
-    const int D = w->dim, T = w->threads;
+    const int D = w->dim;
     dm_results *q = &w->res;
     if (!q->valid)
         dm_results_layout(w);
     dm_wgeom_update(w);
-    const dm_kernel_fn *ppk = D == 3 ? dm_pp_kernels3 : dm_pp_kernels2;
-    const dm_kernel_fn *pwk = D == 3 ? dm_pw_kernels3 : dm_pw_kernels2;
+    chunk_args ca = {.vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach, .tally = tally};
+    dm_parallel(w, w->p.n, D == 3 ? run_chunks3 : run_chunks2, &ca);
     const uint32_t nchunks = q->nchunks;
-    (void)T;
-    DM_OMP("omp parallel for schedule(dynamic, 8) num_threads(T) if (T > 1)")
-    for (uint32_t c = 0; c < nchunks; c++) {
-        const dm_chunkref r = q->chunks[c];
-        dm_bucket *b = r.walls ? &w->pw.b[r.kernel] : &w->pp.b[r.kernel];
-        dm_kernel_args a = {.w = w, .b = b, .k0 = r.k0, .geom_offset = b->base - q->npp,
-                            .vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach,
-                            .tally = tally};
-        (r.walls ? pwk : ppk)[r.kernel](&a);
-        q->chunk_tally[c] = a.t;
-        q->chunk_contacts[c] = a.contacts;
-        q->chunk_listed[c] = a.listed;
-    }
     dm_tally t = {0};
     w->ncontacts = w->nwall_contacts = 0;
     for (uint32_t c = 0; c < nchunks; c++) {

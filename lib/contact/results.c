@@ -66,7 +66,7 @@ void dm_results_layout(demill_world *w)
                     b->span = b->j[p] - b->i[p];
             id += b->n;
             for (uint32_t k0 = 0; k0 < b->n; k0 += DM_CHUNK)
-                q->chunks[c++] = (dm_chunkref){k0, (uint16_t)k, (uint16_t)side};
+                q->chunks[c++] = (dm_chunkref){k0, (uint16_t)k, (uint16_t)side, b->i[k0]};
         }
     }
     q->n = id;

@@ -162,6 +162,16 @@ typedef struct dm_clist {
 
 /* Scratch of the neighbour build, kept between builds so that a build
  * allocates only when the world has grown. */
+/* The pairs one range of the neighbour search found, in the order found;
+ * k is the kernel, plus DM_KERNELS for particle-wall pairs. */
+typedef struct dm_pairbuf {
+    uint32_t *i, *j;
+    uint8_t *k;
+    uint32_t n, cap;
+    bool failed;                       /* out of memory */
+    uint32_t next[2 * DM_KERNELS];     /* count per kernel, then where the next goes */
+} dm_pairbuf;
+
 typedef struct dm_grid {
     uint32_t *cell_start;     /* ncells + 1 */
     size_t cap_cells;
@@ -174,6 +184,8 @@ typedef struct dm_grid {
     double *ch;               /* DM_MAX_HIST doubles each */
     uint32_t nc, ccap;
     double lo[3], hi[3];      /* particle bounding box at the last build */
+    struct dm_pairbuf *pb;    /* pairs found by each range of the search */
+    int npb;
 } dm_grid;
 
 /* Geometry of the particle-wall candidates for the law kernels. */
@@ -196,6 +208,7 @@ typedef struct dm_chunkref {
     uint32_t k0;     /* first candidate */
     uint16_t kernel; /* bucket */
     uint16_t walls;  /* 1: of the particle-wall lists */
+    uint32_t i0;     /* particle of the first candidate: the range that runs it */
 } dm_chunkref;
 
 /* The results of a force evaluation per pair, and what sums them. Pair ids
