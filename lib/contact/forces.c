@@ -34,12 +34,11 @@ int dm_kernel_hist_size(int kernel, int dim)
  * results of their pairs in pair-id order, which is the order of a walk
  * through the chunks' lists of pairs with results. The walk starts at the
  * first pair that can reach p0 (j - i is at most the bucket's span). */
-DM_INLINE void sum_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1)
+DM_INLINE void init_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1)
 {
-    const int W = D == 3 ? 3 : 1, S = D + 2 * W;
+    const int W = D == 3 ? 3 : 1;
     dm_particles *P = &w->p;
-    const dm_results *q = &w->res;
-    const double *restrict out = q->out, *restrict m = P->m;
+    const double *restrict m = P->m;
     double *restrict f = P->f, *restrict tq = P->t;
     const double g[3] = {w->g[0], w->g[1], w->g[2]};
     for (uint32_t i = p0; i < p1; i++) {
@@ -48,6 +47,16 @@ DM_INLINE void sum_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1
         for (int c = 0; c < W; c++)
             tq[W * i + c] = 0.0;
     }
+}
+
+DM_INLINE void sum_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1)
+{
+    const int W = D == 3 ? 3 : 1, S = D + 2 * W;
+    dm_particles *P = &w->p;
+    const dm_results *q = &w->res;
+    const double *restrict out = q->out;
+    double *restrict f = P->f, *restrict tq = P->t;
+    init_forces(D, w, p0, p1);
     for (int side = 0; side < 2; side++)
         for (int k = 0; k < DM_KERNELS; k++) {
             const dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
@@ -147,7 +156,7 @@ DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_
 typedef struct chunk_args {
     const double *vp, *wp;
     double dt_hist, reach;
-    int tally;
+    int tally, direct;
 } chunk_args;
 
 /* The chunks whose first pair belongs to a particle of [begin, end): the
@@ -166,7 +175,7 @@ static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca
         dm_bucket *b = r.walls ? &w->pw.b[r.kernel] : &w->pp.b[r.kernel];
         dm_kernel_args a = {.w = w, .b = b, .k0 = r.k0, .geom_offset = b->base - q->npp,
                             .vp = ca->vp, .wp = ca->wp, .dt_hist = ca->dt_hist,
-                            .reach = ca->reach, .tally = ca->tally};
+                            .reach = ca->reach, .tally = ca->tally, .direct = ca->direct};
         (r.walls ? pwk : ppk)[r.kernel](&a);
         q->chunk_tally[c] = a.t;
         q->chunk_contacts[c] = a.contacts;
@@ -201,8 +210,22 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
     if (!q->valid)
         dm_results_layout(w);
     dm_wgeom_update(w);
-    chunk_args ca = {.vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach, .tally = tally};
-    dm_parallel(w, w->p.n, D == 3 ? run_chunks3 : run_chunks2, &ca);
+    const uint32_t n = w->p.n;
+    /* one range: each chunk adds its results to the particles while they
+     * are in cache; else the ranges sum their particles' forces afterwards */
+    chunk_args ca = {.vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach, .tally = tally,
+                     .direct = dm_ranges(w, n) == 1};
+    if (ca.direct) {
+        if (D == 3) {
+            init_forces(3, w, 0, n);
+            run_chunks(3, w, &ca, 0, n);
+        } else {
+            init_forces(2, w, 0, n);
+            run_chunks(2, w, &ca, 0, n);
+        }
+    } else {
+        dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
+    }
     const uint32_t nchunks = q->nchunks;
     dm_tally t = {0};
     w->ncontacts = w->nwall_contacts = 0;
@@ -214,7 +237,8 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
         if (tally)
             dm_tally_add(&t, &q->chunk_tally[c]);
     }
-    dm_parallel(w, w->p.n, D == 3 ? sum_forces3 : sum_forces2, NULL);
+    if (!ca.direct)
+        dm_parallel(w, n, D == 3 ? sum_forces3 : sum_forces2, NULL);
     if (D == 3)
         sum_walls(3, w, tally, dt_hist, &t);
     else

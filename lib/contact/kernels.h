@@ -19,6 +19,7 @@ typedef struct dm_kernel_args {
     const double *vp, *wp; /* velocities the dashpots see (see dm_law) */
     double dt_hist, reach;
     int tally;
+    int direct;            /* 1: also add the results to the particles' sums */
     dm_tally t;            /* out: the chunk's dissipation */
     uint32_t contacts;     /* out: pairs in contact */
     uint32_t listed;       /* out: pairs with a result, listed in w->res.list */
@@ -241,21 +242,25 @@ DM_INLINE void dm_chunk_store(const int D, const int HSL, dm_chunk *ch, uint32_t
         ch->h[c][s] = hout[c];
 }
 
-/* Commits touching pair s of a chunk: its results into out (S = D + 2W
- * doubles: force on b, torques on a and on b), its new history, the contact
- * on (for a step), its dissipation into the tally and the event slot.
- * Returns the energy it dissipated over the step. */
-DM_INLINE double dm_chunk_commit(const int D, const int HSL, const int EV, const dm_chunk *ch,
-                                 uint32_t s, double *out, double *h, uint8_t *on, int advance,
-                                 int tally, dm_tally *t)
+/* Touching pair s of a chunk's result row o (see dm_result_add). */
+DM_INLINE void dm_chunk_result(const int D, const dm_chunk *ch, uint32_t s, double *o)
 {
     const int W = D == 3 ? 3 : 1;
     for (int c = 0; c < D; c++)
-        out[c] = ch->f[c][s];
+        o[c] = ch->f[c][s];
     for (int c = 0; c < W; c++) {
-        out[D + c] = ch->ta[c][s];
-        out[D + W + c] = ch->tb[c][s];
+        o[D + c] = ch->ta[c][s];
+        o[D + W + c] = ch->tb[c][s];
     }
+}
+
+/* Commits touching pair s of a chunk: its new history, the contact on (for
+ * a step), its dissipation into the tally and the event slot. Returns the
+ * energy it dissipated over the step. */
+DM_INLINE double dm_chunk_commit(const int HSL, const int EV, const dm_chunk *ch,
+                                 uint32_t s, double *h, uint8_t *on, int advance, int tally,
+                                 dm_tally *t)
+{
     double lost = 0.0;
     if (advance) {
         for (int c = 0; c < HSL; c++)
@@ -284,6 +289,26 @@ DM_INLINE void dm_out_normal(const int D, double *out, double fc, const double *
         out[D + c] = 0.0;
 }
 
+/* A pair's result row o (S = D + 2W doubles: force on b, torques on a and on
+ * b) added to its particles' forces and torques, in the order and with the
+ * operations of forces.c's sums: chunk after chunk in pair-id order on one
+ * thread, this gives them bit for bit. */
+DM_INLINE void dm_result_add(const int D, const int WALLS, double *restrict f, double *restrict tq,
+                             uint32_t i, uint32_t j, const double *o)
+{
+    const int W = D == 3 ? 3 : 1;
+    for (int c = 0; c < D; c++)
+        f[D * i + c] -= o[c];
+    for (int c = 0; c < W; c++)
+        tq[W * i + c] += o[D + c];
+    if (!WALLS) {
+        for (int c = 0; c < D; c++)
+            f[D * j + c] += o[c];
+        for (int c = 0; c < W; c++)
+            tq[W * j + c] += o[D + W + c];
+    }
+}
+
 /* Particle-particle chunk. */
 DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
                            dm_kernel_args *a)
@@ -305,7 +330,8 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
     double *restrict hist = b->hist, *restrict out = w->res.out + (size_t)S * b->base;
     uint8_t *restrict on = b->on;
     const double dt_hist = a->dt_hist, reach = a->reach;
-    const int tally = a->tally, advance = dt_hist > 0.0;
+    const int tally = a->tally, advance = dt_hist > 0.0, direct = a->direct;
+    double *restrict f = w->p.f, *restrict tq = w->p.t;
     dm_tally t = {0};
     dm_chunk ch;
 
@@ -319,8 +345,6 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
         const uint32_t touch = ch.touch[k - k0];
         ch.k[m] = k;
         m += touch;
-        list[listed] = k;
-        listed += touch;
         if (touch | !on[k] | !advance)
             continue;
         /* the contact came apart during the step */
@@ -338,7 +362,10 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
                 vn += (vp[D * j + c] - vp[D * i + c]) * n[c];
             }
             dm_out_normal(D, out + (size_t)S * k, fc, n);
-            list[listed++] = k;
+            if (direct)
+                dm_result_add(D, 0, f, tq, i, j, out + (size_t)S * k);
+            else
+                list[listed++] = k;
             if (tally) {
                 t.diss_normal -= fc * vn * dt_hist;
                 if (EV)
@@ -367,8 +394,15 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
     }
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
-        dm_chunk_commit(D, HSL, EV, &ch, s, out + (size_t)S * k, hist + (size_t)HS * k, on + k,
-                        advance, tally, &t);
+        dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
+        if (direct) {
+            double o[9];
+            dm_chunk_result(D, &ch, s, o);
+            dm_result_add(D, 0, f, tq, bi[k], bj[k], o);
+        } else {
+            dm_chunk_result(D, &ch, s, out + (size_t)S * k);
+            list[listed++] = k;
+        }
     }
     a->t = t;
     a->contacts = m;
@@ -398,7 +432,8 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
     double *restrict hist = b->hist, *restrict out = w->res.out + (size_t)S * b->base;
     uint8_t *restrict on = b->on;
     const double dt_hist = a->dt_hist, reach = a->reach;
-    const int tally = a->tally, advance = dt_hist > 0.0;
+    const int tally = a->tally, advance = dt_hist > 0.0, direct = a->direct;
+    double *restrict f = w->p.f, *restrict tq = w->p.t;
     dm_tally t = {0};
     dm_chunk ch;
 
@@ -409,8 +444,6 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
         const uint32_t touch = g->delta[gk] > 0.0;
         ch.k[m] = k;
         m += touch;
-        list[listed] = k;
-        listed += touch;
         if (touch | !on[k] | !advance)
             continue;
         /* the contact came apart during the step */
@@ -425,6 +458,8 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
             for (int c = 0; c < D; c++)
                 absorbed += fc * n[c] * (vp[D * i + c] - g->vw[D * gk + c]);
             dm_out_normal(D, out + (size_t)S * k, fc, n);
+            if (direct)
+                dm_result_add(D, 1, f, tq, i, 0, out + (size_t)S * k);
             list[listed++] = k;
             g->lost[gk] = absorbed * dt_hist;
             if (tally) {
@@ -458,8 +493,12 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
     }
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
-        g->lost[g0 + k] = dm_chunk_commit(D, HSL, EV, &ch, s, out + (size_t)S * k,
-                                          hist + (size_t)HS * k, on + k, advance, tally, &t);
+        g->lost[g0 + k] =
+            dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
+        dm_chunk_result(D, &ch, s, out + (size_t)S * k);
+        if (direct)
+            dm_result_add(D, 1, f, tq, b->i[k], 0, out + (size_t)S * k);
+        list[listed++] = k;
     }
     a->t = t;
     a->contacts = m;

@@ -221,7 +221,8 @@ typedef struct dm_results {
     uint32_t n, npp, cap;   /* pairs, of them particle-particle, room */
     double *out;            /* S = D + 2W per pair: force on b, torques on a and on b */
     uint32_t *list;         /* per chunk, from its first pair's id: its pairs with a
-                               result in out (indices in the bucket, in order) */
+                               result in out (indices in the bucket): those that came
+                               apart, then those touching, each in bucket order */
     dm_chunkref *chunks;    /* in pair-id order */
     dm_tally *chunk_tally;  /* per chunk: dissipation, */
     uint32_t *chunk_contacts; /* pairs in contact, */
@@ -401,6 +402,7 @@ demill_id dm_drum_id(const demill_world *w);
 #define DM_MAX_THREADS 1024
 typedef void (*dm_range_fn)(demill_world *w, void *arg, int t, uint32_t begin, uint32_t end);
 int dm_threads_available(int requested);
+int dm_ranges(const demill_world *w, uint32_t n);
 int dm_parallel(demill_world *w, uint32_t n, dm_range_fn fn, void *arg);
 
 /* params.c */

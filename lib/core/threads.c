@@ -17,16 +17,21 @@ int dm_threads_available(int requested)
 #endif
 }
 
+/* The number of ranges dm_parallel() splits [0, n) into. */
+int dm_ranges(const demill_world *w, uint32_t n)
+{
+    const uint32_t most = n / MIN_PER_THREAD;
+    return most <= 1 ? 1 : (uint32_t)w->threads < most ? w->threads : (int)most;
+}
+
 /* Calls fn(w, arg, t, begin, end) for ranges t = 0 .. ranges - 1 that split
  * [0, n) into equal parts, on the world's threads; returns the number of
  * ranges (at most DM_MAX_THREADS). Loops with results per range write them
  * to arg at index t, to be combined in range order. */
 int dm_parallel(demill_world *w, uint32_t n, dm_range_fn fn, void *arg)
 {
-    int ranges = w->threads;
-    if ((uint64_t)ranges * MIN_PER_THREAD > n)
-        ranges = (int)(n / MIN_PER_THREAD);
-    if (ranges <= 1) {
+    const int ranges = dm_ranges(w, n);
+    if (ranges == 1) {
         fn(w, arg, 0, 0, n);
         return 1;
     }
