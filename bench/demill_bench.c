@@ -131,10 +131,14 @@ int main(int argc, char **argv)
     demill_id steel, drum;
     if (scene_world(&geo, &w, &steel, &drum))
         return EXIT_FAILURE;
+    fail(w, demill_world_set(w, DEMILL_WORLD_THREADS, (double)threads), "threads");
     fail(w, demill_world_set(w, DEMILL_WORLD_ENERGY_TRACKING, energy), "energy tracking");
     fail(w, demill_particles_add(w, steel, (size_t)particles, pos, rad, NULL, 0, NULL), "charge");
     free(pos);
     free(rad);
+    fprintf(stderr, "demill_bench: %s, %ld particles, %ld threads: settling %g s, turning %g s, "
+                    "then timing %ld steps\n",
+            scene, particles, threads, settle, rotate, steps);
     fail(w, demill_world_step(w, (uint64_t)llround(settle / geo.time_step)), "settling");
     fail(w, demill_drum_set(w, drum, DEMILL_DRUM_SPEED_FRACTION, 0.75), "speed");
     fail(w, demill_world_step(w, (uint64_t)llround(rotate / geo.time_step)), "turning");

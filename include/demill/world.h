@@ -36,7 +36,7 @@ enum {
     DEMILL_WORLD_INTEGRATOR = 104,
     /** Verlet skin of the neighbour list as a fraction of the largest particle
      *  radius, in [0.01, 10]. Larger skins rebuild less often but test more
-     *  pairs; results do not depend on it beyond round-off. Default 0.2. */
+     *  pairs; results do not depend on it beyond round-off. Default 0.3. */
     DEMILL_WORLD_SKIN = 105,
     /** 2D worlds only: 0 (default) makes particles spheres constrained to the
      *  plane (m = 4/3 π R³ ρ, I = 2/5 m R²); a positive thickness t in m makes

@@ -22,7 +22,7 @@ static const param_info params[] = {
     {DEMILL_WORLD_GRAVITY_Y, "world.gravity_y", "m/s^2", -1e6, 1e6, -9.81, 0},
     {DEMILL_WORLD_GRAVITY_Z, "world.gravity_z", "m/s^2", -1e6, 1e6, 0, 0},
     {DEMILL_WORLD_INTEGRATOR, "world.integrator", "enum", 1, 2, 1, WHOLE},
-    {DEMILL_WORLD_SKIN, "world.skin", "1", 0.01, 10, 0.2, 0},
+    {DEMILL_WORLD_SKIN, "world.skin", "1", 0.01, 10, 0.3, 0},
     {DEMILL_WORLD_DISC_THICKNESS, "world.disc_thickness", "m", 0, 1e6, 0, 0},
     {DEMILL_WORLD_ENERGY_TRACKING, "world.energy_tracking", "bool", 0, 1, 1, WHOLE},
     {DEMILL_WORLD_TIME, "world.time", "s", -1e300, 1e300, 0, 0},
