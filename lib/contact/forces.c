@@ -209,7 +209,6 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
     dm_results *q = &w->res;
     if (!q->valid)
         dm_results_layout(w);
-    dm_wgeom_update(w);
     const uint32_t n = w->p.n;
     /* one range: each chunk adds its results to the particles while they
      * are in cache; else the ranges sum their particles' forces afterwards */

@@ -409,9 +409,9 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
     a->listed = listed;
 }
 
-/* Particle-wall chunk, over the geometry computed by dm_wgeom_update(). The
- * walls' forces, torques and energies are summed afterwards (forces.c), from
- * out and the geometry's lost. */
+/* Particle-wall chunk: the contact geometry of its candidates (into w->wg),
+ * then the law. The walls' forces, torques and energies are summed afterwards
+ * (forces.c), from out and the geometry's lost. */
 DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
                            dm_kernel_args *a)
 {
@@ -437,6 +437,7 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
     dm_tally t = {0};
     dm_chunk ch;
 
+    dm_wgeom_range(w, b, g0, k0, k1);
     uint32_t m = 0, listed = 0;
     uint32_t *restrict list = w->res.list + b->base + k0;
     for (uint32_t k = k0; k < k1; k++) {

@@ -436,6 +436,7 @@ uint32_t dm_wall_slot_alloc(demill_world *w);
 void dm_walls_advance(demill_world *w, double time);
 void dm_walls_retime(demill_world *w, double time);
 void dm_wgeom_update(demill_world *w);
+void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p0, uint32_t p1);
 int dm_wgeom_reserve(demill_world *w);
 double dm_wall_distance(const dm_wall *wall, const double *x, int dim);
 double dm_wall_distance_bound(const dm_wall *wall, const double *x, int dim);

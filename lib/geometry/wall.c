@@ -284,43 +284,43 @@ int dm_wgeom_reserve(demill_world *w)
     return 0;
 }
 
-/* Contact geometry of every particle-wall candidate, in bucket order
- * (room reserved by the neighbour build). */
-void dm_wgeom_update(demill_world *w)
+/* Contact geometry of candidates p0 .. p1-1 of a particle-wall bucket whose
+ * first candidate has index g0 in w->wg (room reserved by the neighbour build). */
+void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p0, uint32_t p1)
 {
     dm_wgeom *g = &w->wg;
-    const int D = w->dim, T = w->threads;
+    const int D = w->dim;
     const dm_particles *P = &w->p;
-    uint32_t g0[DM_KERNELS], gk = 0;
-    for (int k = 0; k < DM_KERNELS; k++) {
-        g0[k] = gk;
-        gk += w->pw.b[k].n;
+    for (uint32_t p = p0; p < p1; p++) {
+        const uint32_t i = b->i[p], q = g0 + p;
+        const dm_wall *wall = &w->walls[b->j[p]];
+        const double *x = P->x + D * i;
+        double n[3];
+        const double delta = P->r[i] - dm_wall_closest(wall, x, D, n);
+        double *nrm = g->nrm + D * q, *cp = g->cp + D * q, *vw = g->vw + D * q;
+        g->delta[q] = delta;
+        double arm = P->r[i] - 0.5 * delta, rel[3] = {0.0, 0.0, 0.0};
+        for (int c = 0; c < D; c++) {
+            nrm[c] = n[c];
+            cp[c] = x[c] + arm * nrm[c];
+            rel[c] = cp[c] - wall->c[c];
+        }
+        const double *om = wall->omega;
+        double spin[3] = {om[1] * rel[2] - om[2] * rel[1], om[2] * rel[0] - om[0] * rel[2],
+                          om[0] * rel[1] - om[1] * rel[0]};
+        for (int c = 0; c < D; c++)
+            vw[c] = wall->vel[c] + spin[c];
     }
-    (void)T;
-    DM_OMP("omp parallel num_threads(T) if (T > 1 && gk > 1024)")
+}
+
+/* Contact geometry of every particle-wall candidate, in bucket order. */
+void dm_wgeom_update(demill_world *w)
+{
+    uint32_t g0 = 0;
     for (int k = 0; k < DM_KERNELS; k++) {
         const dm_bucket *b = &w->pw.b[k];
-        DM_OMP("omp for schedule(static) nowait")
-        for (uint32_t p = 0; p < b->n; p++) {
-            const uint32_t i = b->i[p], q = g0[k] + p;
-            const dm_wall *wall = &w->walls[b->j[p]];
-            const double *x = P->x + D * i;
-            double n[3];
-            const double delta = P->r[i] - dm_wall_closest(wall, x, D, n);
-            double *nrm = g->nrm + D * q, *cp = g->cp + D * q, *vw = g->vw + D * q;
-            g->delta[q] = delta;
-            double arm = P->r[i] - 0.5 * delta, rel[3] = {0.0, 0.0, 0.0};
-            for (int c = 0; c < D; c++) {
-                nrm[c] = n[c];
-                cp[c] = x[c] + arm * nrm[c];
-                rel[c] = cp[c] - wall->c[c];
-            }
-            const double *om = wall->omega;
-            double spin[3] = {om[1] * rel[2] - om[2] * rel[1], om[2] * rel[0] - om[0] * rel[2],
-                              om[0] * rel[1] - om[1] * rel[0]};
-            for (int c = 0; c < D; c++)
-                vw[c] = wall->vel[c] + spin[c];
-        }
+        dm_wgeom_range(w, b, g0, 0, b->n);
+        g0 += b->n;
     }
 }
 

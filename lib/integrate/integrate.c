@@ -36,7 +36,7 @@ DM_INLINE double from_bits(uint64_t u)
  * the largest squared displacement since the last neighbour build, as bits. */
 typedef struct step_args {
     double dt, h, hth;
-    int kick, predict;
+    int kick, predict, rotation; /* rotation: the loops also do spin() */
     uint64_t worst[DM_MAX_THREADS];
 } step_args;
 
@@ -135,24 +135,25 @@ DM_INLINE void spin(const int D, dm_particles *P, const step_args *a, uint32_t i
     {                                                                                             \
         step_args *s = a;                                                                         \
         verlet_drift(D, &w->p, s, i0, i1, &s->worst[t]);                                          \
+        if (s->rotation)                                                                          \
+            spin(D, &w->p, s, i0, i1);                                                            \
     }                                                                                             \
     DM_VECTOR_CLONES static void euler_drift##D(demill_world *w, void *a, int t, uint32_t i0,     \
                                                 uint32_t i1)                                      \
     {                                                                                             \
         step_args *s = a;                                                                         \
         euler_drift(D, &w->p, s, i0, i1, &s->worst[t]);                                           \
+        if (s->rotation)                                                                          \
+            spin(D, &w->p, s, i0, i1);                                                            \
     }                                                                                             \
     DM_VECTOR_CLONES static void kick##D(demill_world *w, void *a, int t, uint32_t i0,            \
                                          uint32_t i1)                                             \
     {                                                                                             \
+        const step_args *s = a;                                                                   \
         (void)t;                                                                                  \
-        kick(D, &w->p, a, i0, i1);                                                                \
-    }                                                                                             \
-    DM_VECTOR_CLONES static void spin##D(demill_world *w, void *a, int t, uint32_t i0,            \
-                                         uint32_t i1)                                             \
-    {                                                                                             \
-        (void)t;                                                                                  \
-        spin(D, &w->p, a, i0, i1);                                                                \
+        kick(D, &w->p, s, i0, i1);                                                                \
+        if (s->rotation)                                                                          \
+            spin(D, &w->p, s, i0, i1);                                                            \
     }
 DM_STEP_LOOPS(2)
 DM_STEP_LOOPS(3)
@@ -191,14 +192,13 @@ static demill_status verlet(demill_world *w, uint64_t steps)
 {
     const int d3 = w->dim == 3;
     dm_particles *P = &w->p;
-    step_args a = {.dt = w->dt, .h = 0.5 * w->dt, .hth = w->dt, .predict = 1};
+    step_args a = {.dt = w->dt, .h = 0.5 * w->dt, .hth = w->dt, .predict = 1,
+                   .rotation = w->rotation};
     if (!steps)
         return DEMILL_OK;
     for (uint64_t s = 0; s < steps; s++) {
         a.kick = s > 0;
         const double d2 = drift(w, d3 ? verlet_drift3 : verlet_drift2, &a);
-        if (w->rotation)
-            dm_parallel(w, P->n, d3 ? spin3 : spin2, &a);
         demill_status st = finish_step(w, d2, P->vp, P->wp, 0.5);
         if (st)
             return st;
@@ -206,8 +206,6 @@ static demill_status verlet(demill_world *w, uint64_t steps)
     a.kick = a.predict = 0;
     a.hth = 0.0;
     dm_parallel(w, P->n, d3 ? kick3 : kick2, &a);
-    if (w->rotation)
-        dm_parallel(w, P->n, d3 ? spin3 : spin2, &a);
     return DEMILL_OK;
 }
 
@@ -215,11 +213,9 @@ static demill_status euler(demill_world *w, uint64_t steps)
 {
     const int d3 = w->dim == 3;
     dm_particles *P = &w->p;
-    step_args a = {.dt = w->dt, .h = w->dt, .hth = w->dt};
+    step_args a = {.dt = w->dt, .h = w->dt, .hth = w->dt, .rotation = w->rotation};
     for (uint64_t s = 0; s < steps; s++) {
         const double d2 = drift(w, d3 ? euler_drift3 : euler_drift2, &a);
-        if (w->rotation)
-            dm_parallel(w, P->n, d3 ? spin3 : spin2, &a);
         demill_status st = finish_step(w, d2, P->v, P->w, 1.0);
         if (st)
             return st;
