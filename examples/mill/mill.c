@@ -26,7 +26,7 @@
 
 typedef struct options {
     const char *scene, *out;
-    int dim, lifters;
+    int dim, lifters, threads;
     double diameter, length, speed, fill, radius, lifter_height, revolutions, dt, vtk_every;
     size_t particles; /* scenes: a fixed packing */
     double site_radius;
@@ -52,6 +52,7 @@ static void usage(FILE *f)
           "  --revolutions N      revolutions to run after settling [2]\n"
           "  --time-step DT       s [1e-5]\n"
           "  --vtk-every T        seconds between VTK frames, 0 for none [0.1]\n"
+          "  --threads N          threads; the results are the same for any number [1]\n"
           "  --out DIR            output folder [mill-out]\n"
           "  --help               this text\n",
           f);
@@ -72,7 +73,7 @@ static int parse_number(const char *opt, const char *text, double lo, double hi,
 
 static int parse_options(int argc, char **argv, options *o)
 {
-    *o = (options){.scene = "default", .out = "mill-out", .dim = 3, .lifters = 8,
+    *o = (options){.scene = "default", .out = "mill-out", .dim = 3, .lifters = 8, .threads = 1,
                    .diameter = 0.3, .length = 0.1, .speed = 75, .fill = 0, .radius = 0.005,
                    .lifter_height = 0.015, .revolutions = 2, .dt = 1e-5, .vtk_every = 0.1,
                    .mass = 10000 * 8.8216e-4};
@@ -104,6 +105,14 @@ static int parse_options(int argc, char **argv, options *o)
             if (parse_number(a, v, 1, 1000, &x))
                 return -1;
             o->revolutions = floor(x);
+        } else if (!strcmp(a, "--threads")) {
+            if (parse_number(a, v, 1, 1024, &x))
+                return -1;
+            if (x != floor(x)) {
+                fprintf(stderr, "mill: --threads takes a whole number\n");
+                return -1;
+            }
+            o->threads = (int)x;
         } else if (!strcmp(a, "--vtk-every")) {
             if (parse_number(a, v, 0, 1e6, &o->vtk_every))
                 return -1;
@@ -140,7 +149,7 @@ static int parse_options(int argc, char **argv, options *o)
     if (strcmp(o->scene, "default")) {
         if (geometry) {
             fprintf(stderr, "mill: --scene %s is fixed by SCENES.md; only --revolutions, "
-                            "--vtk-every and --out may be given with it\n",
+                            "--vtk-every, --threads and --out may be given with it\n",
                     o->scene);
             return -1;
         }
@@ -267,6 +276,7 @@ int main(int argc, char **argv)
     if (scene_world(&geo, &w, &steel, &drum))
         return EXIT_FAILURE;
     g_world = w;
+    check(demill_world_set(w, DEMILL_WORLD_THREADS, o.threads), "--threads");
 
     /* the charge */
     size_t n;
