@@ -168,6 +168,8 @@ static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca
     dm_results *q = &w->res;
     const dm_kernel_fn *ppk = D == 3 ? dm_pp_kernels3 : dm_pp_kernels2;
     const dm_kernel_fn *pwk = D == 3 ? dm_pw_kernels3 : dm_pw_kernels2;
+    if (ca->direct) /* the only range: the chunks add into the sums as they go */
+        init_forces(D, w, begin, end);
     for (uint32_t c = 0; c < q->nchunks; c++) {
         const dm_chunkref r = q->chunks[c];
         if (r.i0 < begin || r.i0 >= end)
@@ -214,17 +216,7 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
      * are in cache; else the ranges sum their particles' forces afterwards */
     chunk_args ca = {.vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach, .tally = tally,
                      .direct = dm_ranges(w, n) == 1};
-    if (ca.direct) {
-        if (D == 3) {
-            init_forces(3, w, 0, n);
-            run_chunks(3, w, &ca, 0, n);
-        } else {
-            init_forces(2, w, 0, n);
-            run_chunks(2, w, &ca, 0, n);
-        }
-    } else {
-        dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
-    }
+    dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
     const uint32_t nchunks = q->nchunks;
     dm_tally t = {0};
     w->ncontacts = w->nwall_contacts = 0;
