@@ -220,24 +220,32 @@ DM_INLINE uint32_t dm_chunk_load(const int HSL, const int WALLS, const demill_wo
     return padded;
 }
 
-/* The law's results for pair s of a chunk: the force on b, the torques on a
- * (lever arm ai) and b (aj), the dissipation and the new history. */
-DM_INLINE void dm_chunk_store(const int D, const int HSL, dm_chunk *ch, uint32_t s,
-                              const dm_kin *q, const dm_law_out *o, const double *hout)
+/* The law for pair s of a chunk with kinematics q, from the history loaded
+ * into the chunk; stores the force on b, the torques on a (lever arm ai) and
+ * b (aj), the dissipation and the new history. */
+DM_INLINE void dm_chunk_law(const int D, const int NL, const int DL, const int TL, const int RL,
+                            const int HSL, dm_chunk *ch, uint32_t s, const dm_pairparam *pp,
+                            const dm_kin *q, double dt_hist, double reach)
 {
     const int W = D == 3 ? 3 : 1;
+    double hin[DM_MAX_HIST], hout[DM_MAX_HIST];
+    for (int c = 0; c < HSL; c++)
+        hin[c] = ch->h[c][s];
+    dm_law_out o;
+    dm_law(D, NL, DL, TL, RL, pp, q->n, q->delta, q->vc, q->dc, q->wrel, q->rstar, q->mstar,
+           dt_hist, reach, hin, hout, &o);
     double nf[3];
-    dm_n_cross(D, q->n, o->ft, nf);
+    dm_n_cross(D, q->n, o.ft, nf);
     for (int c = 0; c < D; c++)
-        ch->f[c][s] = o->fn * q->n[c] + o->ft[c];
+        ch->f[c][s] = o.fn * q->n[c] + o.ft[c];
     for (int c = 0; c < W; c++) {
-        ch->ta[c][s] = o->mr[c] - q->ai * nf[c];
-        ch->tb[c][s] = -o->mr[c] - q->aj * nf[c];
+        ch->ta[c][s] = o.mr[c] - q->ai * nf[c];
+        ch->tb[c][s] = -o.mr[c] - q->aj * nf[c];
     }
-    ch->diss[0][s] = o->diss_normal;
-    ch->diss[1][s] = o->diss_tangential;
-    ch->diss[2][s] = o->diss_friction;
-    ch->diss[3][s] = o->diss_rolling;
+    ch->diss[0][s] = o.diss_normal;
+    ch->diss[1][s] = o.diss_tangential;
+    ch->diss[2][s] = o.diss_friction;
+    ch->diss[3][s] = o.diss_rolling;
     for (int c = 0; c < HSL; c++)
         ch->h[c][s] = hout[c];
 }
@@ -381,16 +389,11 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
     const uint32_t lanes = dm_chunk_load(HSL, 0, w, b, &ch, m);
     for (uint32_t s = 0; s < lanes; s++) {
         const uint32_t k = ch.k[s], i = bi[k], j = bj[k];
-        double d[3], r2, hin[DM_MAX_HIST], hout[DM_MAX_HIST];
+        double d[3], r2;
         dm_pp_touch(D, P, i, j, d, &r2);
-        for (int c = 0; c < HSL; c++)
-            hin[c] = ch.h[c][s];
         dm_kin q;
         dm_pp_kin(D, SPIN, RL, P, vp, wp, i, j, d, r2, &q);
-        dm_law_out o;
-        dm_law(D, NL, DL, TL, RL, &tab[ch.pp[s]], q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar,
-               q.mstar, dt_hist, reach, hin, hout, &o);
-        dm_chunk_store(D, HSL, &ch, s, &q, &o, hout);
+        dm_chunk_law(D, NL, DL, TL, RL, HSL, &ch, s, &tab[ch.pp[s]], &q, dt_hist, reach);
     }
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
@@ -482,15 +485,9 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
     for (uint32_t s = 0; s < lanes; s++) {
         const uint32_t k = ch.k[s], i = b->i[k];
         const dm_wall *wall = &w->walls[b->j[k]];
-        double hin[DM_MAX_HIST], hout[DM_MAX_HIST];
-        for (int c = 0; c < HSL; c++)
-            hin[c] = ch.h[c][s];
         dm_kin q;
         dm_pw_kin(D, SPIN, RL, P, vp, wp, g, g0 + k, i, wall, &q);
-        dm_law_out o;
-        dm_law(D, NL, DL, TL, RL, &tab[ch.pp[s]], q.n, q.delta, q.vc, q.dc, q.wrel, q.rstar,
-               q.mstar, dt_hist, reach, hin, hout, &o);
-        dm_chunk_store(D, HSL, &ch, s, &q, &o, hout);
+        dm_chunk_law(D, NL, DL, TL, RL, HSL, &ch, s, &tab[ch.pp[s]], &q, dt_hist, reach);
     }
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
