@@ -91,7 +91,8 @@ enum {
     DEMILL_ERR_READ_ONLY = 10,       /**< the parameter or field can be read but not written */
     DEMILL_ERR_DIMENSION = 11,       /**< the value is not allowed in a world of this dimension */
     DEMILL_ERR_VERSION = 12,         /**< the library is not compatible with the headers */
-    DEMILL_ERR_UNSUPPORTED = 13      /**< the library was built without what this needs */
+    DEMILL_ERR_UNSUPPORTED = 13,     /**< the library was built without what this needs */
+    DEMILL_ERR_UNSTABLE = 14         /**< the simulation went unstable (see DEMILL_WORLD_WATCHDOG) */
 };
 
 /** A static, generic description of a status code ("invalid value", ...).

@@ -19,7 +19,19 @@ enum {
     DEMILL_INTEGRATOR_VELOCITY_VERLET = 1,
     /** Symplectic (semi-implicit) Euler: v += a dt, then x += v dt. First
      *  order, cheapest. */
-    DEMILL_INTEGRATOR_SYMPLECTIC_EULER = 2
+    DEMILL_INTEGRATOR_SYMPLECTIC_EULER = 2,
+    /** The iterative refinement of PHYSICS.md §8: a Taylor step with jerk,
+     *  x += v Δt + a Δt²/2 + b Δt³/6, v += a Δt + b Δt²/2, whose jerk
+     *  b = (a(t+Δt) - a(t))/Δt is refined by evaluating the forces again
+     *  at the predicted state until the accelerations of successive
+     *  iterates agree to DEMILL_WORLD_REFINE_TOLERANCE, or
+     *  DEMILL_WORLD_REFINE_MAX_ITERATIONS force evaluations were made.
+     *  Converged, it is the implicit linear-acceleration method (Newmark
+     *  β = 1/6, γ = 1/2): second order, stable up to ω Δt = 2√3 where
+     *  Verlet is stable up to 2. Each iteration costs a force evaluation;
+     *  only the accepted iterate advances the contact histories and the
+     *  energy tallies. See docs/accuracy.md for what it buys. */
+    DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT = 3
 };
 
 /** World parameter keys, used with demill_world_set() and demill_world_get().
@@ -54,6 +66,20 @@ enum {
      *  needs a library built with OpenMP (DEMILL_ERR_UNSUPPORTED otherwise);
      *  getting the key gives the number in use. */
     DEMILL_WORLD_THREADS = 109,
+    /** Iterative refinement: ε_a, the relative change of every acceleration
+     *  component (translational and angular) between two iterates below
+     *  which a step is accepted, in (0, 1]. The test is
+     *  |a_k - a_(k-1)| <= ε_a (|a_k| + ā) per component, where ā is the
+     *  mean magnitude over all particles at the start of the step (plus |g|
+     *  for translation), so that it stays meaningful where a is near 0. The
+     *  first iterate is compared with the accelerations at the start of the
+     *  step (from which its jerk, 0, was made), so that a step over which no
+     *  acceleration changes takes one force evaluation. Default 1e-4. */
+    DEMILL_WORLD_REFINE_TOLERANCE = 110,
+    /** Iterative refinement: force evaluations per step at most, a whole
+     *  number in [1, 100]. A step that has not converged by then is accepted
+     *  as it stands (counted in DEMILL_WORLD_REFINE_UNCONVERGED). Default 8. */
+    DEMILL_WORLD_REFINE_MAX_ITERATIONS = 111,
 
     /** 2 or 3. */
     DEMILL_WORLD_DIMENSION = 150,
@@ -66,7 +92,15 @@ enum {
     /** Particle-wall contacts (overlap > 0) at the last force evaluation. */
     DEMILL_WORLD_WALL_CONTACT_COUNT = 154,
     /** Number of neighbour-list rebuilds since creation. */
-    DEMILL_WORLD_NEIGHBOUR_REBUILDS = 155
+    DEMILL_WORLD_NEIGHBOUR_REBUILDS = 155,
+    /** Force evaluations the last step took (1 except for the iterative
+     *  refinement). */
+    DEMILL_WORLD_REFINE_ITERATIONS = 156,
+    /** Force evaluations made by steps since creation. */
+    DEMILL_WORLD_FORCE_EVALUATIONS = 157,
+    /** Iterative refinement: steps since creation that reached
+     *  DEMILL_WORLD_REFINE_MAX_ITERATIONS without converging. */
+    DEMILL_WORLD_REFINE_UNCONVERGED = 158
 };
 
 /** Creates an empty world of the given dimension (2 or 3) with default
@@ -108,9 +142,12 @@ DEMILL_API demill_status demill_world_get(const demill_world *world, int32_t key
  *  state (so that forces, torques, contacts and energies can be read).
  *
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NO_CONTACT_MODEL,
- *          DEMILL_ERR_INVALID_VALUE or DEMILL_ERR_OUT_OF_MEMORY. If memory
- *          runs out in the middle of a run, the world holds the state after
- *          the last completed step. */
+ *          DEMILL_ERR_INVALID_VALUE, DEMILL_ERR_OUT_OF_MEMORY or
+ *          DEMILL_ERR_UNSTABLE. If memory runs out in the middle of a run,
+ *          the world holds the state after the last completed step. On
+ *          DEMILL_ERR_UNSTABLE (an iterate of the iterative refinement moved
+ *          a particle by more than half the neighbour skin) the world holds
+ *          the state before the step that failed. */
 DEMILL_API demill_status demill_world_step(demill_world *world, uint64_t steps);
 
 #ifdef __cplusplus

@@ -21,6 +21,7 @@ DEMILL_API const char *demill_strerror(demill_status code)
     case DEMILL_ERR_DIMENSION: return "the value is not allowed in a world of this dimension";
     case DEMILL_ERR_VERSION: return "the library version is not compatible with the headers";
     case DEMILL_ERR_UNSUPPORTED: return "the library was built without what this needs";
+    case DEMILL_ERR_UNSTABLE: return "the simulation went unstable; the world is at its last good state";
     default: return "unknown status code";
     }
 }

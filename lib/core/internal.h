@@ -289,6 +289,27 @@ typedef struct dm_drum {
     dm_spectrum spectrum;
 } dm_drum;
 
+/* ---- iterative refinement (integrate/refine.c) ---------------------------- */
+/* The state at the start of a step, which every iterate predicts from, and
+ * the contact state that each further iterate starts from again. The
+ * particle arrays trade places with the world's (no copies): during a step
+ * xn, vn, fn, wn, tn, thn hold the start of the step and fprev, tprev the
+ * previous iterate's forces and torques. */
+typedef struct dm_refine {
+    uint32_t cap;                  /* particles the arrays hold */
+    double *xn, *vn, *fn, *fprev;  /* D per particle */
+    double *wn, *tn, *tprev;       /* W per particle */
+    double *thn;                   /* 2D angle */
+    double *hist;                  /* every bucket's history, bucket after bucket */
+    uint8_t *on;                   /* and touch flags */
+    size_t cap_hist, cap_on;
+    double *wall_diss;             /* walls' dissipation tallies */
+    uint32_t cap_walls;
+    uint64_t *spectrum;            /* collision-spectrum counters */
+    size_t cap_spectrum;
+    dm_tally tally;
+} dm_refine;
+
 /* ---- the world ------------------------------------------------------------- */
 #define DM_WORLD_MAGIC 0x64656d696c6cu /* "demill" */
 
@@ -303,6 +324,11 @@ struct demill_world {
     double disc_thickness;
     int energy_tracking;
     int threads;            /* threads the loops run on (world.threads) */
+    double refine_tol;      /* iterative refinement: ε_a */
+    int refine_max;         /* and force evaluations per step at most */
+    uint32_t iterations_last;     /* force evaluations of the last step */
+    uint64_t force_evals, unconverged;
+    dm_refine refine;
     char error[512];
 
     /* materials */
@@ -464,6 +490,7 @@ void dm_contacts_visit(demill_world *w, dm_contact_visitor fn, void *ctx);
 void dm_charge_shape(const demill_world *w, double angles[3]);
 void dm_drum_measure(demill_world *w);
 void dm_spectrum_free(demill_world *w);
+size_t dm_spectrum_counters(const dm_spectrum *sp);
 double dm_drum_omega_at(const dm_drum *d, double time, double *theta);
 void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall_kind, double energy);
 demill_status dm_drum_prepare(demill_world *w);
@@ -471,5 +498,9 @@ demill_status dm_drum_prepare(demill_world *w);
 /* integrate/integrate.c */
 demill_status dm_integrate(demill_world *w, uint64_t steps);
 demill_status dm_prepare_step(demill_world *w);
+
+/* integrate/refine.c */
+demill_status dm_refine_steps(demill_world *w, uint64_t steps);
+void dm_refine_free(demill_world *w);
 
 #endif /* DM_INTERNAL_H */

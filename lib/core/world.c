@@ -38,6 +38,8 @@ DEMILL_API demill_status demill_world_create(int32_t dimension, demill_world **o
     w->skin_fraction = param_default(DEMILL_WORLD_SKIN);
     w->energy_tracking = (int)param_default(DEMILL_WORLD_ENERGY_TRACKING);
     w->threads = (int)param_default(DEMILL_WORLD_THREADS);
+    w->refine_tol = param_default(DEMILL_WORLD_REFINE_TOLERANCE);
+    w->refine_max = (int)param_default(DEMILL_WORLD_REFINE_MAX_ITERATIONS);
     w->ptab_dirty = true;
     dm_clist_clear(w);
     *out = w;
@@ -52,6 +54,7 @@ DEMILL_API void demill_world_destroy(demill_world *w)
     dm_nlist_free(w);
     dm_results_free(w);
     dm_spectrum_free(w);
+    dm_refine_free(w);
     dm_handles_free(&w->wh);
     free(w->walls);
     free(w->pairs);
@@ -109,6 +112,14 @@ DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double v
             return s;
         dm_clear_error(w);
         return DEMILL_OK;
+    case DEMILL_WORLD_REFINE_TOLERANCE: /* affect the next steps only */
+    case DEMILL_WORLD_REFINE_MAX_ITERATIONS:
+        if (key == DEMILL_WORLD_REFINE_TOLERANCE)
+            w->refine_tol = value;
+        else
+            w->refine_max = (int)value;
+        dm_clear_error(w);
+        return DEMILL_OK;
     case DEMILL_WORLD_TIME:
         dm_walls_retime(w, value);
         w->drum.t_set += value - w->time; /* the drum keeps its angle and speed */
@@ -140,12 +151,17 @@ DEMILL_API demill_status demill_world_get(const demill_world *cw, int32_t key, d
     case DEMILL_WORLD_ENERGY_TRACKING: *value = w->energy_tracking; break;
     case DEMILL_WORLD_TIME: *value = w->time; break;
     case DEMILL_WORLD_THREADS: *value = w->threads; break;
+    case DEMILL_WORLD_REFINE_TOLERANCE: *value = w->refine_tol; break;
+    case DEMILL_WORLD_REFINE_MAX_ITERATIONS: *value = w->refine_max; break;
     case DEMILL_WORLD_DIMENSION: *value = w->dim; break;
     case DEMILL_WORLD_STEP_COUNT: *value = (double)w->steps; break;
     case DEMILL_WORLD_PARTICLE_COUNT: *value = w->p.n; break;
     case DEMILL_WORLD_CONTACT_COUNT: *value = w->ncontacts; break;
     case DEMILL_WORLD_WALL_CONTACT_COUNT: *value = w->nwall_contacts; break;
     case DEMILL_WORLD_NEIGHBOUR_REBUILDS: *value = (double)w->rebuilds; break;
+    case DEMILL_WORLD_REFINE_ITERATIONS: *value = w->iterations_last; break;
+    case DEMILL_WORLD_FORCE_EVALUATIONS: *value = (double)w->force_evals; break;
+    case DEMILL_WORLD_REFINE_UNCONVERGED: *value = (double)w->unconverged; break;
     default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_get: %d is not a world key", (int)key);
     }
     return DEMILL_OK;

@@ -1,5 +1,6 @@
 /* integrate.c: time stepping (PHYSICS.md §8) behind one interface,
- * dm_integrate(): velocity Verlet (default) and symplectic Euler. Each step
+ * dm_integrate(): velocity Verlet (default), symplectic Euler and the
+ * iterative refinement (refine.c). Each step
  * moves the particles, advances the walls, rebuilds the neighbour lists when
  * the skin is used up, and evaluates the forces of the new state.
  *
@@ -175,6 +176,8 @@ static demill_status finish_step(demill_world *w, double max_disp2, const double
 {
     w->time += w->dt;
     w->steps++;
+    w->iterations_last = 1;
+    w->force_evals++;
     dm_walls_advance(w, w->time);
     if (dm_nlist_needs_rebuild(w, max_disp2)) {
         demill_status s = dm_nlist_build(w);
@@ -239,8 +242,11 @@ demill_status dm_prepare_step(demill_world *w)
 
 demill_status dm_integrate(demill_world *w, uint64_t steps)
 {
-    return w->integrator == DEMILL_INTEGRATOR_SYMPLECTIC_EULER ? euler(w, steps)
-                                                               : verlet(w, steps);
+    switch (w->integrator) {
+    case DEMILL_INTEGRATOR_SYMPLECTIC_EULER: return euler(w, steps);
+    case DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT: return dm_refine_steps(w, steps);
+    default: return verlet(w, steps);
+    }
 }
 
 DEMILL_API demill_status demill_world_step(demill_world *w, uint64_t steps)

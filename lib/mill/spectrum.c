@@ -45,7 +45,8 @@ void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall_kind, 
     (*count)++;
 }
 
-static size_t spectrum_counters(const dm_spectrum *sp)
+/* The number of counters of a spectrum. */
+size_t dm_spectrum_counters(const dm_spectrum *sp)
 {
     const size_t C = sp->nclasses;
     return (C * (C + 1) / 2 + 2 * C) * sp->nbins;
@@ -84,7 +85,7 @@ DEMILL_API demill_status demill_drum_spectrum_start(demill_world *w, demill_id d
     dm_spectrum sp = {.nclasses = (uint32_t)nedges + 1, .nbins = nbins,
                       .log_min = log10(e_min), .log_span = log10(e_max) - log10(e_min)};
     sp.edges = malloc((nedges ? nedges : 1) * sizeof *sp.edges);
-    sp.counts = calloc(spectrum_counters(&sp), sizeof *sp.counts);
+    sp.counts = calloc(dm_spectrum_counters(&sp), sizeof *sp.counts);
     if (!sp.edges || !sp.counts) {
         free(sp.edges);
         free(sp.counts);
@@ -116,7 +117,7 @@ DEMILL_API demill_status demill_drum_spectrum(demill_world *w, demill_id drum, u
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_spectrum: no spectrum was started");
     if (!counts && !count)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_spectrum: counts and count are NULL");
-    const size_t n = spectrum_counters(sp);
+    const size_t n = dm_spectrum_counters(sp);
     if (count)
         *count = n;
     if (!counts)

@@ -127,8 +127,8 @@ static void snap_free(snap *s)
 
 static void snap_take(scene *sc, snap *s)
 {
-    static const int32_t world_keys[] = {100, 101, 102, 103, 104, 105, 106, 107,
-                                         108, 150, 151, 152, 153, 154, 155};
+    static const int32_t world_keys[] = {100, 101, 102, 103, 104, 105, 106, 107, 108, 110,
+                                         111, 150, 151, 152, 153, 154, 155, 156, 157, 158};
     demill_world *w = sc->w;
     demill_status st;
     memset(s, 0, sizeof *s);
@@ -577,7 +577,7 @@ static void both_dims(scene_fn setup, scene_fn bad, scene_fn fix)
 static void bad_world_set(scene *sc)
 {
     demill_world *w = sc->w;
-    for (int32_t key = 100; key <= 109; key++) {
+    for (int32_t key = 100; key <= 111; key++) {
         const char *name = demill_param_name(key);
         ck_assert_ptr_nonnull(name);
         /* NaN is also a nonzero gravity z in 2D, and disc thickness is 2D only */
@@ -605,6 +605,10 @@ static void bad_world_set(scene *sc)
         {DEMILL_WORLD_ENERGY_TRACKING, 0.5},
         {DEMILL_WORLD_THREADS, -1},           {DEMILL_WORLD_THREADS, 1.5},
         {DEMILL_WORLD_THREADS, 1025},
+        {DEMILL_WORLD_REFINE_TOLERANCE, 0.0},  {DEMILL_WORLD_REFINE_TOLERANCE, -1e-3},
+        {DEMILL_WORLD_REFINE_TOLERANCE, 1.5},
+        {DEMILL_WORLD_REFINE_MAX_ITERATIONS, 0}, {DEMILL_WORLD_REFINE_MAX_ITERATIONS, 101},
+        {DEMILL_WORLD_REFINE_MAX_ITERATIONS, 2.5},
     };
     for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
         ctx(sc, "world_set key %d = %g", (int)invalid[k].key, invalid[k].v);
@@ -634,13 +638,13 @@ static void bad_world_set(scene *sc)
     DM_OK(w, demill_world_get(w, DEMILL_WORLD_THREADS, &threads));
     ck_assert_double_eq(threads, st == DEMILL_OK ? 2 : 1);
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_THREADS, 1));
-    static const double integrators[] = {0, 3, 7, -1, 1000};
+    static const double integrators[] = {0, 4, 7, -1, 1000};
     for (size_t k = 0; k < sizeof integrators / sizeof integrators[0]; k++) {
         ctx(sc, "integrator %g", integrators[k]);
         BAD(sc, DEMILL_ERR_UNKNOWN_KEY,
             demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrators[k]), "world.integrator");
     }
-    static const int32_t unknown[] = {0,   1,   99,  110, 120,  149, 156, 199,
+    static const int32_t unknown[] = {0,   1,   99,  112, 120,  149, 159, 199,
                                       200, 250, 300, 399, -1, 2147483647, -2147483647 - 1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
@@ -652,7 +656,7 @@ static void bad_world_set(scene *sc)
         BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_world_get(w, unknown[k], &v), num);
         ck_assert_msg(v == 42.0, "world_get wrote %g for unknown key %d", v, (int)unknown[k]);
     }
-    for (int32_t key = 150; key <= 155; key++) {
+    for (int32_t key = 150; key <= 158; key++) {
         double cur;
         DM_OK(w, demill_world_get(w, key, &cur));
         const double tries[2] = {cur, cur + 1};
@@ -662,7 +666,7 @@ static void bad_world_set(scene *sc)
                 demill_param_name(key), "read");
         }
     }
-    for (int32_t key = 100; key <= 155; key += (key == 109 ? 41 : 1)) {
+    for (int32_t key = 100; key <= 158; key += (key == 111 ? 39 : 1)) {
         ctx(sc, "world_get key %d into NULL", (int)key);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_world_get(w, key, NULL), "NULL");
     }

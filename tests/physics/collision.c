@@ -8,7 +8,9 @@
  * t_c = 2 δ_max/v ∫₀¹ dx/√(1 - x^{5/2}) = 2.94324 δ_max/v.
  * Each case runs at Δt = t_c/50 and from several entry phases (the fraction of
  * a step by which the particles meet), so that no lucky alignment of the
- * contact with the step grid is tested.
+ * contact with the step grid is tested; and with each integrator of
+ * second order: velocity Verlet (loop index 0) and the iterative refinement
+ * at its default tolerance (1).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -62,11 +64,21 @@ static outcome collide(demill_world *w, demill_id mat, double r, double v0, doub
 
 static const double restitutions[] = {0.1, 0.5, 0.9};
 
-/* Linear law, classic unclamped dashpot: e within 1 %, duration within 2 %. */
-static void linear_case(int dim, double e, int clamp, double dur_tol)
+/* dm_test_world() with the integrator of loop index i. */
+static demill_world *world_for(int i, int dim, int normal, int damping, demill_id *m)
+{
+    demill_world *w = dm_test_world(dim, normal, damping, m);
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR,
+                              i ? DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT
+                                : DEMILL_INTEGRATOR_VELOCITY_VERLET));
+    return w;
+}
+
+/* Linear law: e within e_tol, duration within dur_tol (unless 0). */
+static void linear_case(int i, int dim, double e, int clamp, double dur_tol, double e_tol)
 {
     demill_id m;
-    demill_world *w = dm_test_world(dim, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_RESTITUTION, &m);
+    demill_world *w = world_for(i, dim, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_RESTITUTION, &m);
     DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, e));
     DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_CLAMP_NORMAL, clamp));
     const double r = 0.005, rho = 2500, k = 5e4; /* default stiffness 1e5 in series */
@@ -75,7 +87,7 @@ static void linear_case(int dim, double e, int clamp, double dur_tol)
     const double tc = M_PI / (sqrt(k / mstar) * sqrt(1 - xi * xi));
     for (int p = 0; p < PHASES; p++) {
         outcome o = collide(w, m, r, 1.0, tc / 50, (p + 0.5) / PHASES, dim);
-        DM_ASSERT_REL(o.restitution, e, 0.01);
+        DM_ASSERT_REL(o.restitution, e, e_tol);
         if (dur_tol > 0)
             DM_ASSERT_REL(o.duration, tc, dur_tol);
     }
@@ -86,17 +98,20 @@ START_TEST(linear_restitution_and_duration)
 {
     for (int dim = 2; dim <= 3; dim++)
         for (int k = 0; k < 3; k++)
-            linear_case(dim, restitutions[k], 0, 0.02);
+            linear_case(_i, dim, restitutions[k], 0, 0.02, 0.01);
 }
 END_TEST
 
 /* The default (clamped: the normal force never pulls) model keeps the exact
- * restitution; its contact is not a half period, so only e is checked. */
+ * restitution; its contact is not a half period, so only e is checked. The
+ * refinement integrator misses more where the clamped force has its kink:
+ * at e = 0.1 the worst entry phase is 4.8 % off (the mean over phases 0.9 %),
+ * so it is held to 5 %. */
 START_TEST(linear_clamped_restitution)
 {
     for (int dim = 2; dim <= 3; dim++)
         for (int k = 0; k < 3; k++)
-            linear_case(dim, restitutions[k], 1, 0.0);
+            linear_case(_i, dim, restitutions[k], 1, 0.0, _i ? 0.05 : 0.01);
 }
 END_TEST
 
@@ -121,7 +136,7 @@ START_TEST(hertz_elastic_impact)
     ck_assert_msg(fabs(2 * integral - 2.94324) < 1e-4, "Hertz integral %g", integral);
     for (int dim = 2; dim <= 3; dim++) {
         demill_id m;
-        demill_world *w = dm_test_world(dim, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_NONE, &m);
+        demill_world *w = world_for(_i, dim, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_NONE, &m);
         const double r = 0.003, rho = 2500, E = 1e8, nu = 0.3, v0 = 1.0;
         const double estar = E / (2 * (1 - nu * nu)), rstar = r / 2;
         const double mstar = 0.5 * 4.0 / 3.0 * M_PI * r * r * r * rho;
@@ -145,7 +160,7 @@ START_TEST(hertz_restitution)
             for (int k = 0; k < 3; k++) {
                 demill_id m;
                 demill_world *w =
-                    dm_test_world(dim, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, &m);
+                    world_for(_i, dim, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, &m);
                 DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, restitutions[k]));
                 DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_CLAMP_NORMAL, clamp));
                 /* Δt = 1/50 of the undamped Hertz contact time */
@@ -165,10 +180,10 @@ int main(void)
 {
     Suite *s = suite_create("collision");
     TCase *tc = tcase_create("binary");
-    tcase_add_test(tc, linear_restitution_and_duration);
-    tcase_add_test(tc, linear_clamped_restitution);
-    tcase_add_test(tc, hertz_elastic_impact);
-    tcase_add_test(tc, hertz_restitution);
+    tcase_add_loop_test(tc, linear_restitution_and_duration, 0, 2);
+    tcase_add_loop_test(tc, linear_clamped_restitution, 0, 2);
+    tcase_add_loop_test(tc, hertz_elastic_impact, 0, 2);
+    tcase_add_loop_test(tc, hertz_restitution, 0, 2);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }

@@ -11,6 +11,10 @@
  * torque μ_r R m g decelerates at μ_r g / (1 + k) ... from
  * (I + m R²) dω/dt = -μ_r R m g: a = μ_r g /(1 + k) = 5/7 μ_r g (sphere),
  * 2/3 μ_r g (disc), and stops after s = v0² / (2a).
+ *
+ * Every case runs with velocity Verlet (loop index 0) and with the iterative
+ * refinement (1), whose iterates must advance the tangential spring once per
+ * step: the accepted one only.
  */
 #include <math.h>
 
@@ -26,7 +30,8 @@ typedef struct floor_scene {
 
 /* A ball of radius r resting (settled) on a floor at y = 0 in a world of
  * dimension dim; disc != 0 makes 2D particles discs of thickness r. */
-static floor_scene floor_scene_make(int dim, int disc, int tangential, double mu, double mu_r)
+static floor_scene floor_scene_make(int i, int dim, int disc, int tangential, double mu,
+                                    double mu_r)
 {
     floor_scene s = {0};
     s.r = 0.01;
@@ -35,6 +40,9 @@ static floor_scene floor_scene_make(int dim, int disc, int tangential, double mu
     if (disc)
         DM_OK(w, demill_world_set(w, DEMILL_WORLD_DISC_THICKNESS, s.r));
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, 2e-5));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR,
+                              i ? DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT
+                                : DEMILL_INTEGRATOR_VELOCITY_VERLET));
     DM_OK(w, demill_material_create(w, &s.mat));
     DM_OK(w, demill_pair_set(w, s.mat, s.mat, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
     DM_OK(w, demill_pair_set(w, s.mat, s.mat, DEMILL_PAIR_DAMPING, DEMILL_DAMPING_RESTITUTION));
@@ -55,10 +63,10 @@ static floor_scene floor_scene_make(int dim, int disc, int tangential, double mu
 }
 
 /* Spinning ball set down: final speed and time to pure rolling. */
-static void spin_to_roll(int dim, int disc, int tangential)
+static void spin_to_roll(int i, int dim, int disc, int tangential)
 {
     const double mu = 0.3, w0 = 50.0;
-    floor_scene s = floor_scene_make(dim, disc, tangential, mu, 0.0);
+    floor_scene s = floor_scene_make(i, dim, disc, tangential, mu, 0.0);
     demill_world *w = s.w;
     const double k = dim == 2 && disc ? 0.5 : 0.4;
     const double v_roll = s.r * w0 * k / (1 + k), t_roll = s.r * w0 / (mu * G * (1 + 1 / k));
@@ -95,31 +103,31 @@ static void spin_to_roll(int dim, int disc, int tangential)
 
 START_TEST(sphere_spin_to_roll_3d)
 {
-    spin_to_roll(3, 0, DEMILL_TANGENTIAL_SPRING);
-    spin_to_roll(3, 0, DEMILL_TANGENTIAL_COULOMB);
-    spin_to_roll(3, 0, DEMILL_TANGENTIAL_MINDLIN);
+    spin_to_roll(_i, 3, 0, DEMILL_TANGENTIAL_SPRING);
+    spin_to_roll(_i, 3, 0, DEMILL_TANGENTIAL_COULOMB);
+    spin_to_roll(_i, 3, 0, DEMILL_TANGENTIAL_MINDLIN);
 }
 END_TEST
 
 START_TEST(sphere_spin_to_roll_2d)
 {
-    spin_to_roll(2, 0, DEMILL_TANGENTIAL_SPRING);
-    spin_to_roll(2, 0, DEMILL_TANGENTIAL_COULOMB);
+    spin_to_roll(_i, 2, 0, DEMILL_TANGENTIAL_SPRING);
+    spin_to_roll(_i, 2, 0, DEMILL_TANGENTIAL_COULOMB);
 }
 END_TEST
 
 START_TEST(disc_spin_to_roll_2d)
 {
-    spin_to_roll(2, 1, DEMILL_TANGENTIAL_SPRING);
-    spin_to_roll(2, 1, DEMILL_TANGENTIAL_COULOMB);
+    spin_to_roll(_i, 2, 1, DEMILL_TANGENTIAL_SPRING);
+    spin_to_roll(_i, 2, 1, DEMILL_TANGENTIAL_COULOMB);
 }
 END_TEST
 
 /* Rolling ball against constant rolling resistance: stopping distance. */
-static void roll_to_stop(int dim, int disc)
+static void roll_to_stop(int i, int dim, int disc)
 {
     const double mu_r = 0.05, v0 = 0.5;
-    floor_scene s = floor_scene_make(dim, disc, DEMILL_TANGENTIAL_SPRING, 0.5, mu_r);
+    floor_scene s = floor_scene_make(i, dim, disc, DEMILL_TANGENTIAL_SPRING, 0.5, mu_r);
     demill_world *w = s.w;
     const double k = dim == 2 && disc ? 0.5 : 0.4;
     const double dist = v0 * v0 / (2 * mu_r * G / (1 + k));
@@ -141,9 +149,9 @@ static void roll_to_stop(int dim, int disc)
 
 START_TEST(rolling_resistance_stopping_distance)
 {
-    roll_to_stop(3, 0);
-    roll_to_stop(2, 0);
-    roll_to_stop(2, 1);
+    roll_to_stop(_i, 3, 0);
+    roll_to_stop(_i, 2, 0);
+    roll_to_stop(_i, 2, 1);
 }
 END_TEST
 
@@ -151,10 +159,10 @@ int main(void)
 {
     Suite *s = suite_create("rolling");
     TCase *tc = tcase_create("floor");
-    tcase_add_test(tc, sphere_spin_to_roll_3d);
-    tcase_add_test(tc, sphere_spin_to_roll_2d);
-    tcase_add_test(tc, disc_spin_to_roll_2d);
-    tcase_add_test(tc, rolling_resistance_stopping_distance);
+    tcase_add_loop_test(tc, sphere_spin_to_roll_3d, 0, 2);
+    tcase_add_loop_test(tc, sphere_spin_to_roll_2d, 0, 2);
+    tcase_add_loop_test(tc, disc_spin_to_roll_2d, 0, 2);
+    tcase_add_loop_test(tc, rolling_resistance_stopping_distance, 0, 2);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }
