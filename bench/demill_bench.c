@@ -58,6 +58,7 @@ static void usage(FILE *f)
           "  --steps N               timed steps [10000]\n"
           "  --settle S --rotate S   seconds before the timed window [0.3 0.3]\n"
           "  --energy                keep the energy tally on\n"
+          "  --no-watchdog           switch the stability watchdog off\n"
           "  --dump-packing FILE     write the initial packing (x y z r) and exit\n",
           f);
 }
@@ -76,7 +77,7 @@ int main(int argc, char **argv)
     const char *scene = "drum3d", *dump = NULL;
     long particles = 0, threads = 1, steps = 10000;
     double settle = 0.3, rotate = 0.3;
-    int energy = 0;
+    int energy = 0, watchdog = 1;
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
         if (!strcmp(a, "--help")) {
@@ -84,6 +85,8 @@ int main(int argc, char **argv)
             return EXIT_SUCCESS;
         } else if (!strcmp(a, "--energy")) {
             energy = 1;
+        } else if (!strcmp(a, "--no-watchdog")) {
+            watchdog = 0;
         } else if (!v) {
             fprintf(stderr, "demill_bench: %s needs a value\n", a);
             return EXIT_FAILURE;
@@ -154,6 +157,7 @@ int main(int argc, char **argv)
         return EXIT_FAILURE;
     fail(w, demill_world_set(w, DEMILL_WORLD_THREADS, (double)threads), "threads");
     fail(w, demill_world_set(w, DEMILL_WORLD_ENERGY_TRACKING, energy), "energy tracking");
+    fail(w, demill_world_set(w, DEMILL_WORLD_WATCHDOG, watchdog), "watchdog");
     fail(w, demill_particles_add(w, steel, (size_t)particles, pos, rad, NULL, 0, NULL), "charge");
     free(pos);
     free(rad);

@@ -24,6 +24,28 @@ static void add_stored(void *ctx, const dm_contact_eval *c)
     e[1] += c->e_tangential;
 }
 
+/* The energies of the current state: translational and rotational kinetic,
+ * potential and, with stored, the elastic energy of normal and tangential
+ * springs (e[3], e[4]; left 0 otherwise). */
+demill_status dm_energies(demill_world *w, int stored, double e[5])
+{
+    const dm_particles *P = &w->p;
+    const int D = w->dim, W = D == 3 ? 3 : 1;
+    memset(e, 0, 5 * sizeof *e);
+    for (uint32_t i = 0; i < P->n; i++) {
+        for (int c = 0; c < D; c++) {
+            e[0] += 0.5 * P->m[i] * P->v[D * i + c] * P->v[D * i + c];
+            e[2] -= P->m[i] * w->g[c] * P->x[D * i + c];
+        }
+        for (int c = 0; c < W; c++)
+            e[1] += 0.5 * P->w[W * i + c] * P->w[W * i + c] / P->iinv[i];
+    }
+    demill_status s = DEMILL_OK;
+    if (stored && !(s = prepare_query(w)))
+        dm_contacts_visit(w, add_stored, e + 3);
+    return s;
+}
+
 DEMILL_API demill_status demill_world_energy(demill_world *w, int32_t term, double *value)
 {
     demill_status s = dm_check_world(w);
@@ -34,23 +56,13 @@ DEMILL_API demill_status demill_world_energy(demill_world *w, int32_t term, doub
     if (term < DEMILL_ENERGY_KINETIC_TRANSLATIONAL || term > DEMILL_ENERGY_TOTAL)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_energy: %d is not an energy term",
                        (int)term);
-    const dm_particles *P = &w->p;
-    const int D = w->dim, W = D == 3 ? 3 : 1;
-    double kt = 0.0, kr = 0.0, pot = 0.0, stored[2] = {0.0, 0.0};
-    for (uint32_t i = 0; i < P->n; i++) {
-        for (int c = 0; c < D; c++) {
-            kt += 0.5 * P->m[i] * P->v[D * i + c] * P->v[D * i + c];
-            pot -= P->m[i] * w->g[c] * P->x[D * i + c];
-        }
-        for (int c = 0; c < W; c++)
-            kr += 0.5 * P->w[W * i + c] * P->w[W * i + c] / P->iinv[i];
-    }
-    if (term == DEMILL_ENERGY_ELASTIC_NORMAL || term == DEMILL_ENERGY_ELASTIC_TANGENTIAL ||
-        term == DEMILL_ENERGY_TOTAL) {
-        if ((s = prepare_query(w)))
-            return s;
-        dm_contacts_visit(w, add_stored, stored);
-    }
+    double e[5];
+    if ((s = dm_energies(w, term == DEMILL_ENERGY_ELASTIC_NORMAL ||
+                                term == DEMILL_ENERGY_ELASTIC_TANGENTIAL ||
+                                term == DEMILL_ENERGY_TOTAL,
+                         e)))
+        return s;
+    const double kt = e[0], kr = e[1], pot = e[2], stored[2] = {e[3], e[4]};
     const dm_tally *t = &w->tally;
     double diss = t->diss_normal + t->diss_tangential + t->diss_friction + t->diss_rolling;
     switch (term) {

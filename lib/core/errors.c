@@ -40,6 +40,12 @@ void dm_clear_error(demill_world *w)
     w->error[0] = '\0';
 }
 
+void dm_changed(demill_world *w)
+{
+    w->edits++;
+    dm_clear_error(w);
+}
+
 demill_status dm_check_world(const demill_world *w)
 {
     if (!w)

@@ -310,6 +310,22 @@ typedef struct dm_refine {
     dm_tally tally;
 } dm_refine;
 
+/* ---- the watchdog (integrate/watchdog.c) ------------------------------------ */
+/* Energies of a state: kinetic, potential, elastic, dissipated (tallied) and
+ * the work walls did so far (tallied, or the drum's measured). */
+typedef struct dm_watch_energy {
+    double kinetic, potential, elastic, dissipated, work;
+} dm_watch_energy;
+
+typedef struct dm_watch {
+    struct demill_world *good; /* the last state that passed, NULL until taken */
+    uint64_t edits;            /* the world's edits when it was taken */
+    uint32_t countdown;        /* steps to the next check */
+    dm_watch_energy start, last; /* at the start of the run and at the last check */
+    double peak, pmin, pmax;     /* since the start: largest kinetic + elastic energy,
+                                    smallest and largest potential energy */
+} dm_watch;
+
 /* ---- the world ------------------------------------------------------------- */
 #define DM_WORLD_MAGIC 0x64656d696c6cu /* "demill" */
 
@@ -329,6 +345,11 @@ struct demill_world {
     uint32_t iterations_last;     /* force evaluations of the last step */
     uint64_t force_evals, unconverged;
     dm_refine refine;
+    int watchdog;           /* world.watchdog, and its limits */
+    double watch_overlap;
+    uint32_t watch_interval;
+    dm_watch watch;
+    uint64_t edits;         /* calls that may have changed the world (dm_changed) */
     char error[512];
 
     /* materials */
@@ -379,6 +400,8 @@ demill_status dm_fail(demill_world *w, demill_status code, const char *fmt, ...)
     ;
 demill_status dm_check_world(const demill_world *w);
 void dm_clear_error(demill_world *w);
+/* The end of a call that succeeded and may have changed the world. */
+void dm_changed(demill_world *w);
 
 /* alloc.c */
 int dm_grow_arrays(void **const *arrays, const size_t *sizes, size_t n, size_t cap);
@@ -498,6 +521,17 @@ demill_status dm_drum_prepare(demill_world *w);
 /* integrate/integrate.c */
 demill_status dm_integrate(demill_world *w, uint64_t steps);
 demill_status dm_prepare_step(demill_world *w);
+
+/* core/snapshot.c */
+demill_status dm_state_copy(demill_world *dst, const demill_world *src);
+void dm_state_free(demill_world *s);
+
+/* core/energy.c */
+demill_status dm_energies(demill_world *w, int stored, double e[5]);
+
+/* integrate/watchdog.c */
+demill_status dm_watched_steps(demill_world *w, uint64_t steps);
+void dm_watch_free(demill_world *w);
 
 /* integrate/refine.c */
 demill_status dm_refine_steps(demill_world *w, uint64_t steps);

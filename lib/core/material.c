@@ -24,7 +24,7 @@ DEMILL_API demill_status demill_material_create(demill_world *w, demill_id *out)
     *out = dm_material_id(w, w->nmat);
     w->nmat++;
     w->ptab_dirty = true;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -80,7 +80,7 @@ DEMILL_API demill_status demill_material_set(demill_world *w, demill_id material
     }
     w->ptab_dirty = true;
     w->forces_valid = false;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -240,7 +240,7 @@ DEMILL_API demill_status demill_pair_set(demill_world *w, demill_id a, demill_id
     }
     w->ptab_dirty = true;
     w->forces_valid = false;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 

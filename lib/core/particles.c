@@ -170,7 +170,7 @@ DEMILL_API demill_status demill_particles_add(demill_world *w, demill_id materia
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "particles_add: unknown flags 0x%x",
                        (unsigned)flags);
     if (n == 0) {
-        dm_clear_error(w);
+        dm_changed(w);
         return DEMILL_OK;
     }
     if (!positions || !radii)
@@ -191,7 +191,7 @@ DEMILL_API demill_status demill_particles_add(demill_world *w, demill_id materia
         return s;
     if ((s = dm_particles_append(w, mat, n, positions, radii, velocities, ids)))
         return s;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -253,7 +253,7 @@ DEMILL_API demill_status demill_particles_remove(demill_world *w, size_t n, cons
     if (s)
         return s;
     if (n == 0) {
-        dm_clear_error(w);
+        dm_changed(w);
         return DEMILL_OK;
     }
     if (!ids)
@@ -309,7 +309,7 @@ DEMILL_API demill_status demill_particles_remove(demill_world *w, size_t n, cons
     w->res.valid = false;
     w->ptab_dirty = true;
     w->forces_valid = false;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -501,7 +501,7 @@ DEMILL_API demill_status demill_particles_write(demill_world *w, int32_t field, 
         if (i != DM_FREE)
             set_one(w, i, field, in + (size_t)size * k++);
     }
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -535,6 +535,6 @@ DEMILL_API demill_status demill_particle_set(demill_world *w, demill_id particle
     if ((s = check_one(w, field, in, who)))
         return s;
     set_one(w, i, field, in);
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }

@@ -40,6 +40,9 @@ DEMILL_API demill_status demill_world_create(int32_t dimension, demill_world **o
     w->threads = (int)param_default(DEMILL_WORLD_THREADS);
     w->refine_tol = param_default(DEMILL_WORLD_REFINE_TOLERANCE);
     w->refine_max = (int)param_default(DEMILL_WORLD_REFINE_MAX_ITERATIONS);
+    w->watchdog = (int)param_default(DEMILL_WORLD_WATCHDOG);
+    w->watch_overlap = param_default(DEMILL_WORLD_WATCHDOG_OVERLAP);
+    w->watch_interval = (uint32_t)param_default(DEMILL_WORLD_WATCHDOG_INTERVAL);
     w->ptab_dirty = true;
     dm_clist_clear(w);
     *out = w;
@@ -55,6 +58,7 @@ DEMILL_API void demill_world_destroy(demill_world *w)
     dm_results_free(w);
     dm_spectrum_free(w);
     dm_refine_free(w);
+    dm_watch_free(w);
     dm_handles_free(&w->wh);
     free(w->walls);
     free(w->pairs);
@@ -110,15 +114,24 @@ DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double v
     case DEMILL_WORLD_THREADS: /* changes no result */
         if ((s = set_threads(w, (int)value)))
             return s;
-        dm_clear_error(w);
+        dm_changed(w);
         return DEMILL_OK;
-    case DEMILL_WORLD_REFINE_TOLERANCE: /* affect the next steps only */
+    case DEMILL_WORLD_REFINE_TOLERANCE: /* these affect the next steps only */
     case DEMILL_WORLD_REFINE_MAX_ITERATIONS:
+    case DEMILL_WORLD_WATCHDOG:
+    case DEMILL_WORLD_WATCHDOG_OVERLAP:
+    case DEMILL_WORLD_WATCHDOG_INTERVAL:
         if (key == DEMILL_WORLD_REFINE_TOLERANCE)
             w->refine_tol = value;
-        else
+        else if (key == DEMILL_WORLD_REFINE_MAX_ITERATIONS)
             w->refine_max = (int)value;
-        dm_clear_error(w);
+        else if (key == DEMILL_WORLD_WATCHDOG)
+            w->watchdog = (int)value;
+        else if (key == DEMILL_WORLD_WATCHDOG_OVERLAP)
+            w->watch_overlap = value;
+        else
+            w->watch_interval = (uint32_t)value;
+        dm_changed(w);
         return DEMILL_OK;
     case DEMILL_WORLD_TIME:
         dm_walls_retime(w, value);
@@ -128,7 +141,7 @@ DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double v
         break;
     }
     w->forces_valid = false;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -153,6 +166,9 @@ DEMILL_API demill_status demill_world_get(const demill_world *cw, int32_t key, d
     case DEMILL_WORLD_THREADS: *value = w->threads; break;
     case DEMILL_WORLD_REFINE_TOLERANCE: *value = w->refine_tol; break;
     case DEMILL_WORLD_REFINE_MAX_ITERATIONS: *value = w->refine_max; break;
+    case DEMILL_WORLD_WATCHDOG: *value = w->watchdog; break;
+    case DEMILL_WORLD_WATCHDOG_OVERLAP: *value = w->watch_overlap; break;
+    case DEMILL_WORLD_WATCHDOG_INTERVAL: *value = w->watch_interval; break;
     case DEMILL_WORLD_DIMENSION: *value = w->dim; break;
     case DEMILL_WORLD_STEP_COUNT: *value = (double)w->steps; break;
     case DEMILL_WORLD_PARTICLE_COUNT: *value = w->p.n; break;

@@ -398,7 +398,7 @@ DEMILL_API demill_status demill_wall_add_plane(demill_world *w, demill_id materi
     w->ptab_dirty = true;
     w->nlist_valid = false;
     w->forces_valid = false;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -415,7 +415,7 @@ DEMILL_API demill_status demill_wall_remove(demill_world *w, demill_id id)
     wall->kind = 0;
     w->ptab_dirty = true;
     w->forces_valid = false;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -445,7 +445,7 @@ DEMILL_API demill_status demill_wall_set_motion(demill_world *w, demill_id id,
         wall->omega[c] = angular_velocity ? angular_velocity[c] : 0.0;
     }
     w->forces_valid = false;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 

@@ -254,7 +254,8 @@ DEMILL_API demill_status demill_world_step(demill_world *w, uint64_t steps)
     demill_status s = dm_check_world(w);
     if (s)
         return s;
-    if ((s = dm_prepare_step(w)) || (s = dm_integrate(w, steps)))
+    if ((s = dm_prepare_step(w)) ||
+        (s = w->watchdog ? dm_watched_steps(w, steps) : dm_integrate(w, steps)))
         return s;
     dm_clear_error(w);
     return DEMILL_OK;

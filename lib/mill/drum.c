@@ -272,7 +272,7 @@ DEMILL_API demill_status demill_drum_create(demill_world *w, demill_id material,
         return s;
     }
     *out = dm_drum_id(w);
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -297,7 +297,7 @@ DEMILL_API demill_status demill_drum_remove(demill_world *w, demill_id drum)
     w->ptab_dirty = true;
     w->nlist_valid = false;
     w->forces_valid = false;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -357,7 +357,7 @@ DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_
         }
     }
     w->forces_valid = false;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 
@@ -391,7 +391,7 @@ DEMILL_API demill_status demill_drum_add_lifter(demill_world *w, demill_id drum,
         *d = saved;
         return s;
     }
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 

@@ -264,7 +264,7 @@ DEMILL_API demill_status demill_drum_fill(demill_world *w, demill_id drum, demil
     if (!s) {
         if (added)
             *added = n;
-        dm_clear_error(w);
+        dm_changed(w);
     }
     return s;
 }
@@ -295,6 +295,6 @@ DEMILL_API demill_status demill_world_settle(demill_world *w, double max_time,
     }
     if (settled)
         *settled = calm;
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }

@@ -101,7 +101,7 @@ DEMILL_API demill_status demill_drum_spectrum_start(demill_world *w, demill_id d
         w->events = true;
         w->nlist_valid = false;
     }
-    dm_clear_error(w);
+    dm_changed(w);
     return DEMILL_OK;
 }
 

@@ -128,7 +128,8 @@ static void snap_free(snap *s)
 static void snap_take(scene *sc, snap *s)
 {
     static const int32_t world_keys[] = {100, 101, 102, 103, 104, 105, 106, 107, 108, 110,
-                                         111, 150, 151, 152, 153, 154, 155, 156, 157, 158};
+                                         111, 112, 113, 114, 150, 151, 152, 153, 154, 155,
+                                         156, 157, 158};
     demill_world *w = sc->w;
     demill_status st;
     memset(s, 0, sizeof *s);
@@ -577,7 +578,7 @@ static void both_dims(scene_fn setup, scene_fn bad, scene_fn fix)
 static void bad_world_set(scene *sc)
 {
     demill_world *w = sc->w;
-    for (int32_t key = 100; key <= 111; key++) {
+    for (int32_t key = 100; key <= 114; key++) {
         const char *name = demill_param_name(key);
         ck_assert_ptr_nonnull(name);
         /* NaN is also a nonzero gravity z in 2D, and disc thickness is 2D only */
@@ -609,6 +610,10 @@ static void bad_world_set(scene *sc)
         {DEMILL_WORLD_REFINE_TOLERANCE, 1.5},
         {DEMILL_WORLD_REFINE_MAX_ITERATIONS, 0}, {DEMILL_WORLD_REFINE_MAX_ITERATIONS, 101},
         {DEMILL_WORLD_REFINE_MAX_ITERATIONS, 2.5},
+        {DEMILL_WORLD_WATCHDOG, 2},            {DEMILL_WORLD_WATCHDOG, 0.5},
+        {DEMILL_WORLD_WATCHDOG_OVERLAP, 0.0},  {DEMILL_WORLD_WATCHDOG_OVERLAP, 1.01},
+        {DEMILL_WORLD_WATCHDOG_INTERVAL, 0},   {DEMILL_WORLD_WATCHDOG_INTERVAL, 1.5},
+        {DEMILL_WORLD_WATCHDOG_INTERVAL, 2e6},
     };
     for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
         ctx(sc, "world_set key %d = %g", (int)invalid[k].key, invalid[k].v);
@@ -644,7 +649,7 @@ static void bad_world_set(scene *sc)
         BAD(sc, DEMILL_ERR_UNKNOWN_KEY,
             demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrators[k]), "world.integrator");
     }
-    static const int32_t unknown[] = {0,   1,   99,  112, 120,  149, 159, 199,
+    static const int32_t unknown[] = {0,   1,   99,  115, 120,  149, 159, 199,
                                       200, 250, 300, 399, -1, 2147483647, -2147483647 - 1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
@@ -666,7 +671,7 @@ static void bad_world_set(scene *sc)
                 demill_param_name(key), "read");
         }
     }
-    for (int32_t key = 100; key <= 158; key += (key == 111 ? 39 : 1)) {
+    for (int32_t key = 100; key <= 158; key += (key == 114 ? 36 : 1)) {
         ctx(sc, "world_get key %d into NULL", (int)key);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_world_get(w, key, NULL), "NULL");
     }

@@ -1,0 +1,274 @@
+/* watchdog.c: the stability watchdog (PHYSICS.md §8): steps in stretches
+ * of world.watchdog_interval, checks the state after each, and keeps a copy
+ * of the last state that passed, to which the world returns when a check
+ * fails.
+ *
+ * The checks, in order:
+ *  - positions, velocities and angular velocities are finite;
+ *  - no contact overlaps by more than world.watchdog_overlap of its smaller
+ *    radius (a wall counts as infinitely large);
+ *  - energy is not created. With energy tracking on (the default) the
+ *    balance kinetic + potential + elastic + dissipated - wall work may not
+ *    have grown since the run started by more than a quarter of the energy
+ *    that went through the system since (the largest kinetic + elastic
+ *    energy and the range of potential energy seen at checks, the energy
+ *    dissipated and the work of the walls): the integrators' own errors are
+ *    far smaller than that at any stable step, an instability soon far
+ *    larger. With tracking off, the kinetic energy may be at most twice what
+ *    the last checked state could supply (its kinetic and elastic energy,
+ *    the potential energy released and the drum's work since); where walls
+ *    other than the drum move, nothing measures their work and this check
+ *    is left out.
+ * A fresh copy is taken when a run starts after the world was changed
+ * through the API (dm_changed), so that a failure never undoes the caller's
+ * own changes. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../core/internal.h"
+
+void dm_watch_free(demill_world *w)
+{
+    if (w->watch.good) {
+        dm_state_free(w->watch.good);
+        free(w->watch.good);
+    }
+    memset(&w->watch, 0, sizeof w->watch);
+}
+
+/* The energies of the current state; 0 with *unknown set when walls other
+ * than the drum's move and nothing tallies their work. */
+static demill_status energies(demill_world *w, dm_watch_energy *e, int *unknown)
+{
+    double t[5];
+    demill_status s = dm_energies(w, 1, t);
+    const dm_tally *y = &w->tally;
+    e->kinetic = t[0] + t[1];
+    e->potential = t[2];
+    e->elastic = t[3] + t[4];
+    e->dissipated = y->diss_normal + y->diss_tangential + y->diss_friction + y->diss_rolling;
+    e->work = w->energy_tracking ? y->wall_work : w->drum.alive ? w->drum.energy_in : 0.0;
+    *unknown = 0;
+    for (uint32_t k = 0; k < w->nwalls && !w->energy_tracking; k++) {
+        const dm_wall *wall = &w->walls[k];
+        if (wall->kind && !wall->drum_part)
+            for (int c = 0; c < 3; c++)
+                *unknown |= wall->vel[c] != 0.0 || wall->omega[c] != 0.0;
+    }
+    return s;
+}
+
+/* Copies the current state as the last good one; start: it also starts a
+ * run (the energy balance is measured from here). */
+static demill_status take(demill_world *w, int start)
+{
+    dm_watch *g = &w->watch;
+    int unknown;
+    if (!g->good && !(g->good = calloc(1, sizeof *g->good)))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory copying the state");
+    demill_status s = energies(w, &g->last, &unknown);
+    if (s || (s = dm_state_copy(g->good, w)))
+        return s == DEMILL_ERR_OUT_OF_MEMORY
+                   ? dm_fail(w, s, "out of memory copying the state for the watchdog")
+                   : s;
+    const dm_watch_energy *e = &g->last;
+    if (start) {
+        g->start = *e;
+        g->peak = 0.0;
+        g->pmin = g->pmax = e->potential;
+    }
+    g->peak = fmax(g->peak, e->kinetic + e->elastic);
+    g->pmin = fmin(g->pmin, e->potential);
+    g->pmax = fmax(g->pmax, e->potential);
+    g->edits = w->edits;
+    return DEMILL_OK;
+}
+
+/* ---- the checks ------------------------------------------------------------ */
+
+/* A check that failed: what, about which particle, and the likely cause. */
+typedef struct verdict {
+    char what[200];
+    uint32_t particle;
+    const char *cause;
+} verdict;
+
+static int finite_check(const demill_world *w, verdict *v)
+{
+    const dm_particles *P = &w->p;
+    const int D = w->dim, W = D == 3 ? 3 : 1;
+    for (uint32_t i = 0; i < P->n; i++) {
+        double sum = 0.0; /* NaN or infinite if any term is */
+        for (int c = 0; c < D; c++)
+            sum += P->x[D * i + c] * 0.0 + P->v[D * i + c] * 0.0;
+        for (int c = 0; c < W; c++)
+            sum += P->w[W * i + c] * 0.0;
+        if (sum != 0.0) {
+            snprintf(v->what, sizeof v->what, "the position or velocity is not finite");
+            v->particle = i;
+            v->cause = "the motion blew up: the time step is too large for the contact "
+                       "stiffness (see demill_world_suggest_time_step())";
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int overlap_check(const demill_world *w, verdict *v)
+{
+    const dm_particles *P = &w->p;
+    const int D = w->dim;
+    double worst = w->watch_overlap, depth = 0.0;
+    uint32_t who = 0, other = DM_FREE;
+    for (int k = 0; k < DM_KERNELS; k++) {
+        const dm_bucket *b = &w->pp.b[k];
+        for (uint32_t p = 0; p < b->n; p++) {
+            const uint32_t i = b->i[p], j = b->j[p];
+            double d2 = 0.0;
+            for (int c = 0; c < D; c++) {
+                const double d = P->x[D * j + c] - P->x[D * i + c];
+                d2 += d * d;
+            }
+            const double delta = P->r[i] + P->r[j] - sqrt(d2);
+            const double ratio = delta / fmin(P->r[i], P->r[j]);
+            if (ratio > worst) {
+                worst = ratio;
+                depth = delta;
+                who = i;
+                other = j;
+            }
+        }
+    }
+    uint32_t g0 = 0, wall = DM_FREE;
+    for (int k = 0; k < DM_KERNELS; k++) {
+        const dm_bucket *b = &w->pw.b[k];
+        for (uint32_t p = 0; p < b->n; p++) {
+            const double ratio = w->wg.delta[g0 + p] / P->r[b->i[p]];
+            if (ratio > worst) {
+                worst = ratio;
+                depth = w->wg.delta[g0 + p];
+                who = b->i[p];
+                other = DM_FREE;
+                wall = b->j[p];
+            }
+        }
+        g0 += b->n;
+    }
+    if (worst <= w->watch_overlap)
+        return 0;
+    if (other != DM_FREE)
+        snprintf(v->what, sizeof v->what,
+                 "it overlaps particle 0x%llx by %.3g m, %.0f %% of the smaller radius",
+                 (unsigned long long)dm_particle_id(w, other), depth, 100.0 * worst);
+    else
+        snprintf(v->what, sizeof v->what,
+                 "it overlaps wall 0x%llx by %.3g m, %.0f %% of its radius",
+                 (unsigned long long)dm_wall_id(w, wall), depth, 100.0 * worst);
+    v->particle = who;
+    v->cause = "the time step is too large for the contact stiffness or the impact speeds "
+               "(see demill_world_suggest_time_step()), or the stiffness too low for the "
+               "loads";
+    return 1;
+}
+
+static int energy_check(demill_world *w, verdict *v)
+{
+    const dm_watch *g = &w->watch;
+    dm_watch_energy e;
+    int unknown;
+    if (energies(w, &e, &unknown) || unknown)
+        return 0;
+    double grown, allowed;
+    if (w->energy_tracking) {
+        const dm_watch_energy *a = &g->start;
+        grown = (e.kinetic + e.potential + e.elastic + e.dissipated - e.work) -
+                (a->kinetic + a->potential + a->elastic + a->dissipated - a->work);
+        allowed = 0.25 * (fmax(g->peak, e.kinetic + e.elastic) +
+                          fmax(g->pmax, e.potential) - fmin(g->pmin, e.potential) +
+                          (e.dissipated - a->dissipated) + fabs(e.work - a->work));
+    } else {
+        const dm_watch_energy *a = &g->last;
+        grown = e.kinetic;
+        allowed = 2.0 * (a->kinetic + a->elastic + fmax(0.0, a->potential - e.potential) +
+                         fmax(0.0, e.work - a->work));
+    }
+    if (!(grown > allowed))
+        return 0;
+    const dm_particles *P = &w->p;
+    const int D = w->dim;
+    double fastest = -1.0;
+    for (uint32_t i = 0; i < P->n; i++) {
+        double v2 = 0.0;
+        for (int c = 0; c < D; c++)
+            v2 += P->v[D * i + c] * P->v[D * i + c];
+        if (v2 > fastest) {
+            fastest = v2;
+            v->particle = i;
+        }
+    }
+    snprintf(v->what, sizeof v->what,
+             "%.4g J of energy appeared from nowhere (%.4g J allowed); it is the fastest "
+             "particle, at %.3g m/s",
+             grown, allowed, sqrt(fastest));
+    v->cause = "energy is being created: the time step is too large for the contact stiffness "
+               "(see demill_world_suggest_time_step())";
+    return 1;
+}
+
+/* Puts the world back at its last good state, with a message saying why. */
+static demill_status fail_back(demill_world *w, const char *why)
+{
+    char msg[sizeof w->error];
+    snprintf(msg, sizeof msg, "%s", why);
+    const double t_bad = w->time;
+    const dm_watch *g = &w->watch;
+    if (dm_state_copy(w, g->good))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY,
+                       "%s; and out of memory putting back the last good state", msg);
+    return dm_fail(w, DEMILL_ERR_UNSTABLE,
+                   "watchdog at t = %.9g s: %s. The world is back at t = %.9g s (step %llu), "
+                   "the last state that passed.",
+                   t_bad, msg, w->time, (unsigned long long)w->steps);
+}
+
+static demill_status check(demill_world *w)
+{
+    verdict v = {.particle = DM_FREE};
+    if (!finite_check(w, &v) && !overlap_check(w, &v) && !energy_check(w, &v))
+        return DEMILL_OK;
+    char why[sizeof w->error];
+    const dm_particles *P = &w->p;
+    const int D = w->dim;
+    snprintf(why, sizeof why, "particle 0x%llx at (%.6g, %.6g, %.6g): %s; likely cause: %s",
+             (unsigned long long)dm_particle_id(w, v.particle), P->x[D * v.particle],
+             P->x[D * v.particle + 1], D == 3 ? P->x[D * v.particle + 2] : 0.0, v.what,
+             v.cause);
+    return fail_back(w, why);
+}
+
+/* Steps with the watchdog: in stretches that end at its checks. */
+demill_status dm_watched_steps(demill_world *w, uint64_t steps)
+{
+    dm_watch *g = &w->watch;
+    demill_status s;
+    if (!g->good || g->edits != w->edits) {
+        if ((s = take(w, 1)))
+            return s;
+        g->countdown = w->watch_interval;
+    }
+    while (steps) {
+        const uint64_t n = steps < g->countdown ? steps : g->countdown;
+        if ((s = dm_integrate(w, n)))
+            return s == DEMILL_ERR_UNSTABLE ? fail_back(w, w->error) : s;
+        steps -= n;
+        g->countdown -= (uint32_t)n;
+        if (g->countdown)
+            continue;
+        g->countdown = w->watch_interval;
+        if ((s = check(w)) || (s = take(w, 0)))
+            return s;
+    }
+    return DEMILL_OK;
+}
