@@ -176,6 +176,40 @@ DEMILL_API demill_status demill_world_get(const demill_world *world, int32_t key
  *          the caller may lower the time step and step again. */
 DEMILL_API demill_status demill_world_step(demill_world *world, uint64_t steps);
 
+/** Suggests a time step for the current scene (PHYSICS.md §8), from every
+ *  pair of materials that can meet: particle materials with each other and
+ *  with the materials of walls and drum, each taken with its lightest
+ *  particle (smallest radius), so that m* and R* are the smallest the scene
+ *  has. For a linear normal law, ω = √(k_n/m*), the contact lasts
+ *  π/ω and the explicit integrators are stable for Δt < 2/ω. For a Hertz
+ *  law the stiffness grows with the overlap: at the impact speed v the
+ *  largest overlap is δ = (15 m* v² / (16 E* √R*))^(2/5), the contact lasts
+ *  2.87 (m*² / (R* E*² v))^(1/5) and the stiffness 2 E* √(R* δ) sets
+ *  the stability limit; the Rayleigh time π R √(ρ/G) / (0.1631 ν + 0.8766)
+ *  of each particle material bounds the step too (0.2 of it, as is usual).
+ *  The suggestion is the smallest of: contact time / steps_per_contact,
+ *  0.2 Rayleigh time (Hertz) and 0.2 of the stability limit.
+ *  @param impact_speed      the largest impact speed expected, m/s; 0 lets
+ *                           the library estimate it from the scene (twice the
+ *                           fastest particle, the speed of a fall through the
+ *                           height of the scene, twice the drum's rim speed at
+ *                           its set speed), with 1 m/s at least.
+ *  @param steps_per_contact how finely to resolve the shortest contact, >= 1;
+ *                           0 takes 50 (about 1 % in restitution with velocity
+ *                           Verlet, see docs/physics.md §8).
+ *  @param suggested         receives the suggested Δt, s.
+ *  @param critical          receives the stability limit of the explicit
+ *                           integrators, s (may be NULL).
+ *  @param contact_time      receives the shortest contact duration, s (may be
+ *                           NULL).
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (suggested), DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_INVALID_VALUE (a negative argument, or a world without
+ *          particles) or DEMILL_ERR_NO_CONTACT_MODEL. Changes nothing. */
+DEMILL_API demill_status demill_world_suggest_time_step(demill_world *world, double impact_speed,
+                                                        double steps_per_contact,
+                                                        double *suggested, double *critical,
+                                                        double *contact_time);
+
 #ifdef __cplusplus
 }
 #endif

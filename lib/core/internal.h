@@ -515,6 +515,7 @@ void dm_drum_measure(demill_world *w);
 void dm_spectrum_free(demill_world *w);
 size_t dm_spectrum_counters(const dm_spectrum *sp);
 double dm_drum_omega_at(const dm_drum *d, double time, double *theta);
+double dm_drum_target_speed(const demill_world *w);
 void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall_kind, double energy);
 demill_status dm_drum_prepare(demill_world *w);
 

@@ -49,8 +49,9 @@ static double critical_speed(const demill_world *w)
     return sqrt(2.0 * g / (d->diameter - dia));
 }
 
-/* The target speed in rad/s that the speed key and value ask for. */
-static double target_speed(const demill_world *w)
+/* The target speed in rad/s that the speed key and value ask for; NaN for a
+ * fraction of an undefined critical speed. */
+double dm_drum_target_speed(const demill_world *w)
 {
     const dm_drum *d = &w->drum;
     switch (d->speed_key) {
@@ -89,7 +90,7 @@ demill_status dm_drum_prepare(demill_world *w)
     dm_drum *d = &w->drum;
     if (!d->alive || d->speed_key != DEMILL_DRUM_SPEED_FRACTION)
         return DEMILL_OK;
-    const double target = target_speed(w);
+    const double target = dm_drum_target_speed(w);
     if (!isfinite(target))
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                        "drum: the critical speed is undefined (no gravity, or the largest "
@@ -327,7 +328,7 @@ DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_
     case DEMILL_DRUM_SPEED_FRACTION: {
         d->speed_key = key;
         d->speed_value = value;
-        const double target = target_speed(w);
+        const double target = dm_drum_target_speed(w);
         if (!isfinite(target)) {
             *d = saved;
             return dm_fail(w, DEMILL_ERR_INVALID_VALUE,

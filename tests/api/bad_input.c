@@ -1691,26 +1691,72 @@ static void fix_c_models(scene *sc)
                                      DEMILL_NORMAL_LINEAR));
 }
 
-static void bad_step(scene *sc)
+/* Stepping, and suggesting a time step, need every model. */
+static void bad_without_model(scene *sc)
 {
     static const uint64_t steps[] = {1, 0, 1000};
     for (int k = 0; k < 3; k++) {
         ctx(sc, "world_step(%llu) without a contact model", (unsigned long long)steps[k]);
         BAD(sc, DEMILL_ERR_NO_CONTACT_MODEL, demill_world_step(sc->w, steps[k]), "model");
     }
+    double dt;
+    ctx(sc, "world_suggest_time_step without a contact model");
+    BAD(sc, DEMILL_ERR_NO_CONTACT_MODEL,
+        demill_world_suggest_time_step(sc->w, 1.0, 0, &dt, NULL, NULL), "model");
 }
 
 START_TEST(no_contact_model)
 {
-    both_dims(setup_c_no_pairs, bad_step, fix_c_models);
-    both_dims(setup_c_partial, bad_step, fix_c_models);
-    both_dims(setup_c_one_missing, bad_step, fix_c_models);
+    both_dims(setup_c_no_pairs, bad_without_model, fix_c_models);
+    both_dims(setup_c_partial, bad_without_model, fix_c_models);
+    both_dims(setup_c_one_missing, bad_without_model, fix_c_models);
 }
 END_TEST
 
 START_TEST(no_contact_model_with_wall)
 {
-    both_dims(setup_c_wall, bad_step, fix_c_models);
+    both_dims(setup_c_wall, bad_without_model, fix_c_models);
+}
+END_TEST
+
+/* ------------------------------------------------------------------------ */
+/* Time-step suggestion                                                       */
+
+static void bad_suggest(scene *sc)
+{
+    demill_world *w = sc->w;
+    double dt, crit, tc;
+    ctx(sc, "suggest_time_step into NULL");
+    BAD(sc, DEMILL_ERR_NULL_POINTER,
+        demill_world_suggest_time_step(w, 1.0, 0, NULL, &crit, &tc), "suggested");
+    for (int k = 0; k < 3; k++) {
+        ctx(sc, "suggest_time_step impact_speed %g", nonfinite[k]);
+        BAD(sc, DEMILL_ERR_NOT_FINITE,
+            demill_world_suggest_time_step(w, nonfinite[k], 0, &dt, &crit, &tc),
+            "impact_speed", NONFINITE);
+        ctx(sc, "suggest_time_step steps_per_contact %g", nonfinite[k]);
+        BAD(sc, DEMILL_ERR_NOT_FINITE,
+            demill_world_suggest_time_step(w, 1.0, nonfinite[k], &dt, &crit, &tc),
+            "steps_per_contact", NONFINITE);
+    }
+    static const double speeds[] = {-1e-9, -1.0, -1e300};
+    for (int k = 0; k < 3; k++) {
+        ctx(sc, "suggest_time_step impact_speed %g", speeds[k]);
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_world_suggest_time_step(w, speeds[k], 0, &dt, &crit, &tc), "impact_speed");
+    }
+    static const double steps[] = {0.5, 1e-300, -1.0, -50.0};
+    for (int k = 0; k < 4; k++) {
+        ctx(sc, "suggest_time_step steps_per_contact %g", steps[k]);
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_world_suggest_time_step(w, 1.0, steps[k], &dt, &crit, &tc),
+            "steps_per_contact");
+    }
+}
+
+START_TEST(suggest_time_step)
+{
+    both_dims(NULL, bad_suggest, NULL);
 }
 END_TEST
 
@@ -1772,6 +1818,7 @@ START_TEST(null_world_and_create)
         {"contacts_read", demill_contacts_read(N, DEMILL_CONTACT_OVERLAP, x, 1, &cnt)},
         {"contacts_read_ids", demill_contacts_read_ids(N, ids, ids, 1, &cnt)},
         {"world_energy", demill_world_energy(N, DEMILL_ENERGY_TOTAL, &d)},
+        {"world_suggest_time_step", demill_world_suggest_time_step(N, 1.0, 0, &d, NULL, NULL)},
     };
     for (size_t k = 0; k < sizeof calls / sizeof calls[0]; k++)
         ck_assert_msg(calls[k].got == DEMILL_ERR_NULL_POINTER,
@@ -1885,6 +1932,7 @@ int main(void)
     tcase_add_test(tc, reads);
     tcase_add_test(tc, no_contact_model);
     tcase_add_test(tc, no_contact_model_with_wall);
+    tcase_add_test(tc, suggest_time_step);
     suite_add_tcase(s, tc);
     TCase *doc = tcase_create("documented_codes");
     tcase_set_timeout(doc, 600);
