@@ -19,49 +19,6 @@
 
 #define PHASES 8
 
-typedef struct outcome {
-    double restitution, duration, max_overlap;
-} outcome;
-
-/* Two equal spheres of radius r approach head-on along x at relative speed v0
- * from a gap that closes after (steps + phase) steps; returns the measured
- * rebound ratio, duration (entry and exit times interpolated linearly between
- * samples) and maximum overlap. */
-static outcome collide(demill_world *w, demill_id mat, double r, double v0, double dt,
-                       double phase, int dim)
-{
-    const double gap = (3.0 + phase) * v0 * dt;
-    double x[6] = {-r - gap / 2, 0, 0, r + gap / 2, 0, 0};
-    double v[6] = {v0 / 2, 0, 0, -v0 / 2, 0, 0};
-    double rr[2] = {r, r};
-    demill_id ids[2];
-    (void)dim;
-    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
-    DM_OK(w, demill_particles_add(w, mat, 2, x, rr, v, 0, ids));
-    outcome o = {0, 0, 0};
-    double prev = -gap, t_in = -1, t_out = -1;
-    for (int k = 1; k < 100000 && t_out < 0; k++) {
-        DM_OK(w, demill_world_step(w, 1));
-        double d = 2 * r - (dm_test_get(w, ids[1], DEMILL_PARTICLE_POSITION, 0) -
-                            dm_test_get(w, ids[0], DEMILL_PARTICLE_POSITION, 0));
-        if (d > o.max_overlap)
-            o.max_overlap = d;
-        if (prev <= 0 && d > 0)
-            t_in = (k - 1 + -prev / (d - prev)) * dt;
-        if (prev > 0 && d <= 0)
-            t_out = (k - 1 + prev / (prev - d)) * dt;
-        prev = d;
-    }
-    ck_assert_msg(t_in >= 0 && t_out > t_in, "the collision did not complete");
-    DM_OK(w, demill_world_step(w, 5)); /* separated: velocities are final */
-    double va = dm_test_get(w, ids[0], DEMILL_PARTICLE_VELOCITY, 0);
-    double vb = dm_test_get(w, ids[1], DEMILL_PARTICLE_VELOCITY, 0);
-    o.restitution = (vb - va) / v0;
-    o.duration = t_out - t_in;
-    DM_OK(w, demill_particles_remove(w, 2, ids));
-    return o;
-}
-
 static const double restitutions[] = {0.1, 0.5, 0.9};
 
 /* dm_test_world() with the integrator of loop index i. */
@@ -86,7 +43,7 @@ static void linear_case(int i, int dim, double e, int clamp, double dur_tol, dou
     const double l = log(e), xi = -l / sqrt(M_PI * M_PI + l * l);
     const double tc = M_PI / (sqrt(k / mstar) * sqrt(1 - xi * xi));
     for (int p = 0; p < PHASES; p++) {
-        outcome o = collide(w, m, r, 1.0, tc / 50, (p + 0.5) / PHASES, dim);
+        dm_collision o = dm_test_collide(w, m, r, 1.0, tc / 50, (p + 0.5) / PHASES, 0.0);
         DM_ASSERT_REL(o.restitution, e, e_tol);
         if (dur_tol > 0)
             DM_ASSERT_REL(o.duration, tc, dur_tol);
@@ -143,7 +100,7 @@ START_TEST(hertz_elastic_impact)
         const double dmax = pow(15 * mstar * v0 * v0 / (16 * estar * sqrt(rstar)), 0.4);
         const double tc = 2 * integral * dmax / v0;
         for (int p = 0; p < PHASES; p++) {
-            outcome o = collide(w, m, r, v0, tc / 50, (p + 0.5) / PHASES, dim);
+            dm_collision o = dm_test_collide(w, m, r, v0, tc / 50, (p + 0.5) / PHASES, 0.0);
             DM_ASSERT_REL(o.max_overlap, dmax, 0.02);
             DM_ASSERT_REL(o.duration, tc, 0.02);
             DM_ASSERT_REL(o.restitution, 1.0, 0.01);
@@ -168,7 +125,8 @@ START_TEST(hertz_restitution)
                 const double mstar = 0.5 * 4.0 / 3.0 * M_PI * r * r * r * 2500;
                 const double dmax = pow(15 * mstar / (16 * estar * sqrt(r / 2)), 0.4);
                 for (int p = 0; p < PHASES; p++) {
-                    outcome o = collide(w, m, r, 1.0, 2.94324 * dmax / 50, (p + 0.5) / PHASES, dim);
+                    dm_collision o = dm_test_collide(w, m, r, 1.0, 2.94324 * dmax / 50,
+                                                     (p + 0.5) / PHASES, 0.0);
                     DM_ASSERT_REL(o.restitution, restitutions[k], 0.02);
                 }
                 demill_world_destroy(w);

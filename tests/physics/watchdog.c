@@ -60,6 +60,9 @@ static scene make(int watchdog)
     double k, mass = dm_test_get(w, s.ids[0], DEMILL_PARTICLE_MASS, 0);
     DM_OK(w, demill_pair_get(w, m, m, DEMILL_PAIR_NORMAL_STIFFNESS, &k));
     s.dt_crit = 2.0 / sqrt(k / (mass / 2));
+    double dt, crit; /* the limit the library states is the same */
+    DM_OK(w, demill_world_suggest_time_step(w, 1.0, 0, &dt, &crit, NULL));
+    DM_ASSERT_REL(crit, s.dt_crit, 1e-12);
     return s;
 }
 

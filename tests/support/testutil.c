@@ -29,3 +29,37 @@ double dm_test_get(demill_world *w, demill_id p, int field, int c)
     DM_OK(w, demill_particle_get(w, p, field, v));
     return v[c];
 }
+
+dm_collision dm_test_collide(demill_world *w, demill_id mat, double r, double v0, double dt,
+                             double phase, double offset)
+{
+    const double gap = (3.0 + phase) * v0 * dt;
+    double x[6] = {offset - r - gap / 2, 0, 0, offset + r + gap / 2, 0, 0};
+    double v[6] = {v0 / 2, 0, 0, -v0 / 2, 0, 0};
+    double rr[2] = {r, r};
+    demill_id ids[2];
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+    DM_OK(w, demill_particles_add(w, mat, 2, x, rr, v, 0, ids));
+    dm_collision o = {0, 0, 0};
+    double prev = -gap, t_in = -1, t_out = -1;
+    for (int k = 1; k < 100000 && t_out < 0; k++) {
+        DM_OK(w, demill_world_step(w, 1));
+        double d = 2 * r - (dm_test_get(w, ids[1], DEMILL_PARTICLE_POSITION, 0) -
+                            dm_test_get(w, ids[0], DEMILL_PARTICLE_POSITION, 0));
+        if (d > o.max_overlap)
+            o.max_overlap = d;
+        if (prev <= 0 && d > 0)
+            t_in = (k - 1 + -prev / (d - prev)) * dt;
+        if (prev > 0 && d <= 0)
+            t_out = (k - 1 + prev / (prev - d)) * dt;
+        prev = d;
+    }
+    ck_assert_msg(t_in >= 0 && t_out > t_in, "the collision did not complete");
+    DM_OK(w, demill_world_step(w, 5)); /* separated: velocities are final */
+    double va = dm_test_get(w, ids[0], DEMILL_PARTICLE_VELOCITY, 0);
+    double vb = dm_test_get(w, ids[1], DEMILL_PARTICLE_VELOCITY, 0);
+    o.restitution = (vb - va) / v0;
+    o.duration = t_out - t_in;
+    DM_OK(w, demill_particles_remove(w, 2, ids));
+    return o;
+}

@@ -36,4 +36,17 @@ int dm_test_run(Suite *s);
 /* One double field of a particle (component c). */
 double dm_test_get(demill_world *w, demill_id p, int field, int c);
 
+/* A binary collision: rebound ratio, duration, largest overlap. */
+typedef struct dm_collision {
+    double restitution, duration, max_overlap;
+} dm_collision;
+
+/* Two equal spheres of material mat and radius r, centred about x = offset,
+ * approach head-on along x at relative speed v0 from a gap that closes after
+ * (3 + phase) steps of dt; returns the measured rebound ratio, the duration
+ * (entry and exit times interpolated linearly between samples) and the
+ * largest overlap. The particles are removed afterwards. */
+dm_collision dm_test_collide(demill_world *w, demill_id mat, double r, double v0, double dt,
+                             double phase, double offset);
+
 #endif
