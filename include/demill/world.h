@@ -70,11 +70,13 @@ enum {
      *  component (translational and angular) between two iterates below
      *  which a step is accepted, in (0, 1]. The test is
      *  |a_k - a_(k-1)| <= ε_a (|a_k| + ā) per component, where ā is the
-     *  mean magnitude over all particles at the start of the step (plus |g|
-     *  for translation), so that it stays meaningful where a is near 0. The
-     *  first iterate is compared with the accelerations at the start of the
-     *  step (from which its jerk, 0, was made), so that a step over which no
-     *  acceleration changes takes one force evaluation. Default 1e-4. */
+     *  mean magnitude over all particles at the start of the step (plus |g|;
+     *  for angular accelerations plus ā over the mean radius), so that it
+     *  stays meaningful where a is near 0. The first iterate is compared
+     *  with the accelerations at the start of the step (from which its jerk,
+     *  0, was made) to round-off only, so that a step over which nothing
+     *  changes (free flight) takes one force evaluation and any other step
+     *  at least two. Default 1e-4. */
     DEMILL_WORLD_REFINE_TOLERANCE = 110,
     /** Iterative refinement: force evaluations per step at most, a whole
      *  number in [1, 100]. A step that has not converged by then is accepted

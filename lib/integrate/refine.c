@@ -8,12 +8,14 @@
  * iterate takes b = 0; each later one takes b = (a_(k-1) - a_n)/Δt from the
  * forces evaluated at the previous iterate. The step ends when every
  * acceleration component of the iterate, a_k, differs by at most
- * ε_a (|a_k| + ā) from the a_(k-1) its jerk was made from (a_0 = a_n, which
- * made b = 0), ā being the mean magnitude at the start of the step (plus |g|
- * for translation); or after the set number of force evaluations. Where the
- * accelerations do not change over the step (free flight), one evaluation
- * suffices. The accepted state is the last one evaluated, so that the forces
- * kept for the next step are those of the state reached.
+ * ε_a (|a_k| + ā) from the a_(k-1) its jerk was made from, ā being the mean
+ * magnitude at the start of the step (plus |g|; for angular accelerations
+ * plus ā over the mean radius); or after the set number of force
+ * evaluations. The first iterate is compared with a_n (which made b = 0) to
+ * round-off only: one evaluation suffices where nothing changes over the
+ * step (free flight), and every other step iterates, so that it stays
+ * second order whatever ε_a. The accepted state is the last one evaluated,
+ * so that the forces kept for the next step are those of the state reached.
  *
  * Contact histories: each iterate's evaluation advances the tangential
  * springs by the displacement of that iterate, v̄ Δt with the mean velocity
@@ -21,10 +23,13 @@
  * iterate starts from the histories (and energy tallies) of the start of the
  * step, restored from a copy, so that only the accepted iterate's update
  * remains. Neighbour lists are rebuilt only at the start of a step, so that
- * the copy stays valid; an iterate that would leave the lists' reach aborts
- * the step (a step that moves a particle by more than half the skin has gone
- * wrong anyway). The particle arrays of the start of the step trade places
+ * the copy stays valid: when an iterate leaves the lists' reach, the lists
+ * are rebuilt at the start of the step and the iterations start again; an
+ * iterate that leaves the reach of lists built at the start of its own step
+ * (more than half the skin in one step) has gone wrong, and the step is
+ * given up. The particle arrays of the start of the step trade places
  * with the world's instead of being copied. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,6 +37,12 @@
 #include "../core/internal.h"
 
 #define DM_INLINE static inline __attribute__((always_inline))
+
+/* The tolerance of the first iterate (b = 0) against the accelerations at
+ * the start of the step: round-off only, so that one evaluation suffices
+ * only where nothing changed (free flight); anything else iterates, which
+ * keeps the step second order at any ε_a. */
+#define DM_FIRST_EPS (64 * DBL_EPSILON)
 
 static void swap(double **a, double **b)
 {
@@ -294,9 +305,10 @@ static void mean_accelerations(const demill_world *w, refine_args *a)
 {
     const int D = w->dim, W = D == 3 ? 3 : 1;
     const dm_particles *P = &w->p;
-    double sa = 0.0, sw = 0.0;
+    double sa = 0.0, sw = 0.0, sr = 0.0;
     for (uint32_t i = 0; i < P->n; i++) {
         double a2 = 0.0, w2 = 0.0;
+        sr += P->r[i];
         for (int c = 0; c < D; c++)
             a2 += P->f[D * i + c] * P->f[D * i + c];
         sa += sqrt(a2) * P->im[i];
@@ -308,74 +320,90 @@ static void mean_accelerations(const demill_world *w, refine_args *a)
     }
     const double g = sqrt(w->g[0] * w->g[0] + w->g[1] * w->g[1] + w->g[2] * w->g[2]);
     a->abar = g + (P->n ? sa / P->n : 0.0);
-    a->alphabar = P->n ? sw / P->n : 0.0;
+    /* an angular acceleration α turns the surface at α r: ā / r̄ is the
+     * angular scale of ā, which keeps the test meaningful where every α is
+     * round-off (a ball rolling freely) */
+    a->alphabar = P->n ? (sw + a->abar * P->n / sr) / P->n : 0.0;
 }
 
 /* Gives up a step: the world goes back to the start of the step (arrays,
- * histories, tallies, walls) and its forces are evaluated again before the
- * next step. */
-static demill_status abort_step(demill_world *w, int restore, double d2)
+ * walls; the histories are already back) and its forces are evaluated again
+ * before the next step. */
+static demill_status abort_step(demill_world *w, double d2)
 {
     trade(w);
-    if (restore)
-        contacts_copy(w, 0);
     dm_walls_advance(w, w->time);
     w->forces_valid = false;
     return dm_fail(w, DEMILL_ERR_UNSTABLE,
-                   "iterative refinement at t = %.9g s: an iterate moved a particle by %g m, "
-                   "more than half the neighbour skin (%g m) in one step; the time step is "
-                   "too large for the stiffness or the speeds",
+                   "iterative refinement at t = %.9g s: an iterate moved a particle by %g m "
+                   "from where the neighbour lists were built at the start of the step, more "
+                   "than half their skin (%g m); the time step is too large for the stiffness "
+                   "or the speeds",
                    w->time, sqrt(d2), w->skin);
+}
+
+/* The iterations of a step from b = 0; returns 1 if an iterate left the
+ * neighbour lists' reach (histories and tallies are then back at the start
+ * of the step), with its displacement in *d2. */
+static int iterations(demill_world *w, refine_args *a, int *k, int *done, double *d2)
+{
+    dm_particles *P = &w->p;
+    dm_refine *R = &w->refine;
+    const int tally = w->energy_tracking || w->events, most = w->refine_max;
+    const double eps = a->eps;
+    a->jerk = 0;
+    if (dm_nlist_needs_rebuild(w, *d2 = iterate(w, a)))
+        return 1;
+    for (*k = 1;; ++*k) {
+        a->fprev = R->fn;
+        a->tprev = R->tn;
+        a->eps = *k == 1 ? DM_FIRST_EPS : eps;
+        if (*k > 1) {
+            a->jerk = 1;
+            const int out = dm_nlist_needs_rebuild(w, *d2 = iterate(w, a));
+            contacts_copy(w, 0);
+            if (out)
+                return 1;
+            swap(&P->f, &R->fprev);
+            swap(&P->t, &R->tprev);
+            a->fprev = R->fprev;
+            a->tprev = R->tprev;
+        }
+        dm_forces(w, P->vp, P->wp, w->dt, 0.5, tally);
+        const int ranges = dm_parallel(w, P->n, w->dim == 3 ? converged3 : converged2, a);
+        uint32_t bad = 0;
+        for (int t = 0; t < ranges; t++)
+            bad += a->bad[t];
+        *done = bad == 0;
+        a->eps = eps;
+        if (*done || *k >= most)
+            return 0;
+    }
 }
 
 static demill_status refine_step(demill_world *w)
 {
     dm_particles *P = &w->p;
     refine_args a = {.dt = w->dt, .eps = w->refine_tol, .rotation = w->rotation};
-    const int tally = w->energy_tracking || w->events, most = w->refine_max;
-    if (reserve(w))
+    if (reserve(w) || (w->refine_max > 1 && contacts_save(w)))
         return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory in the refinement integrator");
     mean_accelerations(w, &a);
     dm_walls_advance(w, w->time + w->dt);
     trade(w);
-    double d2 = iterate(w, &a);
-    if (dm_nlist_needs_rebuild(w, d2)) { /* rebuild at the start of the step */
+    int k = 0, done = 0;
+    double d2;
+    if (iterations(w, &a, &k, &done, &d2)) {
+        /* rebuild the lists at the start of the step, and start again */
         trade(w);
         demill_status s = dm_nlist_build(w);
         if (s)
             return s;
+        if (w->refine_max > 1 && contacts_save(w))
+            return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY,
+                           "out of memory in the refinement integrator");
         trade(w);
-        if (dm_nlist_needs_rebuild(w, d2 = iterate(w, &a)))
-            return abort_step(w, 0, d2);
-    }
-    if (most > 1 && contacts_save(w)) {
-        trade(w);
-        dm_walls_advance(w, w->time);
-        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory in the refinement integrator");
-    }
-    dm_refine *R = &w->refine;
-    int k = 1, done;
-    for (;; k++) {
-        a.fprev = R->fn;
-        a.tprev = R->tn;
-        if (k > 1) {
-            a.jerk = 1;
-            if (dm_nlist_needs_rebuild(w, d2 = iterate(w, &a)))
-                return abort_step(w, 1, d2);
-            contacts_copy(w, 0);
-            swap(&P->f, &R->fprev);
-            swap(&P->t, &R->tprev);
-            a.fprev = R->fprev;
-            a.tprev = R->tprev;
-        }
-        dm_forces(w, P->vp, P->wp, w->dt, 0.5, tally);
-        const int ranges = dm_parallel(w, P->n, w->dim == 3 ? converged3 : converged2, &a);
-        uint32_t bad = 0;
-        for (int t = 0; t < ranges; t++)
-            bad += a.bad[t];
-        done = bad == 0;
-        if (done || k >= most)
-            break;
+        if (iterations(w, &a, &k, &done, &d2))
+            return abort_step(w, d2);
     }
     swap(&P->v, &P->vp); /* the accepted state moves with its end velocities */
     if (w->rotation)
