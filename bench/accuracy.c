@@ -35,15 +35,16 @@
  *                       μ = 0.3): the larger error of its final speed against
  *                       2/7 R ω0 and of the time to rolling against
  *                       2 R ω0 / (7 μ g); t_c the damped floor contact
- *   mill_power          a 2D mill of 265 balls, 6 lifters, soft linear
- *                       springs (t_c = 1 ms between balls) at 75 % of
- *                       critical speed: the mean power over revolutions 2
- *                       to 1 + MILL_REVOLUTIONS against a reference run
- *                       (velocity Verlet at 1/MILL_REFERENCE_STEPS of t_c).
- *                       The flow is chaotic: runs that differ by 1 nm in
- *                       one ball's position give mean powers that differ by
- *                       about 1 %; the notes give the reference, its check by
- *                       the converged refinement and MILL_NUDGES such runs.
+ *   mill_power          a 2D mill of 304 balls, 6 lifters, soft linear
+ *                       springs (t_c = 1 ms between the smallest balls) at
+ *                       75 % of critical speed: the mean power over
+ *                       revolutions 2 to 1 + MILL_REVOLUTIONS against a
+ *                       reference run (velocity Verlet at
+ *                       1/MILL_REFERENCE_STEPS of t_c). The flow is chaotic:
+ *                       runs that differ by 1 nm in one ball's position give
+ *                       mean powers that differ by about 0.5 %; the notes give
+ *                       the reference, its check by the converged refinement
+ *                       and MILL_NUDGES such runs.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
@@ -69,7 +70,7 @@
 #define MIN_TIME 0.05             /* s: shorter measurements are repeated */
 #define GAS_SPAN 5000.0           /* contact durations of the gas run (quick: 1/20) */
 #define MILL_REFERENCE_STEPS 400  /* steps per contact of the mill's reference */
-#define MILL_REVOLUTIONS 4        /* averaged, after one to reach the steady flow */
+#define MILL_REVOLUTIONS 5        /* averaged, after one to reach the steady flow */
 #define MILL_NUDGES 3             /* runs of the reference with a ball moved by 1 nm */
 
 /* The Hertz duration over δ_max / v: 2 ∫₀¹ dx / √(1 - x^{5/2})
@@ -481,20 +482,25 @@ static double rolling(run *r)
 /* ---- the mill ---------------------------------------------------------------- */
 
 #define MILL_DIAMETER 0.2
-#define MILL_BALL 0.006       /* diameter, m */
-#define MILL_CONTACT 1e-3     /* t_c between balls, s */
+#define MILL_SMALL 0.005      /* ball diameters, m */
+#define MILL_LARGE 0.007
+#define MILL_CONTACT 1e-3     /* t_c between two small balls, s */
 #define MILL_DENSITY 7800     /* steel */
 
 /* The mean power drawn over revolutions 2 to 1 + MILL_REVOLUTIONS by a drum
- * (6 lifters 6 mm high and wide) filled to 30 % with 6 mm steel balls
- * (lattice fill, seed 42, not settled: the charge falls into place in the
- * first revolution) turning at 75 % of critical from t = 0; balls and drum
- * linear, e = 0.5, spring-slider μ = 0.5, the stiffness that makes the
- * ball-ball contact last MILL_CONTACT. r->nudged: moves a ball by 1 nm along
- * x before the start (to see how far chaos alone spreads the answer). */
+ * (6 lifters 6 mm high and wide) filled to 30 % with steel balls of two
+ * sizes, half the mass each (lattice fill, seed 42, not settled: the charge
+ * falls into place in the first revolution), turning at 75 % of critical
+ * from t = 0; balls and drum linear, e = 0.5, spring-slider μ = 0.5, the
+ * stiffness that makes a contact of two small balls last MILL_CONTACT. Balls
+ * of one size would crystallise in the plane and be carried up as blocks,
+ * now and then, for a revolution or more: 1 nm nudges then spread the mean
+ * power over 4 revolutions by up to 7 %. r->nudged: moves a ball by 1 nm
+ * along x before the start (to see how far chaos alone spreads the
+ * answer). */
 static double mill_mean_power(run *r)
 {
-    const double mstar = 0.5 * sphere_mass(MILL_BALL / 2, MILL_DENSITY);
+    const double mstar = 0.5 * sphere_mass(MILL_SMALL / 2, MILL_DENSITY);
     const demill_id m = open_world(r, 2, MILL_CONTACT, -G, MILL_DENSITY, DEMILL_NORMAL_LINEAR,
                                    DEMILL_DAMPING_RESTITUTION, DEMILL_TANGENTIAL_SPRING);
     pair(r, m, DEMILL_PAIR_NORMAL_STIFFNESS, linear_stiffness(MILL_CONTACT, mstar, 0.5));
@@ -508,9 +514,9 @@ static double mill_mean_power(run *r)
     const double values[] = {MILL_DIAMETER, 0.006, 0.006, 6, 0.2};
     for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)
         ok(r, demill_drum_set(r->w, drum, keys[k], values[k]), "drum geometry");
-    const double sizes[2] = {MILL_BALL, 1.0};
+    const double sizes[4] = {MILL_SMALL, 0.5, MILL_LARGE, 0.5};
     size_t n;
-    ok(r, demill_drum_fill(r->w, drum, m, DEMILL_SIZES_CLASSES, sizes, 2, DEMILL_FILL_FRACTION,
+    ok(r, demill_drum_fill(r->w, drum, m, DEMILL_SIZES_CLASSES, sizes, 4, DEMILL_FILL_FRACTION,
                            0.3, 42, NULL, 0, &n),
        "fill");
     if (r->nudged) {
