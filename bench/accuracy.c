@@ -42,9 +42,9 @@
  *                       reference run (velocity Verlet at
  *                       1/MILL_REFERENCE_STEPS of t_c). The flow is chaotic:
  *                       runs that differ by 1 nm in one ball's position give
- *                       mean powers that differ by about 0.5 %; the notes give
- *                       the reference, its check by the converged refinement
- *                       and MILL_NUDGES such runs.
+ *                       mean powers that differ by 1-2 %; the notes give the
+ *                       reference, its check by the converged refinement and
+ *                       MILL_NUDGES such runs.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
