@@ -396,11 +396,12 @@ static demill_status refine_step(demill_world *w)
         /* rebuild the lists at the start of the step, and start again */
         trade(w);
         demill_status s = dm_nlist_build(w);
-        if (s)
+        if (!s && w->refine_max > 1 && contacts_save(w))
+            s = dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory in the refinement integrator");
+        if (s) {
+            dm_walls_advance(w, w->time);
             return s;
-        if (w->refine_max > 1 && contacts_save(w))
-            return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY,
-                           "out of memory in the refinement integrator");
+        }
         trade(w);
         if (iterations(w, &a, &k, &done, &d2))
             return abort_step(w, d2);
