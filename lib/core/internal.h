@@ -350,7 +350,7 @@ struct demill_world {
     uint32_t watch_interval;
     dm_watch watch;
     uint64_t edits;         /* calls that may have changed the world (dm_changed) */
-    char error[512];
+    char error[1024];
 
     /* materials */
     dm_material mats[DM_MAX_MATERIALS];

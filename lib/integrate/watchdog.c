@@ -229,7 +229,7 @@ static demill_status fail_back(demill_world *w, const char *why)
                        "%s; and out of memory putting back the last good state", msg);
     return dm_fail(w, DEMILL_ERR_UNSTABLE,
                    "watchdog at t = %.9g s: %s. The world is back at t = %.9g s (step %llu), "
-                   "the last state that passed.",
+                   "the last state that passed a check (or where the run started).",
                    t_bad, msg, w->time, (unsigned long long)w->steps);
 }
 
