@@ -392,6 +392,9 @@ struct demill_world {
 };
 
 /* ---- shared internal functions -------------------------------------------- */
+/* world.c */
+double dm_gravity_magnitude(const demill_world *w); /* |g| */
+
 /* errors.c */
 demill_status dm_fail(demill_world *w, demill_status code, const char *fmt, ...)
 #if defined(__GNUC__)

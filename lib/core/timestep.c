@@ -65,7 +65,7 @@ static double estimated_impact_speed(const demill_world *w)
     double gh = hi - lo; /* g H */
     const dm_drum *d = &w->drum;
     if (d->alive) {
-        const double g = sqrt(w->g[0] * w->g[0] + w->g[1] * w->g[1] + w->g[2] * w->g[2]);
+        const double g = dm_gravity_magnitude(w);
         gh = fmax(gh, g * d->diameter);
         const double omega = dm_drum_target_speed(w);
         if (isfinite(omega))

@@ -67,6 +67,11 @@ DEMILL_API void demill_world_destroy(demill_world *w)
     free(w);
 }
 
+double dm_gravity_magnitude(const demill_world *w)
+{
+    return sqrt(w->g[0] * w->g[0] + w->g[1] * w->g[1] + w->g[2] * w->g[2]);
+}
+
 /* The threads the loops run on: n, or OpenMP's default for 0. */
 static demill_status set_threads(demill_world *w, int n)
 {

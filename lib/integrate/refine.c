@@ -318,7 +318,7 @@ static void mean_accelerations(const demill_world *w, refine_args *a)
             sw += sqrt(w2) * P->iinv[i];
         }
     }
-    const double g = sqrt(w->g[0] * w->g[0] + w->g[1] * w->g[1] + w->g[2] * w->g[2]);
+    const double g = dm_gravity_magnitude(w);
     a->abar = g + (P->n ? sa / P->n : 0.0);
     /* an angular acceleration α turns the surface at α r: ā / r̄ is the
      * angular scale of ā, which keeps the test meaningful where every α is

@@ -29,11 +29,6 @@ double dm_drum_omega_at(const dm_drum *d, double time, double *theta)
     return d->omega_to;
 }
 
-static double gravity_magnitude(const demill_world *w)
-{
-    return sqrt(w->g[0] * w->g[0] + w->g[1] * w->g[1] + w->g[2] * w->g[2]);
-}
-
 /* Critical speed √(2 g / (D - d)), with d the set critical diameter or the
  * largest particle diameter in the world; NaN when D <= d or g = 0. */
 static double critical_speed(const demill_world *w)
@@ -43,7 +38,7 @@ static double critical_speed(const demill_world *w)
     if (dia <= 0.0)
         for (uint32_t i = 0; i < w->p.n; i++)
             dia = fmax(dia, 2.0 * w->p.r[i]);
-    const double g = gravity_magnitude(w);
+    const double g = dm_gravity_magnitude(w);
     if (d->diameter <= dia || g == 0.0)
         return NAN;
     return sqrt(2.0 * g / (d->diameter - dia));
