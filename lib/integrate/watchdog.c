@@ -60,20 +60,17 @@ static demill_status energies(demill_world *w, dm_watch_energy *e, int *unknown)
     return s;
 }
 
-/* Copies the current state as the last good one; start: it also starts a
- * run (the energy balance is measured from here). */
-static demill_status take(demill_world *w, int start)
+/* Copies the current state, whose energies are e, as the last good one;
+ * start: it also starts a run (the energy balance is measured from here). */
+static demill_status take(demill_world *w, int start, const dm_watch_energy *e)
 {
     dm_watch *g = &w->watch;
-    int unknown;
     if (!g->good && !(g->good = calloc(1, sizeof *g->good)))
         return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory copying the state");
-    demill_status s = energies(w, &g->last, &unknown);
-    if (s || (s = dm_state_copy(g->good, w)))
-        return s == DEMILL_ERR_OUT_OF_MEMORY
-                   ? dm_fail(w, s, "out of memory copying the state for the watchdog")
-                   : s;
-    const dm_watch_energy *e = &g->last;
+    if (dm_state_copy(g->good, w))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY,
+                       "out of memory copying the state for the watchdog");
+    g->last = *e;
     if (start) {
         g->start = *e;
         g->peak = 0.0;
@@ -173,12 +170,11 @@ static int overlap_check(const demill_world *w, verdict *v)
     return 1;
 }
 
-static int energy_check(demill_world *w, verdict *v)
+/* e: the current energies; unknown: the walls' work is not known. */
+static int energy_check(const demill_world *w, verdict *v, dm_watch_energy e, int unknown)
 {
     const dm_watch *g = &w->watch;
-    dm_watch_energy e;
-    int unknown;
-    if (energies(w, &e, &unknown) || unknown)
+    if (unknown)
         return 0;
     double grown, allowed;
     if (w->energy_tracking) {
@@ -233,10 +229,15 @@ static demill_status fail_back(demill_world *w, const char *why)
                    t_bad, msg, w->time, (unsigned long long)w->steps);
 }
 
-static demill_status check(demill_world *w)
+/* The checks; e receives the current energies, for take(). */
+static demill_status check(demill_world *w, dm_watch_energy *e)
 {
     verdict v = {.particle = DM_FREE};
-    if (!finite_check(w, &v) && !overlap_check(w, &v) && !energy_check(w, &v))
+    int unknown;
+    demill_status s = energies(w, e, &unknown);
+    if (s)
+        return s;
+    if (!finite_check(w, &v) && !overlap_check(w, &v) && !energy_check(w, &v, *e, unknown))
         return DEMILL_OK;
     char why[sizeof w->error];
     const dm_particles *P = &w->p;
@@ -253,8 +254,10 @@ demill_status dm_watched_steps(demill_world *w, uint64_t steps)
 {
     dm_watch *g = &w->watch;
     demill_status s;
+    dm_watch_energy e;
+    int unknown;
     if (!g->good || g->edits != w->edits) {
-        if ((s = take(w, 1)))
+        if ((s = energies(w, &e, &unknown)) || (s = take(w, 1, &e)))
             return s;
         g->countdown = w->watch_interval;
     }
@@ -267,7 +270,7 @@ demill_status dm_watched_steps(demill_world *w, uint64_t steps)
         if (g->countdown)
             continue;
         g->countdown = w->watch_interval;
-        if ((s = check(w)) || (s = take(w, 0)))
+        if ((s = check(w, &e)) || (s = take(w, 0, &e)))
             return s;
     }
     return DEMILL_OK;
