@@ -92,7 +92,10 @@ enum {
     DEMILL_ERR_DIMENSION = 11,       /**< the value is not allowed in a world of this dimension */
     DEMILL_ERR_VERSION = 12,         /**< the library is not compatible with the headers */
     DEMILL_ERR_UNSUPPORTED = 13,     /**< the library was built without what this needs */
-    DEMILL_ERR_UNSTABLE = 14         /**< the simulation went unstable (see DEMILL_WORLD_WATCHDOG) */
+    DEMILL_ERR_UNSTABLE = 14,        /**< the simulation went unstable (see DEMILL_WORLD_WATCHDOG) */
+    DEMILL_ERR_IO = 15,              /**< a file could not be opened, read or written (the message has the system's reason) */
+    DEMILL_ERR_FORMAT = 16,          /**< a file or buffer is not what it should be: foreign, truncated, corrupt or of an unsupported version */
+    DEMILL_ERR_INTERRUPTED = 17      /**< the progress callback asked the run to stop (see demill_world_set_progress()) */
 };
 
 /** A static, generic description of a status code ("invalid value", ...).

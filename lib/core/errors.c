@@ -22,6 +22,9 @@ DEMILL_API const char *demill_strerror(demill_status code)
     case DEMILL_ERR_VERSION: return "the library version is not compatible with the headers";
     case DEMILL_ERR_UNSUPPORTED: return "the library was built without what this needs";
     case DEMILL_ERR_UNSTABLE: return "the simulation went unstable; the world is at its last good state";
+    case DEMILL_ERR_IO: return "input/output error";
+    case DEMILL_ERR_FORMAT: return "not a valid file of this kind, or of an unsupported version";
+    case DEMILL_ERR_INTERRUPTED: return "the run was stopped by its progress callback";
     default: return "unknown status code";
     }
 }
