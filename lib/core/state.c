@@ -570,6 +570,21 @@ static demill_status check_walls(demill_world *t)
     }
     if (drum != d->nwall || (d->nwall && (!d->alive || d->material >= t->nmat)))
         return dm_fail(t, DEMILL_ERR_FORMAT, "the drum lists %u walls, %u found", d->nwall, drum);
+    /* a drum's walls are its shell, its end caps (3D) and its lifters in order */
+    const uint32_t caps = t->dim == 3 ? 2 : 0;
+    if (d->alive && d->nwall != 1 + caps + d->nlifters)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "a drum of %u lifters with %u walls", d->nlifters,
+                       d->nwall);
+    for (uint32_t q = 0; q < d->nwall; q++) {
+        const dm_wall *wl = &t->walls[d->wall_slot[q]];
+        const bool ok = q == 0      ? wl->drum_part == DM_PART_SHELL && wl->kind == DM_WALL_SHELL
+                        : q <= caps ? wl->drum_part == DM_PART_CAP && wl->kind == DM_WALL_PLANE
+                                    : wl->drum_part == DM_PART_LIFTER &&
+                                          wl->kind == DM_WALL_PRISM &&
+                                          wl->lifter == (int)(q - 1 - caps);
+        if (!ok)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "drum wall %u is not the part it should be", q);
+    }
     for (uint32_t k = 0; k < t->wh.n; k++)
         if (t->wh.slot[k] != DM_FREE && t->wh.slot[k] >= t->nwalls)
             return dm_fail(t, DEMILL_ERR_FORMAT, "wall handle %u names slot %u", k,
