@@ -529,6 +529,7 @@ demill_status dm_prepare_step(demill_world *w);
 
 /* core/snapshot.c */
 demill_status dm_state_copy(demill_world *dst, const demill_world *src);
+demill_status dm_state_restore(demill_world *w, const demill_world *src);
 void dm_state_free(demill_world *s);
 
 /* core/energy.c */

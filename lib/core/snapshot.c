@@ -6,8 +6,8 @@
  * with their histories, tallies and counters. It leaves out what is derived
  * again before use (the neighbour grid's scratch, the per-pair results, the
  * wall-contact geometry, the refinement's scratch): the destination keeps its
- * own of those, made big enough for the copy, and its results are marked
- * stale. */
+ * own of those, and its results are marked stale; dm_state_restore() makes
+ * them big enough for the copied lists. */
 #include <assert.h>
 #include <stdlib.h>
 #include <string.h>
@@ -125,10 +125,19 @@ demill_status dm_state_copy(demill_world *dst, const demill_world *src)
         dm_refine_free(dst);
         memset(&dst->refine, 0, sizeof dst->refine);
     }
+    return DEMILL_OK;
+}
+
+/* Makes the live world w's state a copy of src's (which may come from
+ * another world, a snapshot or a checkpoint). */
+demill_status dm_state_restore(demill_world *w, const demill_world *src)
+{
+    if (dm_state_copy(w, src))
+        return DEMILL_ERR_OUT_OF_MEMORY;
     /* the next step uses the copied lists without a build, which is what
      * makes room for their results and wall geometry; without the room the
      * lists are built afresh */
-    if (dm_wgeom_reserve(dst) || dm_results_reserve(dst))
-        dst->nlist_valid = false;
+    if (dm_wgeom_reserve(w) || dm_results_reserve(w))
+        w->nlist_valid = false;
     return DEMILL_OK;
 }

@@ -53,7 +53,7 @@ static demill_status restore(demill_world *w, const demill_world *src)
 {
     const uint64_t edits = w->edits;
     const int threads = w->threads;
-    if (dm_state_copy(w, src))
+    if (dm_state_restore(w, src))
         return DEMILL_ERR_OUT_OF_MEMORY;
     w->edits = edits;
     w->threads = threads;

@@ -220,7 +220,7 @@ static demill_status fail_back(demill_world *w, const char *why)
     snprintf(msg, sizeof msg, "%s", why);
     const double t_bad = w->time;
     const dm_watch *g = &w->watch;
-    if (dm_state_copy(w, g->good))
+    if (dm_state_restore(w, g->good))
         return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY,
                        "%s; and out of memory putting back the last good state", msg);
     return dm_fail(w, DEMILL_ERR_UNSTABLE,
