@@ -143,7 +143,7 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
         vnd = !pp->clamp & (hin[HT + 1] > 0.0) ? implicit : vn;
     }
     double fn = fel - cn * vnd;
-    fn = pp->clamp & (fn < 0.0) ? 0.0 : fn;
+    fn = (pp->clamp & (fn < 0.0)) ? 0.0 : fn;
     const double fn_now = fn;
     if (dm_law_entry(DL)) {
         /* first sample of a new contact: age from the overlap under the

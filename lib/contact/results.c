@@ -71,7 +71,8 @@ void dm_results_layout(demill_world *w)
     }
     q->n = id;
     q->nchunks = c;
-    memset(q->chunk_listed, 0, c * sizeof *q->chunk_listed);
+    if (c) /* chunk_listed is NULL before the first chunk */
+        memset(q->chunk_listed, 0, c * sizeof *q->chunk_listed);
     q->valid = true;
 }
 
