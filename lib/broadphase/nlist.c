@@ -4,6 +4,7 @@
  * kernel, with the history of contacts that were already touching carried
  * over. Cost O(N); the lists stay valid until some particle has moved half
  * the skin (or a wall has moved so far that a gap could close). */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -425,17 +426,23 @@ demill_status dm_nlist_build(demill_world *w)
     double h = 2.0 * rmax + w->skin;
     if (!(h > 0.0))
         h = 1.0;
-    int64_t nc[3] = {1, 1, 1};
+    /* counted in doubles, so that particles spread over any finite distance
+     * (up to the largest double, beyond which the span saturates) give a
+     * grid that fits */
+    double span[3] = {0, 0, 0};
+    for (int c = 0; c < D; c++)
+        span[c] = fmin(hi[c] - lo[c], DBL_MAX);
     for (;;) {
-        uint64_t total = 1;
-        for (int c = 0; c < D; c++) {
-            nc[c] = (int64_t)((hi[c] - lo[c]) / h) + 1;
-            total *= (uint64_t)nc[c];
-        }
-        if (total <= 4 * (uint64_t)n + 64)
+        double total = 1.0;
+        for (int c = 0; c < D; c++)
+            total *= floor(span[c] / h) + 1.0;
+        if (total <= 4.0 * n + 64.0)
             break;
         h *= 1.5;
     }
+    int64_t nc[3] = {1, 1, 1};
+    for (int c = 0; c < D; c++)
+        nc[c] = (int64_t)(span[c] / h) + 1;
     memcpy(g->lo, lo, sizeof lo);
     memcpy(g->hi, hi, sizeof hi);
     const uint64_t ncells = (uint64_t)nc[0] * nc[1] * nc[2];
@@ -453,9 +460,8 @@ demill_status dm_nlist_build(demill_world *w)
     for (uint32_t i = 0; i < n; i++) {
         uint64_t cell = 0, stride = 1;
         for (int c = 0; c < D; c++) {
-            int64_t q = (int64_t)((P->x[D * i + c] - lo[c]) * inv_h);
-            if (q >= nc[c])
-                q = nc[c] - 1;
+            const double qd = (P->x[D * i + c] - lo[c]) * inv_h;
+            const int64_t q = qd < (double)(nc[c] - 1) ? (int64_t)qd : nc[c] - 1;
             cell += (uint64_t)q * stride;
             stride *= (uint64_t)nc[c];
         }
