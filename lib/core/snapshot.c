@@ -6,7 +6,8 @@
  * with their histories, tallies and counters. It leaves out what is derived
  * again before use (the neighbour grid's scratch, the per-pair results, the
  * wall-contact geometry, the refinement's scratch): the destination keeps its
- * own of those, and its results are marked stale. */
+ * own of those, and its results are marked stale. The destination keeps its
+ * progress callback too: it is the host's, not state. */
 #include <assert.h>
 #include <stdlib.h>
 #include <string.h>
@@ -115,6 +116,7 @@ demill_status dm_state_copy(demill_world *dst, const demill_world *src)
     n.wg = dst->wg;
     n.refine = dst->refine;
     n.watch = dst->watch;
+    n.progress = dst->progress;
     *dst = n;
     return DEMILL_OK;
 }

@@ -1760,6 +1760,26 @@ START_TEST(suggest_time_step)
 }
 END_TEST
 
+static int32_t never_called(void *user, uint64_t done, uint64_t total, double time, double rate)
+{
+    (void)user, (void)done, (void)total, (void)time, (void)rate;
+    ck_abort_msg("a progress callback that failed to be set was called");
+    return 1;
+}
+
+static void bad_progress(scene *sc)
+{
+    ctx(sc, "set_progress every 0");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_world_set_progress(sc->w, never_called, sc, 0),
+        "every_steps");
+}
+
+START_TEST(progress_callback)
+{
+    both_dims(NULL, bad_progress, NULL);
+}
+END_TEST
+
 /* ------------------------------------------------------------------------ */
 /* NULL worlds and world creation                                             */
 
@@ -1819,6 +1839,7 @@ START_TEST(null_world_and_create)
         {"contacts_read_ids", demill_contacts_read_ids(N, ids, ids, 1, &cnt)},
         {"world_energy", demill_world_energy(N, DEMILL_ENERGY_TOTAL, &d)},
         {"world_suggest_time_step", demill_world_suggest_time_step(N, 1.0, 0, &d, NULL, NULL)},
+        {"world_set_progress", demill_world_set_progress(N, NULL, NULL, 1)},
     };
     for (size_t k = 0; k < sizeof calls / sizeof calls[0]; k++)
         ck_assert_msg(calls[k].got == DEMILL_ERR_NULL_POINTER,
@@ -1933,6 +1954,7 @@ int main(void)
     tcase_add_test(tc, no_contact_model);
     tcase_add_test(tc, no_contact_model_with_wall);
     tcase_add_test(tc, suggest_time_step);
+    tcase_add_test(tc, progress_callback);
     suite_add_tcase(s, tc);
     TCase *doc = tcase_create("documented_codes");
     tcase_set_timeout(doc, 600);
