@@ -1780,6 +1780,33 @@ START_TEST(progress_callback)
 }
 END_TEST
 
+static void bad_vtk(scene *sc)
+{
+    demill_world *w = sc->w;
+    demill_vtk_series *series;
+    ctx(sc, "vtk writers with NULL");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_vtk_write_particles(w, NULL), "path");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_vtk_write_walls(w, NULL), "path");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_vtk_series_open(w, NULL, &series), "prefix");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_vtk_series_open(w, "x", NULL), "out");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_vtk_series_write(w, NULL), "series");
+    ctx(sc, "vtk series prefix without a name");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_vtk_series_open(w, "out/", &series), "prefix");
+    ctx(sc, "vtk files in a missing directory");
+    BAD(sc, DEMILL_ERR_IO, demill_vtk_write_particles(w, "/nonexistent-demill/p.vtu"),
+        "/nonexistent-demill/p.vtu", "no such file");
+    BAD(sc, DEMILL_ERR_IO, demill_vtk_write_walls(w, "/nonexistent-demill/w.vtp"),
+        "/nonexistent-demill/w.vtp", "no such file");
+    BAD(sc, DEMILL_ERR_IO, demill_vtk_series_open(w, "/nonexistent-demill/s", &series),
+        "/nonexistent-demill/s.pvd", "no such file");
+}
+
+START_TEST(vtk_output)
+{
+    both_dims(NULL, bad_vtk, NULL);
+}
+END_TEST
+
 /* ------------------------------------------------------------------------ */
 /* NULL worlds and world creation                                             */
 
@@ -1812,6 +1839,7 @@ START_TEST(null_world_and_create)
     size_t cnt = 0;
     demill_id id = 0;
     demill_world *const N = NULL;
+    demill_vtk_series *series = NULL;
     const struct {
         const char *name;
         demill_status got;
@@ -1840,6 +1868,10 @@ START_TEST(null_world_and_create)
         {"world_energy", demill_world_energy(N, DEMILL_ENERGY_TOTAL, &d)},
         {"world_suggest_time_step", demill_world_suggest_time_step(N, 1.0, 0, &d, NULL, NULL)},
         {"world_set_progress", demill_world_set_progress(N, NULL, NULL, 1)},
+        {"vtk_write_particles", demill_vtk_write_particles(N, "p.vtu")},
+        {"vtk_write_walls", demill_vtk_write_walls(N, "w.vtp")},
+        {"vtk_series_open", demill_vtk_series_open(N, "s", &series)},
+        {"vtk_series_write", demill_vtk_series_write(N, series)},
     };
     for (size_t k = 0; k < sizeof calls / sizeof calls[0]; k++)
         ck_assert_msg(calls[k].got == DEMILL_ERR_NULL_POINTER,
@@ -1955,6 +1987,7 @@ int main(void)
     tcase_add_test(tc, no_contact_model_with_wall);
     tcase_add_test(tc, suggest_time_step);
     tcase_add_test(tc, progress_callback);
+    tcase_add_test(tc, vtk_output);
     suite_add_tcase(s, tc);
     TCase *doc = tcase_create("documented_codes");
     tcase_set_timeout(doc, 600);
