@@ -10,6 +10,7 @@
  *   demill/query.h      contacts and energies
  *   demill/drum.h       the mill: drum, lifters, charge, power, spectrum
  *   demill/state.h      snapshots, checkpoint files, listing a world's ids
+ *   demill/vtk.h        output for ParaView: particles, walls, time series
  *
  * A minimal program:
  *
@@ -34,5 +35,6 @@
 #include "demill/query.h"
 #include "demill/drum.h"
 #include "demill/state.h"
+#include "demill/vtk.h"
 
 #endif /* DEMILL_H */

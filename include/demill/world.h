@@ -168,15 +168,78 @@ DEMILL_API demill_status demill_world_get(const demill_world *world, int32_t key
  *  and nothing changes. `steps` = 0 only evaluates the forces at the current
  *  state (so that forces, torques, contacts and energies can be read).
  *
+ *  With a progress callback set (demill_world_set_progress()), the call
+ *  reports to it as it goes, and the callback may stop it.
+ *
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NO_CONTACT_MODEL,
- *          DEMILL_ERR_INVALID_VALUE, DEMILL_ERR_OUT_OF_MEMORY or
- *          DEMILL_ERR_UNSTABLE. If memory runs out in the middle of a run,
- *          the world holds the state after the last completed step. On
- *          DEMILL_ERR_UNSTABLE (the watchdog, see DEMILL_WORLD_WATCHDOG) the
- *          world holds the last state that passed the watchdog's check, and
- *          the message names the particle, the time and the likely cause;
- *          the caller may lower the time step and step again. */
+ *          DEMILL_ERR_INVALID_VALUE, DEMILL_ERR_OUT_OF_MEMORY,
+ *          DEMILL_ERR_UNSTABLE or DEMILL_ERR_INTERRUPTED. If memory runs out
+ *          in the middle of a run, the world holds the state after the last
+ *          completed step. On DEMILL_ERR_UNSTABLE (the watchdog, see
+ *          DEMILL_WORLD_WATCHDOG) the world holds the last state that passed
+ *          the watchdog's check, and the message names the particle, the
+ *          time and the likely cause; the caller may lower the time step and
+ *          step again. On DEMILL_ERR_INTERRUPTED (the progress callback
+ *          asked to stop) the world holds the state after the step it was
+ *          called at, a valid state from which stepping may go on; the
+ *          message says at which step and time the run stopped. */
 DEMILL_API demill_status demill_world_step(demill_world *world, uint64_t steps);
+
+/** A progress callback (see demill_world_set_progress()).
+ *  @param user_data        the pointer given with the callback.
+ *  @param steps_done       steps done so far by the current call of
+ *                          demill_world_step().
+ *  @param steps_total      steps that call was asked for.
+ *  @param time             the world's simulated time now, s.
+ *  @param steps_per_second steps_done over the wall-clock time since the call
+ *                          began (a monotonic clock); 0 if that clock has not
+ *                          advanced.
+ *  @return 0 to go on; anything else stops the run after this step, and
+ *          demill_world_step() returns DEMILL_ERR_INTERRUPTED. */
+typedef int32_t (*demill_progress_fn)(void *user_data, uint64_t steps_done, uint64_t steps_total,
+                                      double time, double steps_per_second);
+
+/** Sets or removes the world's progress callback, so that a host program can
+ *  show how a long run goes and stop it.
+ *
+ *  During every call of demill_world_step(world, steps) (and so of
+ *  demill_world_settle(), which steps in runs of 1 ms of simulated time),
+ *  fn is called after each `every_steps` steps of that call, with
+ *  steps_done = every_steps, 2 every_steps, ..., and once more at the end
+ *  (steps_done = steps_total) unless the last of those was the end. A call
+ *  with steps = 0, or one that fails, does not report its end. If fn returns
+ *  nonzero before the end, the run stops there: demill_world_step() returns
+ *  DEMILL_ERR_INTERRUPTED and the world holds the state after that step,
+ *  which is not a failure (nothing is put back) and from which the run can
+ *  go on: stepping it the remaining steps gives bitwise the state the whole
+ *  run would have reached. A nonzero return at the end has nothing left to
+ *  stop and is ignored. The steps are run in stretches between reports, so
+ *  a callback costs one call per every_steps steps; without one, nothing.
+ *  The watchdog (DEMILL_WORLD_WATCHDOG) is unaffected: it checks at the
+ *  same steps, and DEMILL_ERR_UNSTABLE behaves as without a callback.
+ *
+ *  fn is called between two steps, with the world in the state it has
+ *  between two calls of demill_world_step(). It is meant to read the world:
+ *  any function that does not change it may be called (demill_world_get(),
+ *  demill_particles_read(), demill_drum_get(), demill_world_energy(),
+ *  demill_vtk_write_particles(), demill_vtk_series_write(), ...). A call
+ *  that changes the world is allowed too and takes effect from the next
+ *  step, as if the run had been split into two calls there (a change that
+ *  leaves the world unable to step, e.g. particles of a material without a
+ *  contact model, ends the run with that error). fn must not destroy the
+ *  world, and should not step it: a nested run would report to fn as well.
+ *  A change of the callback itself applies from the next call of
+ *  demill_world_step(). The callback is not part of the simulated state:
+ *  the watchdog's return to a good state keeps the current callback.
+ *
+ *  @param fn          the callback, or NULL to remove it (then user_data and
+ *                     every_steps are ignored).
+ *  @param user_data   passed to fn as it is; may be NULL.
+ *  @param every_steps steps between reports, >= 1 (with a non-NULL fn).
+ *  @return DEMILL_OK or DEMILL_ERR_INVALID_VALUE (every_steps = 0 with a
+ *          non-NULL fn; the callback is left as it was). */
+DEMILL_API demill_status demill_world_set_progress(demill_world *world, demill_progress_fn fn,
+                                                   void *user_data, uint64_t every_steps);
 
 /** Suggests a time step for the current scene (PHYSICS.md §8), from every
  *  pair of materials that can meet: particle materials with each other and

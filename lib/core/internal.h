@@ -325,6 +325,15 @@ typedef struct dm_watch {
                                     smallest and largest potential energy */
 } dm_watch;
 
+/* ---- progress reporting (integrate/progress.c) ----------------------------- */
+/* The host's callback (demill_world_set_progress). Not part of the simulated
+ * state: a copy of the state (dm_state_copy) leaves the destination's. */
+typedef struct dm_progress {
+    demill_progress_fn fn;  /* NULL: none */
+    void *user;
+    uint64_t every;         /* steps between reports */
+} dm_progress;
+
 /* ---- the world ------------------------------------------------------------- */
 #define DM_WORLD_MAGIC 0x64656d696c6cu /* "demill" */
 
@@ -348,6 +357,7 @@ struct demill_world {
     double watch_overlap;
     uint32_t watch_interval;
     dm_watch watch;
+    dm_progress progress;
     uint64_t edits;         /* calls that may have changed the world (dm_changed) */
     char error[1024];
 
@@ -526,6 +536,10 @@ demill_status dm_drum_prepare(demill_world *w);
 /* integrate/integrate.c */
 demill_status dm_integrate(demill_world *w, uint64_t steps);
 demill_status dm_prepare_step(demill_world *w);
+demill_status dm_run_steps(demill_world *w, uint64_t steps);
+
+/* integrate/progress.c */
+demill_status dm_progress_steps(demill_world *w, uint64_t steps);
 
 /* core/snapshot.c */
 demill_status dm_state_copy(demill_world *dst, const demill_world *src);

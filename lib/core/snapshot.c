@@ -7,7 +7,8 @@
  * again before use (the neighbour grid's scratch, the per-pair results, the
  * wall-contact geometry, the refinement's scratch): the destination keeps its
  * own of those, and its results are marked stale; dm_state_restore() makes
- * them big enough for the copied lists. */
+ * them big enough for the copied lists. The destination keeps its progress
+ * callback too: it is the host's, not state. */
 #include <assert.h>
 #include <stdlib.h>
 #include <string.h>
@@ -118,6 +119,7 @@ demill_status dm_state_copy(demill_world *dst, const demill_world *src)
     n.refine = dst->refine;
     n.watch = dst->watch;
     const bool same_dim = dst->dim == src->dim;
+    n.progress = dst->progress;
     *dst = n;
     if (!same_dim) { /* the scratch is laid out for a dimension: start it afresh */
         dm_results_free(dst);

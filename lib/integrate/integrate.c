@@ -249,13 +249,19 @@ demill_status dm_integrate(demill_world *w, uint64_t steps)
     }
 }
 
+/* Steps a prepared world, under the watchdog when it is on. */
+demill_status dm_run_steps(demill_world *w, uint64_t steps)
+{
+    return w->watchdog ? dm_watched_steps(w, steps) : dm_integrate(w, steps);
+}
+
 DEMILL_API demill_status demill_world_step(demill_world *w, uint64_t steps)
 {
     demill_status s = dm_check_world(w);
     if (s)
         return s;
     if ((s = dm_prepare_step(w)) ||
-        (s = w->watchdog ? dm_watched_steps(w, steps) : dm_integrate(w, steps)))
+        (s = w->progress.fn ? dm_progress_steps(w, steps) : dm_run_steps(w, steps)))
         return s;
     dm_clear_error(w);
     return DEMILL_OK;

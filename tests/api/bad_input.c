@@ -1760,6 +1760,53 @@ START_TEST(suggest_time_step)
 }
 END_TEST
 
+static int32_t never_called(void *user, uint64_t done, uint64_t total, double time, double rate)
+{
+    (void)user, (void)done, (void)total, (void)time, (void)rate;
+    ck_abort_msg("a progress callback that failed to be set was called");
+    return 1;
+}
+
+static void bad_progress(scene *sc)
+{
+    ctx(sc, "set_progress every 0");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_world_set_progress(sc->w, never_called, sc, 0),
+        "every_steps");
+}
+
+START_TEST(progress_callback)
+{
+    both_dims(NULL, bad_progress, NULL);
+}
+END_TEST
+
+static void bad_vtk(scene *sc)
+{
+    demill_world *w = sc->w;
+    demill_vtk_series *series;
+    ctx(sc, "vtk writers with NULL");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_vtk_write_particles(w, NULL), "path");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_vtk_write_walls(w, NULL), "path");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_vtk_series_open(w, NULL, &series), "prefix");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_vtk_series_open(w, "x", NULL), "out");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_vtk_series_write(w, NULL), "series");
+    ctx(sc, "vtk series prefix without a name");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_vtk_series_open(w, "out/", &series), "prefix");
+    ctx(sc, "vtk files in a missing directory");
+    BAD(sc, DEMILL_ERR_IO, demill_vtk_write_particles(w, "/nonexistent-demill/p.vtu"),
+        "/nonexistent-demill/p.vtu", "no such file");
+    BAD(sc, DEMILL_ERR_IO, demill_vtk_write_walls(w, "/nonexistent-demill/w.vtp"),
+        "/nonexistent-demill/w.vtp", "no such file");
+    BAD(sc, DEMILL_ERR_IO, demill_vtk_series_open(w, "/nonexistent-demill/s", &series),
+        "/nonexistent-demill/s.pvd", "no such file");
+}
+
+START_TEST(vtk_output)
+{
+    both_dims(NULL, bad_vtk, NULL);
+}
+END_TEST
+
 /* ------------------------------------------------------------------------ */
 /* NULL worlds and world creation                                             */
 
@@ -1795,6 +1842,7 @@ START_TEST(null_world_and_create)
     demill_snapshot *snap = NULL, *snap_out = NULL;
     DM_OK(keep, demill_snapshot_take(keep, &snap));
     unsigned char bytes[64] = {0};
+    demill_vtk_series *series = NULL;
     const struct {
         const char *name;
         demill_status got;
@@ -1829,6 +1877,11 @@ START_TEST(null_world_and_create)
         {"world_save_buffer", demill_world_save_buffer(N, bytes, sizeof bytes, &cnt)},
         {"world_load_buffer", demill_world_load_buffer(N, bytes, sizeof bytes)},
         {"world_ids", demill_world_ids(N, DEMILL_KIND_MATERIAL, ids, 1, &cnt)},
+        {"world_set_progress", demill_world_set_progress(N, NULL, NULL, 1)},
+        {"vtk_write_particles", demill_vtk_write_particles(N, "p.vtu")},
+        {"vtk_write_walls", demill_vtk_write_walls(N, "w.vtp")},
+        {"vtk_series_open", demill_vtk_series_open(N, "s", &series)},
+        {"vtk_series_write", demill_vtk_series_write(N, series)},
     };
     for (size_t k = 0; k < sizeof calls / sizeof calls[0]; k++)
         ck_assert_msg(calls[k].got == DEMILL_ERR_NULL_POINTER,
@@ -1945,6 +1998,8 @@ int main(void)
     tcase_add_test(tc, no_contact_model);
     tcase_add_test(tc, no_contact_model_with_wall);
     tcase_add_test(tc, suggest_time_step);
+    tcase_add_test(tc, progress_callback);
+    tcase_add_test(tc, vtk_output);
     suite_add_tcase(s, tc);
     TCase *doc = tcase_create("documented_codes");
     tcase_set_timeout(doc, 600);
