@@ -9,6 +9,7 @@
  *   demill/wall.h       walls with prescribed motion
  *   demill/query.h      contacts and energies
  *   demill/drum.h       the mill: drum, lifters, charge, power, spectrum
+ *   demill/state.h      snapshots, checkpoint files, listing a world's ids
  *
  * A minimal program:
  *
@@ -32,5 +33,6 @@
 #include "demill/wall.h"
 #include "demill/query.h"
 #include "demill/drum.h"
+#include "demill/state.h"
 
 #endif /* DEMILL_H */

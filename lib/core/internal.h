@@ -257,7 +257,6 @@ typedef struct dm_spectrum {
 } dm_spectrum;
 
 typedef struct dm_drum {
-    uint32_t handle;
     bool alive;
     uint32_t material;
     double diameter, length, porosity;
@@ -469,6 +468,8 @@ demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const
 /* material.c */
 demill_status dm_resolve_pairs(demill_world *w, bool require_models);
 const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b);
+/* The contact kernel of two materials' model (the resolved table's), -1 for none. */
+int dm_pair_kernel(const demill_world *w, uint32_t a, uint32_t b);
 void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, double *inv_i);
 
 /* contact/restitution.c */

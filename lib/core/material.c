@@ -169,13 +169,26 @@ static void elastic_moduli(const dm_material *ma, const dm_material *mb, double 
                      2 * (2 - mb->poisson) * (1 + mb->poisson) / mb->youngs);
 }
 
+static int laws_kernel(dm_laws laws)
+{
+    return laws.normal == DEMILL_NORMAL_NONE ? -1 : dm_kernel_index(laws);
+}
+
+int dm_pair_kernel(const demill_world *w, uint32_t a, uint32_t b)
+{
+    dm_laws laws;
+    double v[DM_PK_COUNT];
+    pair_values(w, a, b, &laws, v);
+    return laws_kernel(laws);
+}
+
 static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairparam *pp)
 {
     dm_laws laws;
     double v[DM_PK_COUNT], g_star;
     pair_values(w, a, b, &laws, v);
     memset(pp, 0, sizeof *pp);
-    pp->kernel = laws.normal == DEMILL_NORMAL_NONE ? -1 : dm_kernel_index(laws);
+    pp->kernel = laws_kernel(laws);
     pp->clamp = v[DM_PK_CLAMP] != 0;
     pp->kn = v[DM_PK_NORMAL_STIFFNESS];
     elastic_moduli(&w->mats[a], &w->mats[b], &pp->e_star, &g_star);

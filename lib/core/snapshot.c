@@ -1,12 +1,13 @@
 /* snapshot.c: a deep copy of a world's state, for the watchdog's last good
- * state (integrate/watchdog.c).
+ * state (integrate/watchdog.c), snapshots and checkpoints (core/state.c).
  *
  * The copy holds everything a world is: parameters, materials and pairs,
  * particles in storage order, handles, walls, the drum, the contact lists
  * with their histories, tallies and counters. It leaves out what is derived
  * again before use (the neighbour grid's scratch, the per-pair results, the
  * wall-contact geometry, the refinement's scratch): the destination keeps its
- * own of those, and its results are marked stale. */
+ * own of those, made big enough for the copy, and its results are marked
+ * stale. */
 #include <assert.h>
 #include <stdlib.h>
 #include <string.h>
@@ -107,6 +108,7 @@ demill_status dm_state_copy(demill_world *dst, const demill_world *src)
     }
     dm_state_free(&old);
     n.magic = dst->magic;
+    n.tag = dst->tag; /* the world's identity: its ids stay its own */
     n.grid = dst->grid; /* scratch, but for the box of the last build */
     memcpy(n.grid.lo, src->grid.lo, sizeof n.grid.lo);
     memcpy(n.grid.hi, src->grid.hi, sizeof n.grid.hi);
@@ -115,6 +117,18 @@ demill_status dm_state_copy(demill_world *dst, const demill_world *src)
     n.wg = dst->wg;
     n.refine = dst->refine;
     n.watch = dst->watch;
+    const bool same_dim = dst->dim == src->dim;
     *dst = n;
+    if (!same_dim) { /* the scratch is laid out for a dimension: start it afresh */
+        dm_results_free(dst);
+        memset(&dst->res, 0, sizeof dst->res);
+        dm_refine_free(dst);
+        memset(&dst->refine, 0, sizeof dst->refine);
+    }
+    /* the next step uses the copied lists without a build, which is what
+     * makes room for their results and wall geometry; without the room the
+     * lists are built afresh */
+    if (dm_wgeom_reserve(dst) || dm_results_reserve(dst))
+        dst->nlist_valid = false;
     return DEMILL_OK;
 }

@@ -1792,6 +1792,9 @@ START_TEST(null_world_and_create)
     size_t cnt = 0;
     demill_id id = 0;
     demill_world *const N = NULL;
+    demill_snapshot *snap = NULL, *snap_out = NULL;
+    DM_OK(keep, demill_snapshot_take(keep, &snap));
+    unsigned char bytes[64] = {0};
     const struct {
         const char *name;
         demill_status got;
@@ -1819,12 +1822,21 @@ START_TEST(null_world_and_create)
         {"contacts_read_ids", demill_contacts_read_ids(N, ids, ids, 1, &cnt)},
         {"world_energy", demill_world_energy(N, DEMILL_ENERGY_TOTAL, &d)},
         {"world_suggest_time_step", demill_world_suggest_time_step(N, 1.0, 0, &d, NULL, NULL)},
+        {"snapshot_take", demill_snapshot_take(N, &snap_out)},
+        {"snapshot_restore", demill_snapshot_restore(N, snap)},
+        {"world_save", demill_world_save(N, "demill-null-world.ckpt")},
+        {"world_load", demill_world_load(N, "demill-null-world.ckpt")},
+        {"world_save_buffer", demill_world_save_buffer(N, bytes, sizeof bytes, &cnt)},
+        {"world_load_buffer", demill_world_load_buffer(N, bytes, sizeof bytes)},
+        {"world_ids", demill_world_ids(N, DEMILL_KIND_MATERIAL, ids, 1, &cnt)},
     };
     for (size_t k = 0; k < sizeof calls / sizeof calls[0]; k++)
         ck_assert_msg(calls[k].got == DEMILL_ERR_NULL_POINTER,
                       "demill_%s(NULL, ...) returned %d (%s), expected %d", calls[k].name,
                       (int)calls[k].got, demill_strerror(calls[k].got), DEMILL_ERR_NULL_POINTER);
     demill_world_destroy(NULL);
+    demill_snapshot_free(snap);
+    demill_snapshot_free(NULL);
     /* the real world was not touched by any of it */
     DM_OK(keep, demill_world_get(keep, DEMILL_WORLD_PARTICLE_COUNT, &d));
     ck_assert(d == 1.0);

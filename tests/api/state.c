@@ -1,0 +1,533 @@
+/* state.c: snapshots and checkpoints bring a world back exactly, and bad
+ * checkpoints are refused without harm.
+ *
+ * Restart: a run of 2n steps and a run of n steps, a checkpoint, a load in a
+ * new process (this program run again, on 2 threads where the library has
+ * OpenMP) and n more steps must end in bitwise the same state. "The same
+ * state" is checked twice: the final checkpoints, which hold every field of
+ * the state, are byte for byte equal, and so are the positions, velocities,
+ * spins, forces and energy terms read through the API. The scenes exercise
+ * every part of the state: a 3D mill with lifters turning up to speed over a
+ * ramp, Hertz-Mindlin contacts with rolling friction, a collision spectrum
+ * and particles removed (free handles); a 2D box of discs with a moving
+ * piston wall, linear contacts, on each of the three integrators.
+ *
+ * Snapshots: restoring a snapshot and stepping repeats the first run
+ * bitwise, in the same world and in another one (of the other dimension,
+ * which the snapshot replaces), and ids from demill_world_ids() name the
+ * restored objects.
+ *
+ * Refusal: every shorter prefix of a checkpoint, every single corrupted byte
+ * (the checksum), a foreign file, a newer format version, another byte
+ * order, trailing bytes and missing or unwritable files each give their
+ * documented code with a message naming the problem, and leave the world
+ * bitwise as it was. Byte flips behind a repaired checksum (which reach the
+ * checks of sizes, indices and parameters) give DEMILL_OK or
+ * DEMILL_ERR_FORMAT and never a crash; a world loaded from such a file
+ * steps. (tests/fuzz/ runs the loader under libFuzzer for longer.)
+ */
+#define _POSIX_C_SOURCE 200809L /* getpid */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "crc32.h"
+#include "testutil.h"
+
+static const char *self; /* this program, run again as the new process */
+
+/* ------------------------------------------------------------------------ */
+/* Scenes                                                                     */
+
+/* A 3D mill: 8 lifters, 5 and 6 mm balls filled to 25 %, a few removed, a
+ * spectrum recorded, turning up to 75 % of critical over a 0.05 s ramp. */
+static demill_world *mill3d(int integrator)
+{
+    demill_world *w;
+    demill_id balls, liner, drum;
+    ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrator));
+    DM_OK(w, demill_material_create(w, &balls));
+    DM_OK(w, demill_material_create(w, &liner));
+    const demill_id mats[2] = {balls, liner};
+    for (int k = 0; k < 2; k++) {
+        DM_OK(w, demill_material_set(w, mats[k], DEMILL_MATERIAL_DENSITY, 7800));
+        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ));
+        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_DAMPING,
+                                 DEMILL_DAMPING_RESTITUTION));
+        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_TANGENTIAL,
+                                 DEMILL_TANGENTIAL_MINDLIN));
+        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_ROLLING,
+                                 DEMILL_ROLLING_CONSTANT_TORQUE));
+        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_ROLLING_FRICTION, 0.05));
+    }
+    DM_OK(w, demill_drum_create(w, liner, &drum));
+    DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_DIAMETER, 0.1));
+    DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LENGTH, 0.03));
+    DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTERS, 8));
+    DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTER_HEIGHT, 0.008));
+    DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTER_WIDTH, 0.008));
+    const double sizes[4] = {0.005, 0.5, 0.006, 0.5};
+    demill_id ids[2000];
+    size_t added;
+    DM_OK(w, demill_drum_fill(w, drum, balls, DEMILL_SIZES_CLASSES, sizes, 4,
+                              DEMILL_FILL_FRACTION, 0.25, 11, ids, 2000, &added));
+    ck_assert_msg(added > 200, "only %zu balls", added);
+    const demill_id gone[3] = {ids[3], ids[40], ids[41]};
+    DM_OK(w, demill_particles_remove(w, 3, gone));
+    const double edges[2] = {0.0055, 0.0058};
+    DM_OK(w, demill_drum_spectrum_start(w, drum, 2, edges, 20, 1e-9, 1e-3));
+    DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_RAMP_TIME, 0.05));
+    DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_SPEED_FRACTION, 0.75));
+    return w;
+}
+
+/* A 2D box of 3 mm discs (linear, restitution damping, Coulomb friction)
+ * under gravity, pressed by a piston wall moving down at 0.2 m/s. */
+static demill_world *box2d(int integrator)
+{
+    demill_world *w;
+    demill_id m, wall;
+    ck_assert_int_eq(demill_world_create(2, &w), DEMILL_OK);
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrator));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_DISC_THICKNESS, 0.01));
+    DM_OK(w, demill_material_create(w, &m));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_DAMPING, DEMILL_DAMPING_RESTITUTION));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_SPRING));
+    const double walls[4][4] = {{0, 0, 0, 1}, {0, 0, 1, 0}, {0.1, 0, -1, 0}, {0, 0.12, 0, -1}};
+    for (int k = 0; k < 4; k++) {
+        const double pt[3] = {walls[k][0], walls[k][1], 0}, n[3] = {walls[k][2], walls[k][3], 0};
+        DM_OK(w, demill_wall_add_plane(w, m, pt, n, &wall));
+    }
+    const double v[3] = {0, -0.2, 0};
+    DM_OK(w, demill_wall_set_motion(w, wall, v, NULL, NULL));
+    enum { N = 120 };
+    double x[3 * N] = {0}, r[N];
+    for (int k = 0; k < N; k++) {
+        x[3 * k] = 0.006 + 0.0085 * (k % 10) + 0.001 * (k / 10 % 2);
+        x[3 * k + 1] = 0.005 + 0.0085 * (k / 10);
+        r[k] = 0.003 + 0.0004 * (k % 3);
+    }
+    DM_OK(w, demill_particles_add(w, m, N, x, r, NULL, DEMILL_ADD_NO_OVERLAP, NULL));
+    return w;
+}
+
+static demill_world *scene(int which)
+{
+    static const int integrators[3] = {DEMILL_INTEGRATOR_VELOCITY_VERLET,
+                                       DEMILL_INTEGRATOR_SYMPLECTIC_EULER,
+                                       DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT};
+    return which == 0 ? mill3d(DEMILL_INTEGRATOR_VELOCITY_VERLET) : box2d(integrators[which - 1]);
+}
+#define SCENES 4
+#define HALF 2500 /* n steps: 0.025 s, with many neighbour rebuilds and contacts */
+
+/* ------------------------------------------------------------------------ */
+/* Comparing states                                                           */
+
+typedef struct bytes {
+    unsigned char *b;
+    size_t n;
+} bytes;
+
+static bytes checkpoint_of(demill_world *w)
+{
+    /* called in long loops: no passing assertion, which Check reports one by one */
+    bytes c;
+    if (demill_world_save_buffer(w, NULL, 0, &c.n) || !(c.b = malloc(c.n)) ||
+        demill_world_save_buffer(w, c.b, c.n, &c.n))
+        ck_abort_msg("saving to a buffer: %s", demill_world_last_error(w));
+    return c;
+}
+
+static void same_bytes(bytes a, bytes b, const char *what)
+{
+    if (a.n != b.n)
+        ck_abort_msg("%s: checkpoints of %zu and %zu bytes", what, a.n, b.n);
+    if (memcmp(a.b, b.b, a.n)) {
+        size_t k = 0;
+        while (a.b[k] == b.b[k])
+            k++;
+        ck_abort_msg("%s: checkpoints differ from byte %zu of %zu", what, k, a.n);
+    }
+}
+
+/* The state read through the API, compared bitwise. */
+static void same_observed(demill_world *a, demill_world *b, const char *what)
+{
+    static const int32_t fields[5] = {DEMILL_PARTICLE_POSITION, DEMILL_PARTICLE_VELOCITY,
+                                      DEMILL_PARTICLE_ANGULAR_VELOCITY, DEMILL_PARTICLE_FORCE,
+                                      DEMILL_PARTICLE_TORQUE};
+    size_t n, m;
+    DM_OK(a, demill_particles_read(a, DEMILL_PARTICLE_POSITION, NULL, 0, &n));
+    DM_OK(b, demill_particles_read(b, DEMILL_PARTICLE_POSITION, NULL, 0, &m));
+    ck_assert_uint_eq(n, m);
+    double *fa = malloc(3 * n * sizeof *fa), *fb = malloc(3 * n * sizeof *fb);
+    ck_assert(fa && fb);
+    for (int f = 0; f < 5; f++) {
+        DM_OK(a, demill_particles_read(a, fields[f], fa, n, NULL));
+        DM_OK(b, demill_particles_read(b, fields[f], fb, n, NULL));
+        ck_assert_msg(!memcmp(fa, fb, 3 * n * sizeof *fa), "%s: particle field %d differs",
+                      what, (int)fields[f]);
+    }
+    free(fa);
+    free(fb);
+    for (int32_t e = DEMILL_ENERGY_KINETIC_TRANSLATIONAL; e <= DEMILL_ENERGY_TOTAL; e++) {
+        double ea, eb;
+        DM_OK(a, demill_world_energy(a, e, &ea));
+        DM_OK(b, demill_world_energy(b, e, &eb));
+        ck_assert_msg(!memcmp(&ea, &eb, sizeof ea), "%s: energy %d: %.17g vs %.17g", what,
+                      (int)e, ea, eb);
+    }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Restart in a new process                                                   */
+
+static char *temp_path(const char *name)
+{
+    const char *dir = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";
+    char *p = malloc(strlen(dir) + strlen(name) + 32);
+    ck_assert_ptr_nonnull(p);
+    sprintf(p, "%s/demill-state-%ld-%s", dir, (long)getpid(), name);
+    return p;
+}
+
+/* The second half, as a new process: load, step n on 2 threads, save. */
+static int continue_run(const char *from, const char *to)
+{
+    demill_world *w;
+    if (demill_world_create(3, &w) != DEMILL_OK || demill_world_load(w, from) != DEMILL_OK)
+        return fprintf(stderr, "load: %s\n", demill_world_last_error(w)), 1;
+    demill_status st = demill_world_set(w, DEMILL_WORLD_THREADS, 2);
+    if ((st != DEMILL_OK && st != DEMILL_ERR_UNSUPPORTED) ||
+        demill_world_step(w, HALF) != DEMILL_OK || demill_world_save(w, to) != DEMILL_OK)
+        return fprintf(stderr, "continue: %s\n", demill_world_last_error(w)), 1;
+    demill_world_destroy(w);
+    return 0;
+}
+
+START_TEST(restart_in_new_process_is_bitwise)
+{
+    demill_world *whole = scene(_i), *first = scene(_i), *loaded;
+    DM_OK(whole, demill_world_step(whole, 2 * HALF));
+    DM_OK(first, demill_world_step(first, HALF));
+    char *mid = temp_path("mid.ckpt"), *end = temp_path("end.ckpt");
+    DM_OK(first, demill_world_save(first, mid));
+    char *cmd = malloc(strlen(self) + strlen(mid) + strlen(end) + 32);
+    ck_assert_ptr_nonnull(cmd);
+    sprintf(cmd, "'%s' continue '%s' '%s'", self, mid, end);
+    ck_assert_msg(system(cmd) == 0, "the new process failed: %s", cmd);
+
+    ck_assert_int_eq(demill_world_create(2, &loaded), DEMILL_OK);
+    DM_OK(loaded, demill_world_load(loaded, end));
+    bytes a = checkpoint_of(whole), b = checkpoint_of(loaded);
+    same_bytes(a, b, "2n steps against n + save + load + n");
+    same_observed(whole, loaded, "2n steps against n + save + load + n");
+    /* and both go on alike */
+    DM_OK(whole, demill_world_step(whole, 200));
+    DM_OK(loaded, demill_world_step(loaded, 200));
+    same_observed(whole, loaded, "200 steps more");
+    double steps;
+    DM_OK(loaded, demill_world_get(loaded, DEMILL_WORLD_STEP_COUNT, &steps));
+    ck_assert(steps == 2 * HALF + 200);
+    remove(mid);
+    remove(end);
+    free(a.b);
+    free(b.b);
+    free(cmd);
+    free(mid);
+    free(end);
+    demill_world_destroy(whole);
+    demill_world_destroy(first);
+    demill_world_destroy(loaded);
+}
+END_TEST
+
+/* ------------------------------------------------------------------------ */
+/* Snapshots                                                                  */
+
+START_TEST(snapshot_restores_bitwise)
+{
+    demill_world *w = scene(_i), *other;
+    DM_OK(w, demill_world_step(w, 500));
+    demill_snapshot *snap;
+    DM_OK(w, demill_snapshot_take(w, &snap));
+    bytes at_snap = checkpoint_of(w);
+    DM_OK(w, demill_world_step(w, HALF));
+    bytes first = checkpoint_of(w);
+
+    DM_OK(w, demill_snapshot_restore(w, snap));
+    bytes restored = checkpoint_of(w);
+    same_bytes(at_snap, restored, "restored against taken");
+    DM_OK(w, demill_world_step(w, HALF));
+    bytes again = checkpoint_of(w);
+    same_bytes(first, again, "the run repeated from the snapshot");
+
+    /* into another world, of the other dimension, whose ids then name it */
+    const int dim = _i == 0 ? 3 : 2;
+    ck_assert_int_eq(demill_world_create(5 - dim, &other), DEMILL_OK);
+    DM_OK(other, demill_snapshot_restore(other, snap));
+    double d;
+    DM_OK(other, demill_world_get(other, DEMILL_WORLD_DIMENSION, &d));
+    ck_assert(d == dim);
+    DM_OK(other, demill_world_step(other, HALF));
+    same_observed(w, other, "the run repeated in another world");
+    size_t nm, nd, nw, np;
+    demill_id ids[8];
+    DM_OK(other, demill_world_ids(other, DEMILL_KIND_MATERIAL, ids, 8, &nm));
+    DM_OK(other, demill_world_ids(other, DEMILL_KIND_DRUM, NULL, 0, &nd));
+    DM_OK(other, demill_world_ids(other, DEMILL_KIND_WALL, NULL, 0, &nw));
+    DM_OK(other, demill_world_ids(other, DEMILL_KIND_PARTICLE, NULL, 0, &np));
+    DM_OK(w, demill_world_get(w, DEMILL_WORLD_PARTICLE_COUNT, &d));
+    ck_assert_uint_eq(np, (size_t)d);
+    ck_assert_uint_eq(nm, _i == 0 ? 2 : 1);
+    ck_assert_uint_eq(nd, _i == 0 ? 1 : 0);
+    ck_assert_uint_eq(nw, _i == 0 ? 0 : 4);
+    double density;
+    DM_OK(other, demill_material_get(other, ids[0], DEMILL_MATERIAL_DENSITY, &density));
+    ck_assert(density == (_i == 0 ? 7800 : 2500));
+    if (_i == 0) {
+        demill_id drum, mine;
+        DM_OK(other, demill_world_ids(other, DEMILL_KIND_DRUM, &drum, 1, NULL));
+        DM_OK(w, demill_world_ids(w, DEMILL_KIND_DRUM, &mine, 1, NULL));
+        double ta, tb;
+        DM_OK(other, demill_drum_get(other, drum, DEMILL_DRUM_TORQUE, &tb));
+        DM_OK(w, demill_drum_get(w, mine, DEMILL_DRUM_TORQUE, &ta));
+        ck_assert(!memcmp(&ta, &tb, sizeof ta));
+        /* each world's ids are its own */
+        ck_assert_int_eq(demill_drum_get(other, mine, DEMILL_DRUM_TORQUE, &tb),
+                         DEMILL_ERR_INVALID_HANDLE);
+    }
+    demill_snapshot_free(snap);
+    free(at_snap.b);
+    free(first.b);
+    free(restored.b);
+    free(again.b);
+    demill_world_destroy(w);
+    demill_world_destroy(other);
+}
+END_TEST
+
+START_TEST(listing_ids)
+{
+    demill_world *w = box2d(DEMILL_INTEGRATOR_VELOCITY_VERLET);
+    demill_id walls[4], one;
+    size_t n;
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_WALL, walls, 4, &n));
+    ck_assert_uint_eq(n, 4);
+    for (int k = 0; k < 4; k++)
+        ck_assert_int_eq(demill_id_kind(walls[k]), DEMILL_KIND_WALL);
+    DM_OK(w, demill_wall_remove(w, walls[1]));
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_WALL, NULL, 0, &n));
+    ck_assert_uint_eq(n, 3);
+    ck_assert_int_eq(demill_world_ids(w, DEMILL_KIND_WALL, walls, 2, &n),
+                     DEMILL_ERR_BUFFER_TOO_SMALL);
+    ck_assert_uint_eq(n, 3);
+    ck_assert_ptr_nonnull(strstr(demill_world_last_error(w), "capacity"));
+    ck_assert_int_eq(demill_world_ids(w, 9, &one, 1, &n), DEMILL_ERR_UNKNOWN_KEY);
+    ck_assert_int_eq(demill_world_ids(w, DEMILL_KIND_NONE, &one, 1, &n), DEMILL_ERR_UNKNOWN_KEY);
+    ck_assert_int_eq(demill_world_ids(w, DEMILL_KIND_DRUM, NULL, 0, NULL), DEMILL_ERR_NULL_POINTER);
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_DRUM, NULL, 0, &n));
+    ck_assert_uint_eq(n, 0);
+    demill_world_destroy(w);
+}
+END_TEST
+
+/* ------------------------------------------------------------------------ */
+/* Refusing bad checkpoints                                                   */
+
+/* Loading `bad` fails with `code` and a message containing `word`, and the
+ * world stays bitwise what `before` holds. */
+static void refused(demill_world *w, bytes before, const unsigned char *bad, size_t n,
+                    demill_status code, const char *word, const char *what)
+{
+    demill_status st = demill_world_load_buffer(w, bad, n);
+    if (st != code)
+        ck_abort_msg("%s: load gave %d (%s), expected %d", what, (int)st,
+                     demill_world_last_error(w), (int)code);
+    if (!strstr(demill_world_last_error(w), word))
+        ck_abort_msg("%s: message \"%s\" lacks \"%s\"", what, demill_world_last_error(w), word);
+    bytes now = checkpoint_of(w);
+    same_bytes(before, now, what);
+    free(now.b);
+}
+
+/* A small scene: a few particles touching a wall and each other. */
+static demill_world *small(void)
+{
+    demill_world *w = box2d(DEMILL_INTEGRATOR_VELOCITY_VERLET);
+    demill_id ids[120];
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_PARTICLE, ids, 120, NULL));
+    DM_OK(w, demill_particles_remove(w, 100, ids + 10));
+    DM_OK(w, demill_world_step(w, 300));
+    return w;
+}
+
+START_TEST(truncated_and_corrupt_checkpoints_are_refused)
+{
+    demill_world *w = small(), *target = box2d(DEMILL_INTEGRATOR_SYMPLECTIC_EULER);
+    DM_OK(target, demill_world_step(target, 10));
+    bytes good = checkpoint_of(w), before = checkpoint_of(target);
+    unsigned char *bad = malloc(good.n + 8);
+    ck_assert_ptr_nonnull(bad);
+
+    for (size_t n = 0; n < good.n; n++)
+        refused(target, before, good.b, n, DEMILL_ERR_FORMAT,
+                n < 32 ? "not a libdemill checkpoint" : "truncated", "a prefix");
+    for (size_t k = 0; k < good.n; k++) {
+        if (k >= 28 && k < 32)
+            continue; /* the writer's version, for messages only */
+        memcpy(bad, good.b, good.n);
+        bad[k] ^= 0x5a;
+        const char *word = k < 8 ? "not a libdemill" : k < 12 ? "format version" : k < 16 ? "byte order"
+                         : k < 24 ? "bytes of data" : "checksum";
+        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, k >= 32 ? "corrupt" : word,
+                "a corrupted byte");
+    }
+    memcpy(bad, good.b, good.n);
+    const uint32_t newer = 2;
+    memcpy(bad + 8, &newer, 4);
+    refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "format version 2", "a newer format");
+    memcpy(bad, good.b, good.n);
+    memcpy(bad + good.n, "trailing", 8);
+    refused(target, before, bad, good.n + 8, DEMILL_ERR_FORMAT, "trailing", "trailing bytes");
+    const char *xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\">";
+    refused(target, before, (const unsigned char *)xml, strlen(xml), DEMILL_ERR_FORMAT,
+            "starting \"<?xml ve\"", "a VTK file");
+
+    /* the good one still loads, and then equals its source */
+    DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
+    same_observed(w, target, "loaded");
+    free(bad);
+    free(good.b);
+    free(before.b);
+    demill_world_destroy(w);
+    demill_world_destroy(target);
+}
+END_TEST
+
+START_TEST(corruption_behind_a_repaired_checksum_never_crashes)
+{
+    demill_world *w = small(), *target;
+    ck_assert_int_eq(demill_world_create(3, &target), DEMILL_OK);
+    bytes good = checkpoint_of(w), before = checkpoint_of(target);
+    bytes bad = {malloc(good.n), good.n};
+    ck_assert_ptr_nonnull(bad.b);
+    size_t loaded = 0, refused_count = 0;
+    static const unsigned char flips[3] = {0x01, 0x80, 0xff};
+    for (size_t k = 32; k < good.n; k++)
+        for (int f = 0; f < 3; f++) {
+            memcpy(bad.b, good.b, good.n);
+            bad.b[k] ^= flips[f];
+            dm_test_ckpt_repair(bad.b, bad.n);
+            const demill_status st = demill_world_load_buffer(target, bad.b, bad.n);
+            if (st != DEMILL_OK && st != DEMILL_ERR_FORMAT)
+                ck_abort_msg("byte %zu ^ 0x%02x: load gave %d: %s", k, flips[f], (int)st,
+                             demill_world_last_error(target));
+            if (st == DEMILL_OK) {
+                loaded++;
+                /* what was accepted is a world that can run (the watchdog may
+                 * object to what a flipped bit made of a position or a time
+                 * step, but nothing may crash) */
+                const demill_status s2 = demill_world_step(target, 20);
+                if (s2 < DEMILL_OK || s2 > DEMILL_ERR_INTERRUPTED)
+                    ck_abort_msg("byte %zu: stepping gave %d", k, (int)s2);
+                if (demill_world_load_buffer(target, before.b, before.n))
+                    ck_abort_msg("reloading: %s", demill_world_last_error(target));
+            } else {
+                refused_count++;
+                bytes now = checkpoint_of(target);
+                same_bytes(before, now, "after a refused load");
+                free(now.b);
+            }
+        }
+    ck_assert_msg(refused_count > 100 && loaded > 100, "%zu refused, %zu loaded", refused_count,
+                  loaded);
+    free(bad.b);
+    free(good.b);
+    free(before.b);
+    demill_world_destroy(w);
+    demill_world_destroy(target);
+}
+END_TEST
+
+START_TEST(file_errors)
+{
+    demill_world *w = small();
+    bytes before = checkpoint_of(w);
+    ck_assert_int_eq(demill_world_load(w, "/nonexistent/demill.ckpt"), DEMILL_ERR_IO);
+    ck_assert_ptr_nonnull(strstr(demill_world_last_error(w), "/nonexistent/demill.ckpt"));
+    ck_assert_int_eq(demill_world_save(w, "/nonexistent/demill.ckpt"), DEMILL_ERR_IO);
+    ck_assert_ptr_nonnull(strstr(demill_world_last_error(w), "/nonexistent/demill.ckpt"));
+    ck_assert_ptr_nonnull(strstr(demill_world_last_error(w), "No such file"));
+    ck_assert_int_eq(demill_world_load(w, "/"), DEMILL_ERR_IO); /* a directory */
+
+    char *path = temp_path("text");
+    FILE *f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs("x y z\n1 2 3\n", f);
+    fclose(f);
+    ck_assert_int_eq(demill_world_load(w, path), DEMILL_ERR_FORMAT);
+    ck_assert_ptr_nonnull(strstr(demill_world_last_error(w), path));
+    ck_assert_ptr_nonnull(strstr(demill_world_last_error(w), "not a libdemill checkpoint"));
+    /* saving over it replaces it whole */
+    DM_OK(w, demill_world_save(w, path));
+    DM_OK(w, demill_world_load(w, path));
+    bytes after = checkpoint_of(w);
+    same_bytes(before, after, "saved and loaded");
+    remove(path);
+
+    ck_assert_int_eq(demill_world_save(w, NULL), DEMILL_ERR_NULL_POINTER);
+    ck_assert_int_eq(demill_world_load(w, NULL), DEMILL_ERR_NULL_POINTER);
+    ck_assert_int_eq(demill_world_load_buffer(w, NULL, 10), DEMILL_ERR_NULL_POINTER);
+    ck_assert_int_eq(demill_world_save_buffer(w, NULL, 0, NULL), DEMILL_ERR_NULL_POINTER);
+    size_t n = 0;
+    unsigned char tiny[16];
+    ck_assert_int_eq(demill_world_save_buffer(w, tiny, sizeof tiny, &n),
+                     DEMILL_ERR_BUFFER_TOO_SMALL);
+    ck_assert_uint_eq(n, before.n);
+    ck_assert_int_eq(demill_snapshot_take(w, NULL), DEMILL_ERR_NULL_POINTER);
+    ck_assert_int_eq(demill_snapshot_restore(w, NULL), DEMILL_ERR_NULL_POINTER);
+    uint64_t fake[64] = {0};
+    ck_assert_int_eq(demill_snapshot_restore(w, (const demill_snapshot *)fake),
+                     DEMILL_ERR_INVALID_HANDLE);
+    bytes end = checkpoint_of(w);
+    same_bytes(before, end, "after the failed calls");
+    free(before.b);
+    free(after.b);
+    free(end.b);
+    free(path);
+    demill_world_destroy(w);
+}
+END_TEST
+
+int main(int argc, char **argv)
+{
+    self = argv[0];
+    if (argc == 4 && !strcmp(argv[1], "continue"))
+        return continue_run(argv[2], argv[3]);
+    Suite *s = suite_create("state");
+    /* one case per test, so that CK_RUN_CASE can pick one */
+    const struct {
+        const char *name;
+        const TTest *test;
+        int loops;
+    } tests[] = {
+        {"restart", restart_in_new_process_is_bitwise, SCENES},
+        {"snapshot", snapshot_restores_bitwise, SCENES},
+        {"ids", listing_ids, 1},
+        {"refused", truncated_and_corrupt_checkpoints_are_refused, 1},
+        {"repaired", corruption_behind_a_repaired_checksum_never_crashes, 1},
+        {"files", file_errors, 1},
+    };
+    for (size_t k = 0; k < sizeof tests / sizeof tests[0]; k++) {
+        TCase *tc = tcase_create(tests[k].name);
+        tcase_set_timeout(tc, 600);
+        tcase_add_loop_test(tc, tests[k].test, 0, tests[k].loops);
+        suite_add_tcase(s, tc);
+    }
+    return dm_test_run(s);
+}
