@@ -1,0 +1,197 @@
+"""Loading libdemill and declaring the C prototypes for ctypes.
+
+The library is searched, in order:
+
+1. the file named by the environment variable ``DEMILL_LIBRARY``;
+2. a build tree of the source checkout this package sits in
+   (``build*/libdemill.so`` beside ``python/``; the newest if several);
+3. an installed library (``ctypes.util.find_library("demill")``, then
+   ``libdemill.so.0``).
+
+Every function has its ``argtypes`` and ``restype`` declared, so ctypes checks
+each argument's type.  Functions newer than the oldest library this binding
+supports are *optional*: when the loaded library lacks one, calling it raises
+:class:`demill.Unsupported` instead of failing the import.
+"""
+
+import ctypes
+import ctypes.util
+import os
+from ctypes import POINTER, c_char_p, c_double, c_int32, c_size_t, c_uint32, c_uint64, c_void_p
+from pathlib import Path
+
+from .constants import Status
+from .errors import Unsupported
+
+
+class _World(ctypes.Structure):
+    """Opaque ``demill_world``."""
+
+
+class _Snapshot(ctypes.Structure):
+    """Opaque ``demill_snapshot``."""
+
+
+class _VtkSeries(ctypes.Structure):
+    """Opaque ``demill_vtk_series``."""
+
+
+WorldP = POINTER(_World)
+SnapshotP = POINTER(_Snapshot)
+VtkSeriesP = POINTER(_VtkSeries)
+status = c_int32
+id_t = c_uint64
+dptr = POINTER(c_double)
+idptr = POINTER(c_uint64)
+sizeptr = POINTER(c_size_t)
+
+#: typedef int32_t (*demill_progress_fn)(void *, uint64_t, uint64_t, double, double)
+ProgressFn = ctypes.CFUNCTYPE(c_int32, c_void_p, c_uint64, c_uint64, c_double, c_double)
+
+#: name: (restype, argtypes) of every function of the public API.
+PROTOTYPES = {
+    # common.h
+    "demill_version_number": (c_uint32, ()),
+    "demill_version_string": (c_char_p, ()),
+    "demill_check_version": (c_int32, (c_uint32,)),
+    "demill_strerror": (c_char_p, (status,)),
+    "demill_id_kind": (c_int32, (id_t,)),
+    "demill_param_name": (c_char_p, (c_int32,)),
+    "demill_param_unit": (c_char_p, (c_int32,)),
+    "demill_param_bounds": (status, (c_int32, dptr, dptr, dptr)),
+    # world.h
+    "demill_world_create": (status, (c_int32, POINTER(WorldP))),
+    "demill_world_destroy": (None, (WorldP,)),
+    "demill_world_last_error": (c_char_p, (WorldP,)),
+    "demill_world_set": (status, (WorldP, c_int32, c_double)),
+    "demill_world_get": (status, (WorldP, c_int32, dptr)),
+    "demill_world_step": (status, (WorldP, c_uint64)),
+    "demill_world_suggest_time_step": (status, (WorldP, c_double, c_double, dptr, dptr, dptr)),
+    # material.h
+    "demill_material_create": (status, (WorldP, idptr)),
+    "demill_material_set": (status, (WorldP, id_t, c_int32, c_double)),
+    "demill_material_get": (status, (WorldP, id_t, c_int32, dptr)),
+    "demill_pair_set": (status, (WorldP, id_t, id_t, c_int32, c_double)),
+    "demill_pair_get": (status, (WorldP, id_t, id_t, c_int32, dptr)),
+    # particles.h
+    "demill_particle_field_size": (c_int32, (c_int32,)),
+    "demill_particles_add": (status, (WorldP, id_t, c_size_t, dptr, dptr, dptr, c_uint32, idptr)),
+    "demill_particles_remove": (status, (WorldP, c_size_t, idptr)),
+    "demill_particles_read": (status, (WorldP, c_int32, dptr, c_size_t, sizeptr)),
+    "demill_particles_read_ids": (status, (WorldP, c_int32, idptr, c_size_t, sizeptr)),
+    "demill_particles_write": (status, (WorldP, c_int32, dptr, c_size_t)),
+    "demill_particle_get": (status, (WorldP, id_t, c_int32, dptr)),
+    "demill_particle_set": (status, (WorldP, id_t, c_int32, dptr)),
+    # wall.h
+    "demill_wall_add_plane": (status, (WorldP, id_t, dptr, dptr, idptr)),
+    "demill_wall_remove": (status, (WorldP, id_t)),
+    "demill_wall_set_motion": (status, (WorldP, id_t, dptr, dptr, dptr)),
+    "demill_wall_get": (status, (WorldP, id_t, c_int32, dptr)),
+    # query.h
+    "demill_contact_field_size": (c_int32, (c_int32,)),
+    "demill_contacts_read": (status, (WorldP, c_int32, dptr, c_size_t, sizeptr)),
+    "demill_contacts_read_ids": (status, (WorldP, idptr, idptr, c_size_t, sizeptr)),
+    "demill_world_energy": (status, (WorldP, c_int32, dptr)),
+    # drum.h
+    "demill_drum_create": (status, (WorldP, id_t, idptr)),
+    "demill_drum_remove": (status, (WorldP, id_t)),
+    "demill_drum_set": (status, (WorldP, id_t, c_int32, c_double)),
+    "demill_drum_get": (status, (WorldP, id_t, c_int32, dptr)),
+    "demill_drum_add_lifter": (status, (WorldP, id_t, c_double, c_double, c_double, c_double)),
+    "demill_drum_lifter_get": (status, (WorldP, id_t, c_uint32, c_int32, dptr)),
+    "demill_drum_fill": (status, (WorldP, id_t, id_t, c_int32, dptr, c_size_t, c_int32, c_double,
+                                  c_uint64, idptr, c_size_t, sizeptr)),
+    "demill_drum_spectrum_start": (status, (WorldP, id_t, c_size_t, dptr, c_uint32, c_double,
+                                            c_double)),
+    "demill_drum_spectrum": (status, (WorldP, id_t, POINTER(c_uint64), c_size_t, sizeptr)),
+    "demill_world_settle": (status, (WorldP, c_double, c_double, POINTER(c_int32))),
+}
+
+#: Functions of issue 6 (progress, VTK output, snapshots and checkpoints,
+#: object listing): bound when the library has them.
+OPTIONAL_PROTOTYPES = {
+    "demill_world_set_progress": (status, (WorldP, ProgressFn, c_void_p, c_uint64)),
+    "demill_vtk_write_particles": (status, (WorldP, c_char_p)),
+    "demill_vtk_write_walls": (status, (WorldP, c_char_p)),
+    "demill_vtk_series_open": (status, (WorldP, c_char_p, POINTER(VtkSeriesP))),
+    "demill_vtk_series_write": (status, (WorldP, VtkSeriesP)),
+    "demill_vtk_series_close": (None, (VtkSeriesP,)),
+    "demill_snapshot_take": (status, (WorldP, POINTER(SnapshotP))),
+    "demill_snapshot_restore": (status, (WorldP, SnapshotP)),
+    "demill_snapshot_free": (None, (SnapshotP,)),
+    "demill_world_save": (status, (WorldP, c_char_p)),
+    "demill_world_load": (status, (WorldP, c_char_p)),
+    "demill_world_save_buffer": (status, (WorldP, c_void_p, c_size_t, sizeptr)),
+    "demill_world_load_buffer": (status, (WorldP, c_void_p, c_size_t)),
+    "demill_world_ids": (status, (WorldP, c_int32, idptr, c_size_t, sizeptr)),
+}
+
+
+def library_candidates():
+    """The paths or names to try, in order (see the module's docstring)."""
+    env = os.environ.get("DEMILL_LIBRARY")
+    if env:
+        return [env]
+    root = Path(__file__).resolve().parent.parent.parent
+    built = sorted(root.glob("build*/libdemill.so"), key=lambda p: p.stat().st_mtime,
+                   reverse=True)
+    names = [str(p) for p in built]
+    found = ctypes.util.find_library("demill")
+    if found:
+        names.append(found)
+    names.append("libdemill.so.0")
+    return names
+
+
+def _load():
+    errors = []
+    for name in library_candidates():
+        try:
+            return ctypes.CDLL(name), name
+        except OSError as e:
+            errors.append(f"{name}: {e}")
+    raise ImportError("libdemill not found; build it (cmake --build build) or set "
+                      "DEMILL_LIBRARY to the path of libdemill.so. Tried:\n  "
+                      + "\n  ".join(errors))
+
+
+def _missing(name, path):
+    def call(*args):
+        raise Unsupported(Status.UNSUPPORTED,
+                          f"{name} is not in this libdemill ({path}); a newer one is needed")
+    call.__name__ = name
+    return call
+
+
+class Library:
+    """The loaded shared library with every prototype declared.
+
+    Attributes are the C functions (``lib.demill_world_step``); ``path`` is
+    the file that was loaded and :meth:`has` says whether an optional
+    function is present.
+    """
+
+    def __init__(self):
+        self.cdll, self.path = _load()
+        self._present = set()
+        for table, optional in ((PROTOTYPES, False), (OPTIONAL_PROTOTYPES, True)):
+            for name, (restype, argtypes) in table.items():
+                try:
+                    fn = getattr(self.cdll, name)
+                except AttributeError:
+                    if not optional:
+                        raise ImportError(f"{self.path} lacks {name}: not a libdemill of "
+                                          f"this series") from None
+                    setattr(self, name, _missing(name, self.path))
+                    continue
+                fn.restype = restype
+                fn.argtypes = argtypes
+                setattr(self, name, fn)
+                self._present.add(name)
+
+    def has(self, name):
+        """True if the library exports the function ``name``."""
+        return name in self._present
+
+
+lib = Library()

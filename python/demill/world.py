@@ -1,0 +1,357 @@
+"""The simulation world (``demill/world.h``) and everything reached from it."""
+
+import ctypes
+import os
+import weakref
+from typing import NamedTuple
+
+import numpy as np
+
+from ._core import (Keyed, Param, VectorParam, as_id, check, configure, ptr, read_counted,
+                    strerror, vector)
+from ._lib import ProgressFn, WorldP, lib
+from .constants import Energy, Integrator, Kind, Status, WorldKey
+from .drum import Drum
+from .errors import WorldClosed
+from .objects import Contacts, Material, Pair, Particle, Particles, Wall, count
+from .state import Snapshot, VtkSeries
+
+
+class TimeStep(NamedTuple):
+    """What :meth:`World.suggest_time_step` suggests, all in s."""
+
+    suggested: float
+    critical: float
+    contact_time: float
+
+
+class Progress(NamedTuple):
+    """What a progress callback (:meth:`World.on_progress`) is told."""
+
+    steps_done: int
+    steps_total: int
+    time: float
+    steps_per_second: float
+
+    @property
+    def fraction(self):
+        """The share of the run done, 0 to 1."""
+        return self.steps_done / self.steps_total if self.steps_total else 1.0
+
+    @property
+    def eta(self):
+        """Estimated wall time left, s (inf before the rate is known)."""
+        left = self.steps_total - self.steps_done
+        return left / self.steps_per_second if self.steps_per_second > 0 else float("inf")
+
+
+def _flag(value):
+    return bool(round(value))
+
+
+class World(Keyed):
+    """A simulation world of dimension 2 or 3 that owns its materials,
+    particles, walls and drum.
+
+    ``World(3, time_step=1e-5)`` creates one and sets parameters by name.
+    Use it as a context manager or call :meth:`close` to free it at once
+    (otherwise it is freed when garbage-collected); any use after
+    :meth:`close` raises :class:`~demill.WorldClosed`. Objects reached from
+    a world (materials, walls, the drum, snapshots) keep it alive.
+
+    Its properties are the ``DEMILL_WORLD_*`` keys; those from
+    ``dimension`` on are read-only measurements.
+    """
+
+    time_step = Param(WorldKey.TIME_STEP)
+    gravity_x = Param(WorldKey.GRAVITY_X)
+    gravity_y = Param(WorldKey.GRAVITY_Y)
+    gravity_z = Param(WorldKey.GRAVITY_Z)
+    gravity = VectorParam((WorldKey.GRAVITY_X, WorldKey.GRAVITY_Y, WorldKey.GRAVITY_Z),
+                          "Gravity, m/s^2, as an array of 3 (default (0, -9.81, 0)).")
+    integrator = Param(WorldKey.INTEGRATOR, lambda v: Integrator(int(v)))
+    skin = Param(WorldKey.SKIN)
+    disc_thickness = Param(WorldKey.DISC_THICKNESS)
+    energy_tracking = Param(WorldKey.ENERGY_TRACKING, _flag)
+    time = Param(WorldKey.TIME)
+    threads = Param(WorldKey.THREADS, int)
+    refine_tolerance = Param(WorldKey.REFINE_TOLERANCE)
+    refine_max_iterations = Param(WorldKey.REFINE_MAX_ITERATIONS, int)
+    watchdog = Param(WorldKey.WATCHDOG, _flag)
+    watchdog_overlap = Param(WorldKey.WATCHDOG_OVERLAP)
+    watchdog_interval = Param(WorldKey.WATCHDOG_INTERVAL, int)
+    dimension = Param(WorldKey.DIMENSION, int)
+    step_count = Param(WorldKey.STEP_COUNT, int)
+    particle_count = Param(WorldKey.PARTICLE_COUNT, int)
+    contact_count = Param(WorldKey.CONTACT_COUNT, int)
+    wall_contact_count = Param(WorldKey.WALL_CONTACT_COUNT, int)
+    neighbour_rebuilds = Param(WorldKey.NEIGHBOUR_REBUILDS, int)
+    refine_iterations = Param(WorldKey.REFINE_ITERATIONS, int)
+    force_evaluations = Param(WorldKey.FORCE_EVALUATIONS, int)
+    refine_unconverged = Param(WorldKey.REFINE_UNCONVERGED, int)
+
+    def __init__(self, dimension=3, **params):
+        p = WorldP()
+        code = lib.demill_world_create(int(dimension), ctypes.byref(p))
+        check(code, f"demill_world_create({dimension}): {strerror(code)}")
+        self._ptr = p
+        self._finalizer = weakref.finalize(self, lib.demill_world_destroy, p)
+        self._progress = None        # the C callback, kept alive while set
+        self._progress_error = None  # an exception raised by the Python callback
+        configure(self, params)
+
+    # ---- lifetime and calls ------------------------------------------------
+
+    @property
+    def closed(self):
+        """True once :meth:`close` has freed the world."""
+        return not self._finalizer.alive
+
+    def close(self):
+        """Frees the world and everything it owns (again is harmless)."""
+        self._finalizer()
+        self._progress = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __repr__(self):
+        if self.closed:
+            return "<demill.World closed>"
+        return (f"<demill.World {self.dimension}D, {self.particle_count} particles, "
+                f"t = {self.time:g} s>")
+
+    @property
+    def _handle(self):
+        if self.closed:
+            raise WorldClosed(Status.INVALID_HANDLE, "the world is closed")
+        return self._ptr
+
+    @property
+    def last_error(self):
+        """The message of the last error on this world ("" if none)."""
+        return lib.demill_world_last_error(self._handle).decode(errors="replace")
+
+    def _call(self, name, *args):
+        """Calls ``demill_<...>(world, *args)`` and raises its error."""
+        code = getattr(lib, name)(self._handle, *args)
+        if code != Status.OK:
+            check(code, self.last_error)
+
+    def _run(self, name, *args):
+        """As :meth:`_call`, for calls that may run the progress callback:
+        an exception the callback raised is raised again here."""
+        self._progress_error = None
+        try:
+            self._call(name, *args)
+        except Exception:
+            error, self._progress_error = self._progress_error, None
+            if error is not None:
+                raise error
+            raise
+
+    # ---- parameters ------------------------------------------------------
+
+    _getter, _setter = "demill_world_get", "demill_world_set"
+
+    @property
+    def world(self):
+        """The world itself (as for the objects of a world)."""
+        return self
+
+    def _ids(self):
+        return ()
+
+    # ---- stepping --------------------------------------------------------
+
+    def step(self, steps=1):
+        """Advances the world by ``steps`` time steps (0 only evaluates the
+        forces). Raises :class:`~demill.Unstable` if the watchdog finds the
+        run unstable (the world is then at its last good state)."""
+        self._run("demill_world_step", count(steps, "steps"))
+
+    def settle(self, max_time, energy_per_particle):
+        """Steps until the kinetic energy per particle is below
+        ``energy_per_particle`` J or ``max_time`` s have passed; True if
+        the charge settled."""
+        settled = ctypes.c_int32()
+        self._run("demill_world_settle", float(max_time), float(energy_per_particle),
+                  ctypes.byref(settled))
+        return bool(settled.value)
+
+    def suggest_time_step(self, impact_speed=0.0, steps_per_contact=0.0):
+        """A time step for the scene (:class:`TimeStep`: suggested, stability
+        limit, shortest contact). 0 lets the library estimate the impact
+        speed and takes 50 steps per contact."""
+        out = [ctypes.c_double() for _ in range(3)]
+        self._call("demill_world_suggest_time_step", float(impact_speed),
+                   float(steps_per_contact), *(ctypes.byref(v) for v in out))
+        return TimeStep(*(v.value for v in out))
+
+    def on_progress(self, fn, every=1000):
+        """Calls ``fn(progress)`` every ``every`` steps of :meth:`step` and
+        :meth:`settle` with a :class:`Progress`; ``None`` removes it.
+
+        A true return value stops the run (:class:`~demill.Interrupted`);
+        an exception raised by ``fn`` stops it too and is raised again from
+        the call that was running.
+        """
+        if fn is None:
+            self._call("demill_world_set_progress", ProgressFn(), None, 0)
+            self._progress = None
+            return
+        ref = weakref.ref(self)
+
+        def trampoline(user_data, done, total, time, rate):
+            try:
+                return 1 if fn(Progress(done, total, time, rate)) else 0
+            except BaseException as e:  # noqa: B036 - stop the run, re-raise later
+                world = ref()
+                if world is not None:
+                    world._progress_error = e
+                return 1
+
+        c_fn = ProgressFn(trampoline)
+        self._call("demill_world_set_progress", c_fn, None, count(every, "every"))
+        self._progress = c_fn
+
+    # ---- objects ---------------------------------------------------------
+
+    def material(self, **params):
+        """Creates a material with parameters by name, e.g.
+        ``world.material(density=7800, youngs_modulus=2e11)``."""
+        m = ctypes.c_uint64()
+        self._call("demill_material_create", ctypes.byref(m))
+        return configure(Material(self, m.value), params)
+
+    def pair(self, a, b, **params):
+        """The contact model of materials ``a`` and ``b`` (a :class:`Pair`),
+        with parameters set by name, e.g.
+        ``world.pair(steel, steel, normal=Normal.HERTZ)``."""
+        return configure(Pair(self, a, b), params)
+
+    set_pair = pair
+
+    @property
+    def particles(self):
+        """All particles, read and written as NumPy arrays (:class:`Particles`)."""
+        return Particles(self)
+
+    @property
+    def contacts(self):
+        """The contacts at the current state (:class:`Contacts`)."""
+        return Contacts(self)
+
+    def particle(self, id_):
+        """The particle of an id (a :class:`Particle`)."""
+        return Particle(self, id_)
+
+    def add_plane(self, material, point, normal):
+        """Adds a plane wall through ``point`` facing ``normal``; a
+        :class:`Wall`."""
+        out = ctypes.c_uint64()
+        self._call("demill_wall_add_plane", as_id(material),
+                   ptr(vector(point, "point")), ptr(vector(normal, "normal")),
+                   ctypes.byref(out))
+        return Wall(self, out.value)
+
+    def add_drum(self, material, **params):
+        """Creates the world's drum of the given wall material with
+        parameters by name, e.g. ``world.add_drum(steel, diameter=0.3)``."""
+        out = ctypes.c_uint64()
+        self._call("demill_drum_create", as_id(material),
+                   ctypes.byref(out))
+        return configure(Drum(self, out.value), params)
+
+    def ids(self, kind):
+        """The ids of every live object of a :class:`~demill.Kind`."""
+        def call(buf, capacity, n):
+            self._call("demill_world_ids", int(kind), buf, capacity, n)
+        return read_counted(call, 1, np.uint64)
+
+    @property
+    def materials(self):
+        """Every material, as a list of :class:`Material`."""
+        return [Material(self, i) for i in self.ids(Kind.MATERIAL)]
+
+    @property
+    def walls(self):
+        """Every plane wall, as a list of :class:`Wall`."""
+        return [Wall(self, i) for i in self.ids(Kind.WALL)]
+
+    @property
+    def drum(self):
+        """The world's :class:`Drum`, or None."""
+        ids = self.ids(Kind.DRUM)
+        return Drum(self, ids[0]) if ids.size else None
+
+    # ---- queries ---------------------------------------------------------
+
+    def energy(self, term):
+        """One energy term (:class:`~demill.Energy`), J."""
+        v = ctypes.c_double()
+        self._call("demill_world_energy", int(term), ctypes.byref(v))
+        return v.value
+
+    def energies(self):
+        """Every energy term: a dict from :class:`~demill.Energy` to J."""
+        return {term: self.energy(term) for term in Energy}
+
+    # ---- state and files ---------------------------------------------------
+
+    def snapshot(self):
+        """An in-memory copy of the whole state (a :class:`Snapshot`)."""
+        return Snapshot.take(self)
+
+    def save(self, path):
+        """Saves the whole world to a checkpoint file."""
+        self._call("demill_world_save", os.fsencode(path))
+
+    def load_state(self, path):
+        """Replaces this world's state with a checkpoint file's."""
+        self._call("demill_world_load", os.fsencode(path))
+
+    @classmethod
+    def load(cls, path):
+        """A new world loaded from a checkpoint file."""
+        world = cls()
+        world.load_state(path)
+        return world
+
+    def to_bytes(self):
+        """The whole world as a checkpoint in memory (bytes)."""
+        size = ctypes.c_size_t()
+        self._call("demill_world_save_buffer", None, 0, ctypes.byref(size))
+        buf = ctypes.create_string_buffer(size.value)
+        self._call("demill_world_save_buffer", buf, size.value, ctypes.byref(size))
+        return buf.raw[:size.value]
+
+    def load_bytes(self, data):
+        """Replaces this world's state with a checkpoint from :meth:`to_bytes`."""
+        data = bytes(data)
+        self._call("demill_world_load_buffer", data, len(data))
+
+    @classmethod
+    def from_bytes(cls, data):
+        """A new world from a checkpoint made by :meth:`to_bytes`."""
+        world = cls()
+        world.load_bytes(data)
+        return world
+
+    def __reduce__(self):
+        return (World.from_bytes, (self.to_bytes(),))
+
+    def write_vtk_particles(self, path):
+        """Writes the particles to a VTK XML unstructured grid (.vtu)."""
+        self._call("demill_vtk_write_particles", os.fsencode(path))
+
+    def write_vtk_walls(self, path):
+        """Writes the walls and the drum to a VTK XML polydata file (.vtp)."""
+        self._call("demill_vtk_write_walls", os.fsencode(path))
+
+    def vtk_series(self, prefix):
+        """Opens a VTK time series (a :class:`VtkSeries`, a context manager)."""
+        return VtkSeries.open(self, prefix)

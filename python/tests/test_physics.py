@@ -1,0 +1,205 @@
+"""Physics through the binding, against numbers derived here: free fall,
+binary collisions of known restitution, Hooke's law in a contact, the
+energy account, masses and exact wall motion."""
+
+import math
+import unittest
+
+import numpy as np
+from helpers import linear_contact_time, linear_world, sphere_mass
+
+import demill
+from demill import Damping, Energy, Integrator, Normal
+
+
+class FreeFall(unittest.TestCase):
+    def test_verlet_is_exact_for_constant_acceleration(self):
+        """x(t) = x0 + v0 t + g t²/2 and v(t) = v0 + g t, to round-off."""
+        g = np.array([0.3, -9.81, 0.7])
+        x0, v0 = np.array([0.1, 2.0, -0.3]), np.array([1.0, 3.0, -0.5])
+        dt, n = 1e-4, 2000
+        with demill.World(3, gravity=g, time_step=dt) as w:
+            self.assertEqual(w.integrator, Integrator.VELOCITY_VERLET)
+            m = w.material()
+            w.pair(m, m, normal=Normal.LINEAR)
+            (pid,) = w.particles.add(m, x0, 0.01, velocities=v0)
+            w.step(n)
+            t = n * dt
+            self.assertAlmostEqual(w.time, t, delta=1e-15 * n)
+            self.assertEqual(w.step_count, n)
+            p = w.particle(pid)
+            np.testing.assert_allclose(p.position, x0 + v0 * t + 0.5 * g * t * t, rtol=0,
+                                       atol=1e-12)
+            np.testing.assert_allclose(p.velocity, v0 + g * t, rtol=0, atol=1e-12)
+            # the force is the weight
+            np.testing.assert_allclose(p.force, p.mass * g, rtol=1e-14)
+
+    def test_symplectic_euler_lags_by_half_a_step(self):
+        """Symplectic Euler: x_n = x0 + g dt² n(n+1)/2 from rest."""
+        dt, n, g = 1e-3, 100, -9.81
+        with demill.World(2, time_step=dt, integrator=Integrator.SYMPLECTIC_EULER) as w:
+            m = w.material()
+            w.pair(m, m, normal=Normal.LINEAR)
+            (pid,) = w.particles.add(m, (0, 0, 0), 0.01)
+            w.step(n)
+            y = w.particle(pid).position[1]
+            self.assertAlmostEqual(y, g * dt * dt * n * (n + 1) / 2, delta=1e-13)
+
+
+class Collisions(unittest.TestCase):
+    def collide(self, w, m, r, v, dt, steps):
+        """Two spheres meeting head-on at relative speed v: the rebound's
+        relative speed divided by v."""
+        gap = 1e-5
+        pos = [(-r - gap / 2, 0, 0), (r + gap / 2, 0, 0)]
+        w.time_step = dt
+        ids = w.particles.add(m, pos, r, velocities=[(v / 2, 0, 0), (-v / 2, 0, 0)])
+        w.step(steps)
+        vel = w.particles.velocities
+        self.assertEqual(w.contact_count, 0, "still in contact")
+        w.particles.remove(ids)
+        return (vel[1, 0] - vel[0, 0]) / v
+
+    def test_linear_restitution(self):
+        r, rho, k = 0.005, 2500.0, 5e4  # two default materials of 1e5 N/m in series
+        mstar = sphere_mass(r, rho) / 2
+        for e in (0.2, 0.5, 0.9):
+            with self.subTest(e=e):
+                w, m = linear_world(3, e)
+                self.assertAlmostEqual(w.pair(m, m).normal_stiffness, k)
+                tc = linear_contact_time(k, mstar, e)
+                ratio = self.collide(w, m, r, 1.0, tc / 50, 120)
+                self.assertAlmostEqual(ratio, e, delta=0.01 * e)
+                w.close()
+
+    def test_hertz_restitution(self):
+        """Hertz with Tsuji damping rebounds with e; the step from the
+        Hertz duration 2.94 δmax/v, δmax = (15 m* v² / (16 E* √R*))^(2/5)."""
+        r, rho, E, nu, v = 0.005, 7800.0, 1e8, 0.3, 1.0
+        mstar, rstar = sphere_mass(r, rho) / 2, r / 2
+        estar = E / (2 * (1 - nu * nu))
+        dmax = (15 * mstar * v * v / (16 * estar * math.sqrt(rstar))) ** 0.4
+        tc = 2.94324 * dmax / v
+        for e in (0.3, 0.8):
+            with self.subTest(e=e), demill.World(3, gravity=(0, 0, 0)) as w:
+                m = w.material(density=rho, youngs_modulus=E, poisson_ratio=nu, restitution=e)
+                w.pair(m, m, normal=Normal.HERTZ, damping=Damping.RESTITUTION)
+                self.assertAlmostEqual(w.pair(m, m).restitution, e)
+                ratio = self.collide(w, m, r, v, tc / 50, 150)
+                self.assertAlmostEqual(ratio, e, delta=0.01 * e)
+
+
+class Contacts(unittest.TestCase):
+    def test_hookes_law_in_a_resting_contact(self):
+        """Two overlapping particles at rest: one contact, overlap 2r - d,
+        normal force k δ along the line of centres, equal and opposite."""
+        r, d, k = 0.01, 0.0195, 2e4
+        w, m = linear_world(3, gravity=(0, 0, 0))
+        w.pair(m, m, damping=Damping.NONE, normal_stiffness=k)
+        a, b = w.particles.add(m, [(0, 0, 0), (0, d, 0)], r)
+        w.step(0)
+        c = w.contacts
+        self.assertEqual(len(c), 1)
+        ida, idb = c.ids()
+        self.assertEqual({int(ida[0]), int(idb[0])}, {int(a), int(b)})
+        self.assertAlmostEqual(c.overlaps[0], 2 * r - d, delta=1e-15)
+        sign = 1.0 if ida[0] == a else -1.0   # the normal points from a to b
+        np.testing.assert_allclose(c.normals[0], [0, sign, 0], atol=1e-15)
+        np.testing.assert_allclose(c.normal_forces[0], [0, -sign * k * (2 * r - d), 0],
+                                   rtol=1e-12, atol=1e-15)
+        np.testing.assert_allclose(c.points[0], [0, d / 2, 0], atol=1e-15)
+        np.testing.assert_allclose(c.tangential_forces[0], 0, atol=0)
+        f = w.particles.forces
+        np.testing.assert_allclose(f[0], -f[1], atol=1e-15)
+        self.assertAlmostEqual(np.linalg.norm(f[0]), k * (2 * r - d), delta=1e-12)
+        self.assertAlmostEqual(w.energy(Energy.ELASTIC_NORMAL), 0.5 * k * (2 * r - d) ** 2,
+                               delta=1e-15)
+        w.close()
+
+
+class EnergyAndMass(unittest.TestCase):
+    def test_masses(self):
+        with demill.World(3) as w:
+            m = w.material(density=7800)
+            ids = w.particles.add(m, [(0, 0, 0), (1, 0, 0)], [0.01, 0.02])
+            np.testing.assert_allclose(w.particles.masses,
+                                       [sphere_mass(0.01, 7800), sphere_mass(0.02, 7800)],
+                                       rtol=1e-14)
+            w.particle(ids[0]).radius = 0.02   # the mass follows
+            self.assertAlmostEqual(w.particle(ids[0]).mass, sphere_mass(0.02, 7800), delta=1e-12)
+            m.density = 1000                   # so do the particles of a material
+            self.assertAlmostEqual(w.particle(ids[1]).mass, sphere_mass(0.02, 1000), delta=1e-12)
+        with demill.World(2, disc_thickness=0.003) as w:
+            m = w.material(density=2000)
+            w.particles.add(m, (0, 0, 0), 0.01)
+            self.assertAlmostEqual(w.particles.masses[0], math.pi * 1e-4 * 0.003 * 2000,
+                                   delta=1e-15)
+
+    def test_bouncing_ball_keeps_its_energy_balance(self):
+        """A ball dropped on a floor: the balance starts at m g h, stays
+        there while contacts dissipate, and kinetic energy is ½ m v²."""
+        r, h, rho = 0.01, 0.05, 7800.0
+        with demill.World(3, time_step=2e-6) as w:
+            steel = w.material(density=rho, youngs_modulus=1e8, restitution=0.7)
+            w.pair(steel, steel, normal=Normal.HERTZ, damping=Damping.RESTITUTION)
+            w.add_plane(steel, (0, 0, 0), (0, 1, 0))
+            (pid,) = w.particles.add(steel, (0, h, 0), r)
+            mass = sphere_mass(r, rho)
+            e0 = w.energy(Energy.TOTAL)
+            self.assertAlmostEqual(e0, mass * 9.81 * h, delta=1e-12)
+            w.step(100000)  # 0.2 s: about three bounces
+            e = w.energies()
+            self.assertGreater(e[Energy.DISSIPATED], 0.3 * e0)
+            self.assertAlmostEqual(e[Energy.TOTAL], e0, delta=1e-3 * e0)
+            v = w.particle(pid).velocity
+            self.assertAlmostEqual(e[Energy.KINETIC_TRANSLATIONAL], 0.5 * mass * v @ v,
+                                   delta=1e-15)
+            parts = (Energy.KINETIC_TRANSLATIONAL, Energy.KINETIC_ROTATIONAL, Energy.POTENTIAL,
+                     Energy.ELASTIC_NORMAL, Energy.ELASTIC_TANGENTIAL, Energy.DISSIPATED)
+            self.assertAlmostEqual(sum(e[k] for k in parts) - e[Energy.WALL_WORK],
+                                   e[Energy.TOTAL], delta=1e-12)
+
+
+class Walls(unittest.TestCase):
+    def test_motion_is_exact(self):
+        """A wall moving at v and turning at ω: its centre is at c + v t,
+        its normal turned by ω t."""
+        dt, n = 1e-4, 1000
+        v, omega = np.array([0.1, 0.0, 0.0]), 2.0
+        with demill.World(3, time_step=dt) as w:
+            m = w.material()
+            wall = w.add_plane(m, (0, 0, 0), (0, 2, 0))
+            np.testing.assert_array_equal(wall.normal, [0, 1, 0])
+            wall.set_motion(velocity=v, angular_velocity=(0, 0, omega), centre=(0, 0, 0))
+            w.step(n)
+            t = n * dt
+            np.testing.assert_allclose(wall.centre, v * t, atol=1e-15)
+            np.testing.assert_allclose(wall.velocity, v)
+            np.testing.assert_allclose(wall.angular_velocity, [0, 0, omega])
+            np.testing.assert_allclose(wall.normal, [-math.sin(omega * t), math.cos(omega * t), 0],
+                                       atol=1e-12)
+            self.assertEqual(w.walls if demill._lib.lib.has("demill_world_ids") else [wall],
+                             [wall])
+            wall.remove()
+            with self.assertRaises(demill.InvalidHandle):
+                wall.point
+
+
+class TimeStepGuide(unittest.TestCase):
+    def test_linear_suggestion(self):
+        """For a linear pair: contact time π/ω (undamped: e = 1 is not
+        allowed, so via the damped formula), stability limit 2/ω."""
+        r, k = 0.005, 5e4
+        w, m = linear_world(3, 1.0)
+        w.particles.add(m, [(0, 0, 0), (1, 0, 0)], r)
+        mstar = sphere_mass(r, 2500) / 2
+        ts = w.suggest_time_step(1.0, 50)
+        self.assertAlmostEqual(ts.critical, 2 / math.sqrt(k / mstar), delta=1e-9 * ts.critical)
+        self.assertAlmostEqual(ts.contact_time, math.pi / math.sqrt(k / mstar),
+                               delta=1e-9 * ts.contact_time)
+        self.assertAlmostEqual(ts.suggested, ts.contact_time / 50, delta=1e-9 * ts.suggested)
+        w.close()
+
+
+if __name__ == "__main__":
+    unittest.main()
