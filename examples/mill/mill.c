@@ -9,7 +9,7 @@
  * summary, VTK files for ParaView and two pictures to the output folder;
  * progress goes to stderr. Run `mill --help` for the options.
  */
-#define _POSIX_C_SOURCE 200809L /* mkdir, clock_gettime, strdup */
+#define _POSIX_C_SOURCE 200809L /* mkdir, clock_gettime, isatty */
 
 #include <errno.h>
 #include <math.h>
@@ -217,40 +217,46 @@ static void drum_shape_of(demill_world *w, demill_id drum, const options *o, dru
               "demill_drum_lifter_get");
 }
 
-/* The VTK frames written so far, for the .pvd series. */
-typedef struct frames {
-    size_t n, cap;
-    char **particles, **drum;
-    double *time;
-} frames;
+/* The progress bar, drawn by the library's progress callback after each
+ * call of demill_world_step(): on a terminal a line that updates itself
+ * 4 times a second, otherwise a line every 10 s. */
+typedef struct progress {
+    demill_world *w;
+    demill_id drum;
+    uint64_t done, total; /* steps of the whole run: before this call, all */
+    size_t particles;
+    double rate;          /* steps per second, smoothed */
+    double last, every;   /* wall time of the last line, s; and between lines */
+    int tty, turning;
+} progress;
 
-static void frame_write(frames *fr, const char *dir, demill_world *w, demill_id drum,
-                        const options *o, double t)
+static int32_t show_progress(void *user, uint64_t steps_done, uint64_t steps_total, double time,
+                             double steps_per_second)
 {
-    if (fr->n == fr->cap) {
-        fr->cap = fr->cap ? 2 * fr->cap : 64;
-        fr->particles = realloc(fr->particles, fr->cap * sizeof *fr->particles);
-        fr->drum = realloc(fr->drum, fr->cap * sizeof *fr->drum);
-        fr->time = realloc(fr->time, fr->cap * sizeof *fr->time);
-        if (!fr->particles || !fr->drum || !fr->time) {
-            fprintf(stderr, "mill: out of memory\n");
-            exit(EXIT_FAILURE);
-        }
-    }
-    char name[64], path[4096];
-    drum_shape shape;
-    drum_shape_of(w, drum, o, &shape);
-    snprintf(name, sizeof name, "particles_%04zu.vtu", fr->n);
-    fr->particles[fr->n] = strdup(name);
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (write_vtu(path, w))
-        exit(EXIT_FAILURE);
-    snprintf(name, sizeof name, "drum_%04zu.vtp", fr->n);
-    fr->drum[fr->n] = strdup(name);
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (write_drum_vtp(path, &shape))
-        exit(EXIT_FAILURE);
-    fr->time[fr->n++] = t;
+    progress *p = user;
+    (void)steps_total;
+    p->rate = p->rate > 0 ? 0.9 * p->rate + 0.1 * steps_per_second : steps_per_second;
+    const double t_wall = now();
+    if (t_wall - p->last < p->every)
+        return 0;
+    p->last = t_wall;
+    const uint64_t done = p->done + steps_done, left = done < p->total ? p->total - done : 0;
+    const double frac = (double)(p->total - left) / p->total;
+    const double eta = p->rate > 0 ? left / p->rate : 0;
+    char bar[31];
+    const int filled = (int)(frac * 30);
+    for (int k = 0; k < 30; k++)
+        bar[k] = k < filled ? '#' : '.';
+    bar[30] = '\0';
+    double angle = 0.0;
+    if (p->turning)
+        demill_drum_get(p->w, p->drum, DEMILL_DRUM_ANGLE, &angle);
+    fprintf(stderr, "%smill: [%s] %3.0f %%  t = %.3f s  revolution %.2f  %.2f M particle-steps/s"
+                    "  ETA %2d:%02d%s",
+            p->tty ? "\r" : "", bar, 100 * frac, time, angle / (2 * PI),
+            p->rate * p->particles / 1e6, (int)(eta / 60), (int)fmod(eta, 60),
+            p->tty ? "  " : "\n");
+    return 0;
 }
 
 int main(int argc, char **argv)
@@ -340,23 +346,29 @@ int main(int argc, char **argv)
                  "shoulder_deg,com_deg,revolutions\n");
     size_t nrows = 0, caprows = 1024;
     double *row_t = malloc(caprows * sizeof *row_t), *row_p = malloc(caprows * sizeof *row_p);
-    frames fr = {0};
+    demill_vtk_series *series = NULL;
+    if (vtk_steps) {
+        snprintf(path, sizeof path, "%s/mill", o.out);
+        check(demill_vtk_series_open(w, path, &series), "demill_vtk_series_open");
+    }
 
-    uint64_t steps = 0;
-    double t = 0, last_report = now(), contacts_sum = 0, t_rev_start = NAN, t_rev_end = NAN;
+    uint64_t steps = 0, frame_step = UINT64_MAX;
+    double t = 0, contacts_sum = 0, t_rev_start = NAN, t_rev_end = NAN;
     int contact_samples = 0, turning = 0;
     const double t_step0 = now();
-    /* progress: a self-updating line on a terminal, a line every 10 s otherwise */
     const int tty = isatty(fileno(stderr));
-    const double report_every = tty ? 0.5 : 10.0;
+    progress bar = {.w = w, .drum = drum, .total = total_steps, .particles = n,
+                    .last = t_step0, .every = tty ? 0.25 : 10.0, .tty = tty};
+    check(demill_world_set_progress(w, show_progress, &bar, sample), "demill_world_set_progress");
     while (period > 0 ? drum_value(w, drum, DEMILL_DRUM_REVOLUTIONS) < o.revolutions
                       : t < total_time) {
         if (!turning && t >= settle - 0.5 * o.dt) {
             check(demill_drum_set(w, drum, DEMILL_DRUM_SPEED_FRACTION, o.speed / 100), "speed");
-            turning = 1;
+            turning = bar.turning = 1;
         }
         check(demill_world_step(w, sample), "step");
         steps += sample;
+        bar.done = steps;
         check(demill_world_get(w, DEMILL_WORLD_TIME, &t), "time");
         /* the measurement revolution is the last one */
         const uint64_t rev = (uint64_t)drum_value(w, drum, DEMILL_DRUM_REVOLUTIONS);
@@ -392,26 +404,25 @@ int main(int argc, char **argv)
         }
         row_t[nrows] = t;
         row_p[nrows++] = power;
-        if (vtk_steps && steps % vtk_steps < sample)
-            frame_write(&fr, o.out, w, drum, &o, t);
-        if (now() - last_report > report_every) {
-            last_report = now();
-            const double rate = steps * (double)n / (last_report - t_step0);
-            const double eta = (total_steps > steps ? total_steps - steps : 0) * (double)n / rate;
-            fprintf(stderr, "%smill: step %llu/%llu  t = %.3f s  revolution %.2f  %.2f M particle-steps/s  ETA %.0f s%s",
-                    tty ? "\r" : "", (unsigned long long)steps, (unsigned long long)total_steps,
-                    t, turning ? drum_value(w, drum, DEMILL_DRUM_ANGLE) / (2 * PI) : 0.0,
-                    rate / 1e6, eta, tty ? "   " : "\n");
+        if (vtk_steps && steps % vtk_steps < sample) {
+            check(demill_vtk_series_write(w, series), "demill_vtk_series_write");
+            frame_step = steps;
         }
     }
     const double t_step1 = now();
+    check(demill_world_set_progress(w, NULL, NULL, 0), "demill_world_set_progress");
+    bar.total = steps; /* the last line: 100 % */
+    bar.last = -INFINITY;
+    show_progress(&bar, 0, 0, t, bar.rate);
     if (tty)
-        fprintf(stderr, "\n");
+        fputc('\n', stderr);
     if (fclose(csv)) {
         fprintf(stderr, "mill: error writing mill.csv\n");
         return EXIT_FAILURE;
     }
-    frame_write(&fr, o.out, w, drum, &o, t);
+    if (series && frame_step != steps) /* the final state */
+        check(demill_vtk_series_write(w, series), "demill_vtk_series_write");
+    demill_vtk_series_close(series);
 
     /* pictures, series, summary */
     drum_shape shape;
@@ -435,14 +446,6 @@ int main(int argc, char **argv)
     if (draw_power(path, row_t, smooth, nrows, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
                    isnan(t_rev_end) ? t : t_rev_end))
         return EXIT_FAILURE;
-    if (fr.n) {
-        snprintf(path, sizeof path, "%s/particles.pvd", o.out);
-        if (write_pvd(path, (const char *const *)fr.particles, fr.time, fr.n))
-            return EXIT_FAILURE;
-        snprintf(path, sizeof path, "%s/drum.pvd", o.out);
-        if (write_pvd(path, (const char *const *)fr.drum, fr.time, fr.n))
-            return EXIT_FAILURE;
-    }
     snprintf(path, sizeof path, "%s/summary.txt", o.out);
     FILE *sum = fopen(path, "w");
     if (!sum) {
@@ -475,13 +478,6 @@ int main(int argc, char **argv)
            wall, mean_power, drum_value(w, drum, DEMILL_DRUM_POWER_CM_MEAN),
            drum_value(w, drum, DEMILL_DRUM_TOE_ANGLE_MEAN) * 180 / PI,
            drum_value(w, drum, DEMILL_DRUM_SHOULDER_ANGLE_MEAN) * 180 / PI, o.out);
-    for (size_t k = 0; k < fr.n; k++) {
-        free(fr.particles[k]);
-        free(fr.drum[k]);
-    }
-    free(fr.particles);
-    free(fr.drum);
-    free(fr.time);
     free(row_t);
     free(row_p);
     free(smooth);

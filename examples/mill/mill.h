@@ -1,5 +1,5 @@
 /* mill.h: the parts of the mill example (mill.c: options and run; scene.c:
- * the canonical drums; output.c: files and pictures). */
+ * the canonical drums; output.c: pictures). */
 #ifndef MILL_H
 #define MILL_H
 
@@ -44,10 +44,7 @@ typedef struct drum_shape {
     double lifter_angle[64], lifter_height, lifter_width;
 } drum_shape;
 
-/* Outputs; each returns 0 or -1 (with a message on stderr). */
-int write_vtu(const char *path, demill_world *w);
-int write_drum_vtp(const char *path, const drum_shape *d);
-int write_pvd(const char *path, const char *const *files, const double *times, size_t n);
+/* Pictures; each returns 0 or -1 (with a message on stderr). */
 int draw_charge(const char *path, demill_world *w, const drum_shape *d, const char *title);
 int draw_power(const char *path, const double *t, const double *p, size_t n, double mean,
                double mean_from, double mean_to);

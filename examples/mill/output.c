@@ -1,8 +1,6 @@
-/* output.c: what the mill example writes besides its CSV and summary:
- * VTK XML files for ParaView (particles as points with their radius,
- * velocity, speed and material; the drum as surfaces; a .pvd series) and two
- * pictures drawn with cairo (the charge in cross-section coloured by speed,
- * and the power draw against time). */
+/* output.c: the pictures the mill example draws with cairo (the charge in
+ * cross-section coloured by speed, and the power draw against time); its VTK
+ * files come from the library (demill/vtk.h). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,25 +11,8 @@
 
 #define PI 3.14159265358979323846
 
-static FILE *open_out(const char *path)
-{
-    FILE *f = fopen(path, "w");
-    if (!f)
-        perror(path);
-    return f;
-}
-
-static int close_out(FILE *f, const char *path)
-{
-    if (ferror(f) | fclose(f)) {
-        fprintf(stderr, "mill: error writing %s\n", path);
-        return -1;
-    }
-    return 0;
-}
-
-/* Reads a particle field of every particle (3 or 1 doubles each); the
- * caller frees it. */
+/* Reads a field of every particle (3 or 1 doubles each); the caller frees
+ * it. */
 static double *read_field(demill_world *w, int field, size_t *n)
 {
     demill_particles_read(w, field, NULL, 0, n);
@@ -41,79 +22,6 @@ static double *read_field(demill_world *w, int field, size_t *n)
         out = NULL;
     }
     return out;
-}
-
-int write_vtu(const char *path, demill_world *w)
-{
-    size_t n;
-    double *x = read_field(w, DEMILL_PARTICLE_POSITION, &n);
-    double *v = read_field(w, DEMILL_PARTICLE_VELOCITY, &n);
-    double *om = read_field(w, DEMILL_PARTICLE_ANGULAR_VELOCITY, &n);
-    double *r = read_field(w, DEMILL_PARTICLE_RADIUS, &n);
-    demill_id *mat = malloc((n ? n : 1) * sizeof *mat);
-    FILE *f = open_out(path);
-    int ok = x && v && om && r && mat && f &&
-             demill_particles_read_ids(w, DEMILL_PARTICLE_MATERIAL, mat, n, &n) == DEMILL_OK;
-    if (ok) {
-        fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
-                   "byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
-                   "<Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n<Points>\n"
-                   "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
-                n, n);
-        for (size_t k = 0; k < n; k++)
-            fprintf(f, "%.9g %.9g %.9g\n", x[3 * k], x[3 * k + 1], x[3 * k + 2]);
-        fprintf(f, "</DataArray>\n</Points>\n<Cells>\n"
-                   "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-        for (size_t k = 0; k < n; k++)
-            fprintf(f, "%zu\n", k);
-        fprintf(f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-        for (size_t k = 0; k < n; k++)
-            fprintf(f, "%zu\n", k + 1);
-        fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-        for (size_t k = 0; k < n; k++)
-            fputs("1\n", f); /* VTK_VERTEX */
-        fprintf(f, "</DataArray>\n</Cells>\n<PointData Scalars=\"radius\" Vectors=\"velocity\">\n"
-                   "<DataArray type=\"Float64\" Name=\"radius\" format=\"ascii\">\n");
-        for (size_t k = 0; k < n; k++)
-            fprintf(f, "%.9g\n", r[k]);
-        fprintf(f, "</DataArray>\n<DataArray type=\"Float64\" Name=\"velocity\" "
-                   "NumberOfComponents=\"3\" format=\"ascii\">\n");
-        for (size_t k = 0; k < n; k++)
-            fprintf(f, "%.6g %.6g %.6g\n", v[3 * k], v[3 * k + 1], v[3 * k + 2]);
-        fprintf(f, "</DataArray>\n<DataArray type=\"Float64\" Name=\"angular_velocity\" "
-                   "NumberOfComponents=\"3\" format=\"ascii\">\n");
-        for (size_t k = 0; k < n; k++)
-            fprintf(f, "%.6g %.6g %.6g\n", om[3 * k], om[3 * k + 1], om[3 * k + 2]);
-        fprintf(f, "</DataArray>\n<DataArray type=\"Float64\" Name=\"speed\" format=\"ascii\">\n");
-        for (size_t k = 0; k < n; k++)
-            fprintf(f, "%.6g\n", hypot(hypot(v[3 * k], v[3 * k + 1]), v[3 * k + 2]));
-        /* materials numbered by order of first appearance */
-        fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">\n");
-        demill_id seen[16];
-        int nseen = 0;
-        for (size_t k = 0; k < n; k++) {
-            int idx = 0;
-            while (idx < nseen && seen[idx] != mat[k])
-                idx++;
-            if (idx == nseen && nseen < 16)
-                seen[nseen++] = mat[k];
-            fprintf(f, "%d\n", idx);
-        }
-        fprintf(f, "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-    }
-    free(x);
-    free(v);
-    free(om);
-    free(r);
-    free(mat);
-    if (!f)
-        return -1;
-    if (!ok) {
-        fclose(f);
-        fprintf(stderr, "mill: cannot read the particles: %s\n", demill_world_last_error(w));
-        return -1;
-    }
-    return close_out(f, path);
 }
 
 /* The visible cross-section of lifter k in the world frame (4 corners):
@@ -128,82 +36,6 @@ static void lifter_corners(const drum_shape *d, int k, double xy[8])
         xy[2 * c] = rt[c][0] * ux + rt[c][1] * tx;
         xy[2 * c + 1] = rt[c][0] * uy + rt[c][1] * ty;
     }
-}
-
-int write_drum_vtp(const char *path, const drum_shape *d)
-{
-    FILE *f = open_out(path);
-    if (!f)
-        return -1;
-    /* shell as 120 quads (3D) or a closed line (2D); lifters as 4 quads each
-     * (3D) or polygons (2D) */
-    const int seg = 120, zc = d->dim == 3 ? 2 : 1;
-    const double z[2] = {-0.5 * d->length, 0.5 * d->length};
-    const size_t npts = (size_t)seg * zc + (size_t)d->nlifters * 4 * zc;
-    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
-               "byte_order=\"LittleEndian\">\n<PolyData>\n"
-               "<Piece NumberOfPoints=\"%zu\" NumberOfPolys=\"%zu\" NumberOfLines=\"%d\">\n"
-               "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
-            npts, d->dim == 3 ? (size_t)seg + 4 * (size_t)d->nlifters : (size_t)d->nlifters,
-            d->dim == 3 ? 0 : 1);
-    for (int s = 0; s < zc; s++)
-        for (int k = 0; k < seg; k++)
-            fprintf(f, "%.9g %.9g %.9g\n", d->radius * cos(2 * PI * k / seg),
-                    d->radius * sin(2 * PI * k / seg), d->dim == 3 ? z[s] : 0.0);
-    for (int l = 0; l < d->nlifters; l++) {
-        double xy[8];
-        lifter_corners(d, l, xy);
-        for (int s = 0; s < zc; s++)
-            for (int c = 0; c < 4; c++)
-                fprintf(f, "%.9g %.9g %.9g\n", xy[2 * c], xy[2 * c + 1], d->dim == 3 ? z[s] : 0.0);
-    }
-    fprintf(f, "</DataArray>\n</Points>\n");
-    const size_t lift0 = (size_t)seg * zc;
-    if (d->dim == 3) {
-        fprintf(f, "<Polys>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-        for (int k = 0; k < seg; k++)
-            fprintf(f, "%d %d %d %d\n", k, (k + 1) % seg, seg + (k + 1) % seg, seg + k);
-        for (int l = 0; l < d->nlifters; l++)
-            for (int c = 0; c < 4; c++) {
-                size_t b = lift0 + (size_t)l * 8;
-                fprintf(f, "%zu %zu %zu %zu\n", b + c, b + (c + 1) % 4, b + 4 + (c + 1) % 4,
-                        b + 4 + c);
-            }
-        fprintf(f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-        for (int k = 1; k <= seg + 4 * d->nlifters; k++)
-            fprintf(f, "%d\n", 4 * k);
-        fprintf(f, "</DataArray>\n</Polys>\n");
-    } else {
-        fprintf(f, "<Lines>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-        for (int k = 0; k <= seg; k++)
-            fprintf(f, "%d\n", k % seg);
-        fprintf(f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n"
-                   "%d\n</DataArray>\n</Lines>\n<Polys>\n"
-                   "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n",
-                seg + 1);
-        for (int l = 0; l < d->nlifters; l++)
-            fprintf(f, "%zu %zu %zu %zu\n", lift0 + 4 * (size_t)l, lift0 + 4 * (size_t)l + 1,
-                    lift0 + 4 * (size_t)l + 2, lift0 + 4 * (size_t)l + 3);
-        fprintf(f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-        for (int l = 1; l <= d->nlifters; l++)
-            fprintf(f, "%d\n", 4 * l);
-        fprintf(f, "</DataArray>\n</Polys>\n");
-    }
-    fprintf(f, "</Piece>\n</PolyData>\n</VTKFile>\n");
-    return close_out(f, path);
-}
-
-int write_pvd(const char *path, const char *const *files, const double *times, size_t n)
-{
-    FILE *f = open_out(path);
-    if (!f)
-        return -1;
-    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
-               "<Collection>\n");
-    for (size_t k = 0; k < n; k++)
-        fprintf(f, "<DataSet timestep=\"%.9g\" file=\"%s\"/>\n", times[k], files[k]);
-    fprintf(f, "</Collection>\n</VTKFile>\n");
-    return close_out(f, path);
 }
 
 /* ---- pictures ------------------------------------------------------------------- */

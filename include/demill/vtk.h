@@ -90,9 +90,9 @@ DEMILL_API demill_status demill_vtk_write_walls(demill_world *world, const char 
  *  digits (000000, 000001, ...; more when needed). The .pvd lists each
  *  frame's two files as parts 0 ("particles") and 1 ("walls") at the frame's
  *  time, with file names relative to itself; open it in ParaView. It is
- *  written now, empty, and rewritten after every frame (to a temporary file
- *  that then replaces it), so that it lists every frame written in full even
- *  if the program stops at any moment. The directory must exist; existing
+ *  written now, empty, and rewritten after every frame (to out/mill.pvd.tmp,
+ *  which then replaces it), so that it lists every frame written in full
+ *  even if the program stops at any moment. The directory must exist; existing
  *  files of the same names are replaced. The series holds only its names
  *  and the frames' times; it may be written from any world.
  *  @param prefix the path of the files without their endings; its last

@@ -118,7 +118,7 @@ static const char *byte_order(void)
 
 /* Writes a VTK XML file of the given type (UnstructuredGrid, PolyData) with
  * the world's time as field data and one piece with the given attributes
- * and columns. */
+ * and columns (at least one). */
 static demill_status write_file(demill_world *w, const char *path, const char *type,
                                 const char *piece, const column *cols, int ncols,
                                 column_fn bytes_of, void *ctx)
@@ -157,9 +157,8 @@ static demill_status write_file(demill_world *w, const char *path, const char *t
                    c->type, c->name, c->comps, (unsigned long long)offset);
         offset += sizeof(uint64_t) + column_bytes(c);
     }
-    if (ncols)
-        out_printf(&o, "</%s>\n", cols[ncols - 1].section);
-    out_printf(&o, "</Piece>\n</%s>\n<AppendedData encoding=\"raw\">\n_", type);
+    out_printf(&o, "</%s>\n</Piece>\n</%s>\n<AppendedData encoding=\"raw\">\n_",
+               cols[ncols - 1].section, type);
     out_bytes(&o, &time_bytes, sizeof time_bytes);
     out_bytes(&o, &w->time, sizeof w->time);
     for (int k = 0; k < ncols && !o.err; k++) {
