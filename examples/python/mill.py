@@ -27,6 +27,7 @@ SETTLE = 0.3              # s at rest before the drum turns
 CHARGE_MASS = 10000 * 8.8216e-4  # kg: the drum3d charge
 BALL_DIAMETER = 0.01      # m
 SAMPLE = 1e-3             # s between samples of the power
+VTK_EVERY = 0.1           # s between VTK frames (with --vtk)
 
 
 def parse_args(argv=None):
@@ -38,6 +39,8 @@ def parse_args(argv=None):
     p.add_argument("--threads", type=int, default=1,
                    help="threads; the results are the same for any number [1]")
     p.add_argument("--out", default="mill_power.png", help="the plot [mill_power.png]")
+    p.add_argument("--vtk", metavar="PREFIX",
+                   help="also write VTK frames every 0.1 s for ParaView (PREFIX.pvd, ...)")
     args = p.parse_args(argv)
     if args.revolutions < 1:
         p.error("--revolutions must be at least 1")
@@ -60,31 +63,43 @@ def build(time_step, threads):
 
 
 class ProgressBar:
-    """A self-updating progress line with ETA on a terminal (every 10 s
-    otherwise), on stderr."""
+    """The progress line, drawn by the library's progress callback during
+    each :meth:`demill.World.step`: on a terminal a line that updates itself
+    4 times a second, otherwise a line every 10 s (on stderr)."""
 
-    def __init__(self, total_steps, width=30):
-        self.total, self.width = total_steps, width
+    def __init__(self, drum, total_steps, width=30):
+        self.drum, self.total, self.width = drum, total_steps, width
+        self.done = 0          # steps of the whole run before the current call
+        self.turning = False
+        self.rate = 0.0        # steps per second, smoothed
         self.tty = sys.stderr.isatty()
-        self.every = 0.5 if self.tty else 10.0
-        self.start = self.last = time.monotonic()
+        self.every = 0.25 if self.tty else 10.0
+        self.last = time.monotonic()
 
-    def update(self, steps, sim_time, extra=""):
-        now = time.monotonic()
-        if now - self.last < self.every:
-            return
-        self.last = now
+    def __call__(self, progress):
+        """The callback: ``progress`` is a :class:`demill.Progress`."""
+        rate = progress.steps_per_second
+        self.rate = 0.9 * self.rate + 0.1 * rate if self.rate > 0 else rate
+        if time.monotonic() - self.last >= self.every:
+            self.draw(self.done + progress.steps_done, progress.time)
+
+    def draw(self, steps, sim_time):
+        self.last = time.monotonic()
         frac = min(steps / self.total, 1.0)
-        rate = steps / (now - self.start)
-        eta = (self.total - steps) / rate if rate > 0 else float("inf")
-        bar = "#" * round(frac * self.width)
-        start, end = ("\r", "   ") if self.tty else ("", "\n")
-        sys.stderr.write(f"{start}[{bar:<{self.width}}] {100 * frac:3.0f} %  "
-                         f"t = {sim_time:.3f} s  {extra}{rate / 1e3:.1f} k steps/s  "
-                         f"ETA {eta:.0f} s{end}")
+        eta = max(self.total - steps, 0) / self.rate if self.rate > 0 else 0.0
+        bar = "#" * int(frac * self.width)
+        revolution = self.drum.angle / (2 * math.pi) if self.turning else 0.0
+        start, end = ("\r", "  ") if self.tty else ("", "\n")
+        sys.stderr.write(f"{start}mill.py: [{bar:.<{self.width}}] {100 * frac:3.0f} %  "
+                         f"t = {sim_time:.3f} s  revolution {revolution:.2f}  "
+                         f"{self.rate / 1e3:.1f} k steps/s  ETA {int(eta) // 60}:{int(eta) % 60:02d}"
+                         f"{end}")
         sys.stderr.flush()
 
-    def done(self):
+    def finish(self, steps, sim_time):
+        """The last line, at 100 %."""
+        self.total = steps
+        self.draw(steps, sim_time)
         if self.tty:
             sys.stderr.write("\n")
 
@@ -104,22 +119,30 @@ def run(args):
           f"{args.revolutions} revolutions, about {total} steps", file=sys.stderr)
 
     times, power = [], []
-    bar = ProgressBar(total)
-    turning, t, steps = False, 0.0, 0
+    bar = ProgressBar(drum, total)
+    world.on_progress(bar, every=sample)
+    series = world.vtk_series(args.vtk) if args.vtk else None
+    vtk_steps = max(1, round(VTK_EVERY / args.time_step))
+    t, steps = 0.0, 0
     t_rev = math.nan  # start of the measurement (last) revolution
     while drum.revolutions < args.revolutions:
-        if not turning and t >= SETTLE - 0.5 * args.time_step:
+        if not bar.turning and t >= SETTLE - 0.5 * args.time_step:
             drum.speed_fraction = args.speed / 100
-            turning = True
+            bar.turning = True
         world.step(sample)
         steps += sample
+        bar.done = steps
         t = world.time
-        if turning and math.isnan(t_rev) and drum.revolutions + 1 >= args.revolutions:
+        if bar.turning and math.isnan(t_rev) and drum.revolutions + 1 >= args.revolutions:
             t_rev = t
         times.append(t)
         power.append(drum.power)
-        bar.update(steps, t, f"revolution {drum.angle / (2 * math.pi):.2f}  " if turning else "")
-    bar.done()
+        if series and steps % vtk_steps < sample:
+            series.write()
+    world.on_progress(None)
+    bar.finish(steps, t)
+    if series:
+        series.close()
     summary = {
         "particles": n, "mass": mass, "time": t, "steps": steps,
         "mean_power": drum.power_mean, "mean_power_cm": drum.power_cm_mean,

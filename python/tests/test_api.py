@@ -12,11 +12,6 @@ from helpers import linear_world
 import demill
 from demill import (DrumKey, Energy, Integrator, Kind, MaterialKey, Normal, PairKey,
                     ParticleField, Tangential, WorldKey)
-from demill._lib import lib
-
-
-def has(name):
-    return lib.has(name)
 
 
 class Errors(unittest.TestCase):
@@ -323,19 +318,6 @@ class Drum(unittest.TestCase):
             drum.remove()
             with self.assertRaises(demill.InvalidHandle):
                 drum.power
-
-
-@unittest.skipUnless(has("demill_world_ids"), "library without demill_world_ids")
-class Listing(unittest.TestCase):
-    def test_objects_are_listed(self):
-        with demill.World(3) as w:
-            a, b = w.material(), w.material()
-            wall = w.add_plane(a, (0, 0, 0), (0, 1, 0))
-            self.assertIsNone(w.drum)
-            drum = w.add_drum(b)
-            self.assertEqual(w.materials, [a, b])
-            self.assertEqual(w.walls, [wall])
-            self.assertEqual(w.drum, drum)
 
 
 if __name__ == "__main__":

@@ -178,8 +178,7 @@ class Walls(unittest.TestCase):
             np.testing.assert_allclose(wall.angular_velocity, [0, 0, omega])
             np.testing.assert_allclose(wall.normal, [-math.sin(omega * t), math.cos(omega * t), 0],
                                        atol=1e-12)
-            self.assertEqual(w.walls if demill._lib.lib.has("demill_world_ids") else [wall],
-                             [wall])
+            self.assertEqual(w.walls, [wall])
             wall.remove()
             with self.assertRaises(demill.InvalidHandle):
                 wall.point
