@@ -1,19 +1,24 @@
-/* demill.h: libdemill, discrete element simulation of granular material in
- * grinding mills and related scenes. This umbrella header is the whole public
- * API; each part is documented in its own header:
+/** @file demill.h
+ * @brief libdemill, discrete element simulation of granular material in
+ * grinding mills and related scenes.
  *
- *   demill/common.h     version, status codes, ids, parameter metadata
- *   demill/world.h      worlds: create, configure, step
- *   demill/material.h   materials and per-pair contact models
- *   demill/particles.h  particles: add, remove, read, write
- *   demill/wall.h       walls with prescribed motion
- *   demill/query.h      contacts and energies
- *   demill/drum.h       the mill: drum, lifters, charge, power, spectrum
- *   demill/state.h      snapshots, checkpoint files, listing a world's ids
- *   demill/vtk.h        output for ParaView: particles, walls, time series
+ * This umbrella header is the whole public API; each part is documented in
+ * its own header:
+ *
+ * | header              | content                                            |
+ * |---------------------|----------------------------------------------------|
+ * | demill/common.h     | version, status codes, ids, parameter metadata     |
+ * | demill/world.h      | worlds: create, configure, step                    |
+ * | demill/material.h   | materials and per-pair contact models              |
+ * | demill/particles.h  | particles: add, remove, read, write                |
+ * | demill/wall.h       | walls with prescribed motion                       |
+ * | demill/query.h      | contacts and energies                              |
+ * | demill/drum.h       | the mill: drum, lifters, charge, power, spectrum   |
+ * | demill/state.h      | snapshots, checkpoint files, listing a world's ids |
+ * | demill/vtk.h        | output for ParaView: particles, walls, time series |
  *
  * A minimal program:
- *
+ * @code
  *   demill_world *w;
  *   demill_id steel, ball;
  *   demill_world_create(3, &w);
@@ -23,6 +28,7 @@
  *   demill_particles_add(w, steel, 1, x, &r, NULL, 0, &ball);
  *   demill_world_step(w, 1000);
  *   demill_world_destroy(w);
+ * @endcode
  */
 #ifndef DEMILL_H
 #define DEMILL_H

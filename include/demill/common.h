@@ -1,4 +1,5 @@
-/* demill/common.h: export macro, ids, status codes, version and parameter keys.
+/** @file demill/common.h
+ * @brief Export macro, ids, status codes, version and parameter keys.
  *
  * This header is part of the stable libdemill API; include <demill.h> rather
  * than this file directly. All functions are C99-callable, take and return
@@ -39,24 +40,32 @@ extern "C" {
  * the 0.x series a minor version may add to the API but never changes or
  * removes anything; the shared library's SONAME is libdemill.so.0.
  * @{ */
+/** Major version of the headers: 0 for the 0.x series. */
 #define DEMILL_VERSION_MAJOR 0
+/** Minor version of the headers: grows when the API is extended. */
 #define DEMILL_VERSION_MINOR 1
+/** Patch version of the headers: fixes that change no interface. */
 #define DEMILL_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH, e.g. 100 for 0.1.0. */
 #define DEMILL_VERSION_NUMBER \
     (DEMILL_VERSION_MAJOR * 10000 + DEMILL_VERSION_MINOR * 100 + DEMILL_VERSION_PATCH)
+/** The version of the headers as "MAJOR.MINOR.PATCH". */
 #define DEMILL_VERSION_STRING "0.1.0"
 
-/** The version number of the library at run time (same encoding as
- *  DEMILL_VERSION_NUMBER). */
+/** The version number of the library at run time.
+ *  @return MAJOR * 10000 + MINOR * 100 + PATCH of the running library (the
+ *          encoding of DEMILL_VERSION_NUMBER). */
 DEMILL_API uint32_t demill_version_number(void);
 
-/** The version of the library at run time as "MAJOR.MINOR.PATCH". The string
- *  is static. */
+/** The version of the library at run time.
+ *  @return "MAJOR.MINOR.PATCH" of the running library; a static string,
+ *          never NULL. */
 DEMILL_API const char *demill_version_string(void);
 
 /** Checks that the running library can serve a program compiled against
- *  headers of version `header_version` (pass DEMILL_VERSION_NUMBER).
+ *  headers of version `header_version`.
+ *  @param header_version the version the program was compiled with: pass
+ *                        DEMILL_VERSION_NUMBER.
  *  @return DEMILL_OK if the major versions match and the library is at least
  *          as new as the headers; DEMILL_ERR_VERSION otherwise. */
 DEMILL_API int32_t demill_check_version(uint32_t header_version);
@@ -76,9 +85,11 @@ DEMILL_API int32_t demill_check_version(uint32_t header_version);
  * DEMILL_ERR_INVALID_VALUE; a whole number that names no choice gives
  * DEMILL_ERR_UNKNOWN_KEY.
  * @{ */
+/** A status code: DEMILL_OK or one of the DEMILL_ERR_* codes. */
 typedef int32_t demill_status;
+/** The status codes, the values of demill_status. */
 enum {
-    DEMILL_OK = 0,
+    DEMILL_OK = 0,                   /**< success */
     DEMILL_ERR_NULL_POINTER = 1,     /**< a required pointer argument is NULL */
     DEMILL_ERR_INVALID_VALUE = 2,    /**< a value is out of its allowed range */
     DEMILL_ERR_NOT_FINITE = 3,       /**< a value is NaN or infinite */
@@ -98,8 +109,11 @@ enum {
     DEMILL_ERR_INTERRUPTED = 17      /**< the progress callback asked the run to stop (see demill_world_set_progress()) */
 };
 
-/** A static, generic description of a status code ("invalid value", ...).
- *  Never NULL; unknown codes give "unknown status code". */
+/** A generic description of a status code.
+ *  @param code a status code returned by any function.
+ *  @return a static string such as "invalid value", never NULL; a code that
+ *          is not a status code gives "unknown status code". For what went
+ *          wrong in a particular call, read demill_world_last_error(). */
 DEMILL_API const char *demill_strerror(demill_status code);
 /** @} */
 
@@ -111,20 +125,25 @@ DEMILL_API const char *demill_strerror(demill_status code);
  * DEMILL_ERR_INVALID_HANDLE instead of touching the wrong object.
  * DEMILL_ID_NONE (0) is never a valid id.
  * @{ */
+/** The id of a material, particle, wall or drum of a world. */
 typedef uint64_t demill_id;
+/** The id that names nothing. */
 #define DEMILL_ID_NONE ((demill_id)0)
 
 /** The kind of object an id names (see demill_id_kind()). */
 enum {
-    DEMILL_KIND_NONE = 0,
-    DEMILL_KIND_MATERIAL = 1,
-    DEMILL_KIND_PARTICLE = 2,
-    DEMILL_KIND_WALL = 3,
-    DEMILL_KIND_DRUM = 4
+    DEMILL_KIND_NONE = 0,     /**< not an id of any kind (e.g. DEMILL_ID_NONE) */
+    DEMILL_KIND_MATERIAL = 1, /**< a material (demill_material_create()) */
+    DEMILL_KIND_PARTICLE = 2, /**< a particle (demill_particles_add()) */
+    DEMILL_KIND_WALL = 3,     /**< a wall (demill_wall_add_plane()) */
+    DEMILL_KIND_DRUM = 4      /**< a drum (demill_drum_create()) */
 };
 
-/** The kind encoded in an id (DEMILL_KIND_*), without checking that the
- *  object still exists. */
+/** The kind of object an id names, without checking that the object still
+ *  exists.
+ *  @param id any id.
+ *  @return the kind encoded in the id, DEMILL_KIND_*; DEMILL_KIND_NONE for an
+ *          id that encodes no kind. */
 DEMILL_API int32_t demill_id_kind(demill_id id);
 /** @} */
 
@@ -137,17 +156,27 @@ DEMILL_API int32_t demill_id_kind(demill_id id);
  * meaning. The functions below describe a key without needing a world.
  * @{ */
 
-/** The key's name, e.g. "world.time_step", or NULL for an unknown key. */
+/** The name of a parameter key.
+ *  @param key a parameter key (DEMILL_WORLD_*, DEMILL_MATERIAL_*,
+ *             DEMILL_PAIR_*, DEMILL_DRUM_*).
+ *  @return the key's name, e.g. "world.time_step" (a static string), or NULL
+ *          for an unknown key. */
 DEMILL_API const char *demill_param_name(int32_t key);
 
-/** The unit of the key's value in SI, e.g. "s", "Pa", "1" (dimensionless),
- *  "enum" or "bool", or NULL for an unknown key. */
+/** The unit of a parameter key's value.
+ *  @param key a parameter key.
+ *  @return the unit in SI, e.g. "s", "Pa", "1" (dimensionless), "enum" or
+ *          "bool" (a static string), or NULL for an unknown key. */
 DEMILL_API const char *demill_param_unit(int32_t key);
 
 /** The allowed range [*lo, *hi] of a key and its default (for keys whose
  *  default is derived from materials, the value used for an identical pair of
- *  default materials). Any output pointer may be NULL.
+ *  default materials).
  *  Open bounds are reported as the nearest representable value inside them.
+ *  @param key                a parameter key.
+ *  @param[out] lo            receives the lower bound; may be NULL.
+ *  @param[out] hi            receives the upper bound; may be NULL.
+ *  @param[out] default_value receives the default; may be NULL.
  *  @return DEMILL_OK or DEMILL_ERR_UNKNOWN_KEY. */
 DEMILL_API demill_status demill_param_bounds(int32_t key, double *lo, double *hi,
                                              double *default_value);

@@ -1,4 +1,5 @@
-/* demill/drum.h: the mill drum (shell, end caps and lifter bars), its speed,
+/** @file demill/drum.h
+ * @brief The mill drum (shell, end caps and lifter bars), its speed,
  * the charge that fills it, and what mill engineers read from it.
  *
  * The drum's axis is the z axis through the origin; seen from +z a positive
@@ -85,15 +86,26 @@ enum {
     /** Power estimate from the charge's centre of mass, M g x_cm ω (M the
      *  mass of all particles, x_cm measured towards the rising side), W. */
     DEMILL_DRUM_POWER_CM = 457,
-    /** Its mean over the last completed revolution, W (NaN before the first). */
+    /** Mean of DEMILL_DRUM_POWER_CM over the last completed revolution, W
+     *  (NaN before the first). */
     DEMILL_DRUM_POWER_CM_MEAN = 458,
-    /** Charge angles at the current state, rad (NaN without a charge). */
+    /** Toe angle of the charge at the current state, rad (NaN without a
+     *  charge). */
     DEMILL_DRUM_TOE_ANGLE = 459,
+    /** Shoulder angle of the charge at the current state, rad (NaN without a
+     *  charge). */
     DEMILL_DRUM_SHOULDER_ANGLE = 460,
+    /** Angle of the charge's centre of mass at the current state, rad (NaN
+     *  without a charge). */
     DEMILL_DRUM_COM_ANGLE = 461,
-    /** Their means over the samples of the last completed revolution, rad. */
+    /** Mean of DEMILL_DRUM_TOE_ANGLE over the samples of the last completed
+     *  revolution, rad. */
     DEMILL_DRUM_TOE_ANGLE_MEAN = 462,
+    /** Mean of DEMILL_DRUM_SHOULDER_ANGLE over the samples of the last
+     *  completed revolution, rad. */
     DEMILL_DRUM_SHOULDER_ANGLE_MEAN = 463,
+    /** Mean of DEMILL_DRUM_COM_ANGLE over the samples of the last completed
+     *  revolution, rad. */
     DEMILL_DRUM_COM_ANGLE_MEAN = 464,
     /** Energy the drum has put into the charge since creation (work of the
      *  contact forces on the drum's walls, with sign reversed), J. */
@@ -113,7 +125,8 @@ enum {
     /** Force the particles exert on the lifter at the last force
      *  evaluation, N (3 doubles). */
     DEMILL_LIFTER_FORCE = 1,
-    /** Its mean over the last completed revolution, N (3 doubles). */
+    /** Mean of DEMILL_LIFTER_FORCE over the last completed revolution, N
+     *  (3 doubles). */
     DEMILL_LIFTER_FORCE_MEAN = 2,
     /** Largest force magnitude since creation, N (1 double). */
     DEMILL_LIFTER_FORCE_PEAK = 3,
@@ -155,7 +168,10 @@ enum {
 };
 
 /** Creates a drum of the given wall material with default geometry (see the
- *  keys) and writes its id. A world has at most one drum.
+ *  DEMILL_DRUM_* keys). A world has at most one drum.
+ *  @param world    the world.
+ *  @param material the material of the drum's walls.
+ *  @param[out] out receives the drum's id.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_INVALID_VALUE (a drum exists) or
  *          DEMILL_ERR_OUT_OF_MEMORY. */
@@ -163,11 +179,17 @@ DEMILL_API demill_status demill_drum_create(demill_world *world, demill_id mater
                                             demill_id *out);
 
 /** Removes the drum and its walls. Its id becomes invalid.
+ *  @param world the world.
+ *  @param drum  the drum's id.
  *  @return DEMILL_OK or DEMILL_ERR_INVALID_HANDLE. */
 DEMILL_API demill_status demill_drum_remove(demill_world *world, demill_id drum);
 
 /** Sets a drum parameter (keys 400-449). Speed keys set the target speed
  *  from now on (reached after DEMILL_DRUM_RAMP_TIME).
+ *  @param world the world.
+ *  @param drum  the drum's id.
+ *  @param key   a settable DEMILL_DRUM_* key (400-449).
+ *  @param value the new value, in the key's unit.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NOT_FINITE,
  *          DEMILL_ERR_INVALID_VALUE (out of bounds; lifters that do not fit)
@@ -175,15 +197,25 @@ DEMILL_API demill_status demill_drum_remove(demill_world *world, demill_id drum)
 DEMILL_API demill_status demill_drum_set(demill_world *world, demill_id drum, int32_t key,
                                          double value);
 
-/** Reads a drum parameter or measurement (keys 400-499) into *value.
+/** Reads a drum parameter or measurement.
+ *  @param world      the world.
+ *  @param drum       the drum's id.
+ *  @param key        any DEMILL_DRUM_* key (400-499).
+ *  @param[out] value receives the value.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY or
  *          DEMILL_ERR_NULL_POINTER. */
 DEMILL_API demill_status demill_drum_get(demill_world *world, demill_id drum, int32_t key,
                                          double *value);
 
-/** Adds one lifter: its centre line at polar angle `angle` (drum frame, at
- *  drum angle 0), `height` above the shell, `width` at the shell and the
- *  leading face inclined by `face_angle` from the radial direction.
+/** Adds one lifter to the drum.
+ *  @param world      the world.
+ *  @param drum       the drum's id.
+ *  @param angle      polar angle of the lifter's centre line, rad (drum
+ *                    frame, at drum angle 0).
+ *  @param height     height above the shell, m, >= 0.
+ *  @param width      width at the shell, m, > 0.
+ *  @param face_angle inclination of the leading face from the radial
+ *                    direction, rad, in [0, 1.4].
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE,
  *          DEMILL_ERR_INVALID_VALUE (out of range, or more than 64 lifters)
  *          or DEMILL_ERR_OUT_OF_MEMORY. */
@@ -191,7 +223,12 @@ DEMILL_API demill_status demill_drum_add_lifter(demill_world *world, demill_id d
                                                 double angle, double height, double width,
                                                 double face_angle);
 
-/** Reads a lifter field (DEMILL_LIFTER_*; 1 or 3 doubles) of lifter `index`.
+/** Reads a field of one lifter.
+ *  @param world    the world.
+ *  @param drum     the drum's id.
+ *  @param index    the lifter's index, from 0 to DEMILL_DRUM_LIFTER_COUNT - 1.
+ *  @param field    a DEMILL_LIFTER_* field.
+ *  @param[out] out receives the field's 1 or 3 doubles.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_INVALID_VALUE
  *          (no such lifter), DEMILL_ERR_UNKNOWN_KEY or
  *          DEMILL_ERR_NULL_POINTER. */
@@ -206,11 +243,20 @@ DEMILL_API demill_status demill_drum_lifter_get(demill_world *world, demill_id d
  *  arguments, the drum and the particles already present, so the same call
  *  gives the same charge. Call it once per material (balls, then ore), then
  *  let the charge settle (demill_world_settle()).
- *  @param ids  receives the ids of the new particles (may be NULL);
- *              capacity: how many it can hold.
- *  @param added receives the number of particles added (0 on failure; on
- *              DEMILL_ERR_BUFFER_TOO_SMALL the number ids must hold); may be
- *              NULL.
+ *  @param world        the world.
+ *  @param drum         the drum's id.
+ *  @param material     the particles' material.
+ *  @param distribution the size distribution, DEMILL_SIZES_*.
+ *  @param params       the distribution's parameters (see DEMILL_SIZES_*).
+ *  @param nparams      the number of doubles in params.
+ *  @param target       what `value` means, DEMILL_FILL_*.
+ *  @param value        how many particles: a count, a mass or a fraction.
+ *  @param seed         seed of the random sizes, order and jitter.
+ *  @param[out] ids     receives the ids of the new particles (may be NULL).
+ *  @param capacity     how many ids `ids` can hold.
+ *  @param[out] added   receives the number of particles added (0 on failure;
+ *                      on DEMILL_ERR_BUFFER_TOO_SMALL the number ids must
+ *                      hold); may be NULL.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_UNKNOWN_KEY, DEMILL_ERR_NOT_FINITE,
  *          DEMILL_ERR_INVALID_VALUE (bad distribution or target; the charge
@@ -231,6 +277,13 @@ DEMILL_API demill_status demill_drum_fill(demill_world *world, demill_id drum, d
  *  last class everything above the last edge), so there are nedges + 1
  *  classes. Memory is fixed: (C(C+1)/2 + 2C) × nbins counters for C classes.
  *  Recording costs a history slot per contact; calling again restarts it.
+ *  @param world  the world.
+ *  @param drum   the drum's id.
+ *  @param nedges the number of size class edges.
+ *  @param edges  nedges increasing diameters, m.
+ *  @param nbins  the number of energy bins, 1 to 10000.
+ *  @param e_min  the lower edge of the first bin, J, > 0.
+ *  @param e_max  the upper edge of the last bin, J, > e_min.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE or
  *          DEMILL_ERR_OUT_OF_MEMORY. */
@@ -241,8 +294,13 @@ DEMILL_API demill_status demill_drum_spectrum_start(demill_world *world, demill_
 /** Reads the spectrum's counts: rows of nbins counters, first the particle
  *  pairs (class a <= class b, in the order (0,0), (0,1), ..., (1,1), ...),
  *  then for each class its collisions with the shell, then for each class
- *  with the lifters. Arguments as for demill_particles_read() (capacity and
- *  count in counters).
+ *  with the lifters.
+ *  @param world       the world.
+ *  @param drum        the drum's id.
+ *  @param[out] counts capacity counters, or NULL to ask the count.
+ *  @param capacity    number of counters `counts` can hold.
+ *  @param[out] count  receives the number of counters (may be NULL if counts
+ *                     is not).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_INVALID_VALUE (no spectrum started) or
  *          DEMILL_ERR_BUFFER_TOO_SMALL. */
@@ -250,10 +308,18 @@ DEMILL_API demill_status demill_drum_spectrum(demill_world *world, demill_id dru
                                               uint64_t *counts, size_t capacity, size_t *count);
 
 /** Steps the world until the charge has settled: until the kinetic energy per
- *  particle falls below `energy_per_particle` J, or `max_time` s of simulated
- *  time have passed. *settled (may be NULL) says which.
- *  @return as demill_world_step(), plus DEMILL_ERR_NOT_FINITE and
- *          DEMILL_ERR_INVALID_VALUE (negative arguments). */
+ *  particle falls below `energy_per_particle`, or `max_time` of simulated
+ *  time has passed.
+ *  @param world               the world.
+ *  @param max_time            the longest time to step, s, >= 0.
+ *  @param energy_per_particle the kinetic energy per particle that counts as
+ *                             settled, J, >= 0.
+ *  @param[out] settled        receives 1 if the charge settled, 0 if the
+ *                             time ran out; may be NULL.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_INVALID_VALUE (negative arguments), and what
+ *          demill_world_step() returns: DEMILL_ERR_NO_CONTACT_MODEL,
+ *          DEMILL_ERR_OUT_OF_MEMORY or DEMILL_ERR_UNSTABLE. */
 DEMILL_API demill_status demill_world_settle(demill_world *world, double max_time,
                                              double energy_per_particle, int32_t *settled);
 

@@ -1,4 +1,5 @@
-/* demill/material.h: materials and the contact model of each material pair. */
+/** @file demill/material.h
+ * @brief Materials and the contact model of each material pair. */
 #ifndef DEMILL_MATERIAL_H
 #define DEMILL_MATERIAL_H
 
@@ -85,10 +86,10 @@ enum {
  *  marked "derived" take their value from the two materials until set for
  *  the pair. */
 enum {
-    DEMILL_PAIR_NORMAL = 300,      /**< DEMILL_NORMAL_*; a pair with NONE may not touch */
-    DEMILL_PAIR_DAMPING = 301,     /**< DEMILL_DAMPING_* */
-    DEMILL_PAIR_TANGENTIAL = 302,  /**< DEMILL_TANGENTIAL_* */
-    DEMILL_PAIR_ROLLING = 303,     /**< DEMILL_ROLLING_* */
+    DEMILL_PAIR_NORMAL = 300,      /**< normal law, DEMILL_NORMAL_*; a pair with NONE may not touch */
+    DEMILL_PAIR_DAMPING = 301,     /**< normal damping law, DEMILL_DAMPING_* */
+    DEMILL_PAIR_TANGENTIAL = 302,  /**< tangential law, DEMILL_TANGENTIAL_* */
+    DEMILL_PAIR_ROLLING = 303,     /**< rolling resistance law, DEMILL_ROLLING_* */
     /** Restitution in (0, 1]; derived: mean of the two materials'. */
     DEMILL_PAIR_RESTITUTION = 310,
     /** Sliding friction μ >= 0; derived: mean of the two materials'. */
@@ -122,7 +123,9 @@ enum {
 };
 
 /** Creates a material with default parameters (see the DEMILL_MATERIAL_*
- *  keys) and writes its id to *out.
+ *  keys).
+ *  @param world    the world.
+ *  @param[out] out receives the material's id.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_INVALID_VALUE (too many materials: 256 at most) or
  *          DEMILL_ERR_OUT_OF_MEMORY. */
@@ -130,12 +133,20 @@ DEMILL_API demill_status demill_material_create(demill_world *world, demill_id *
 
 /** Sets a material parameter. Changing a material while particles of it
  *  exist recomputes their masses (density) and the contact constants.
+ *  @param world    the world.
+ *  @param material the material's id.
+ *  @param key      a DEMILL_MATERIAL_* key.
+ *  @param value    the new value, in the key's unit.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_NOT_FINITE or DEMILL_ERR_INVALID_VALUE. */
 DEMILL_API demill_status demill_material_set(demill_world *world, demill_id material,
                                              int32_t key, double value);
 
-/** Reads a material parameter into *value.
+/** Reads a material parameter.
+ *  @param world      the world.
+ *  @param material   the material's id.
+ *  @param key        a DEMILL_MATERIAL_* key.
+ *  @param[out] value receives the value.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER or
  *          DEMILL_ERR_UNKNOWN_KEY. */
 DEMILL_API demill_status demill_material_get(const demill_world *world, demill_id material,
@@ -145,12 +156,25 @@ DEMILL_API demill_status demill_material_get(const demill_world *world, demill_i
  *  b; the order does not matter). Setting a law key chooses that part of the
  *  model; setting a derived key overrides the value taken from the
  *  materials.
+ *  @param world the world.
+ *  @param a     one material's id.
+ *  @param b     the other material's id (may equal a).
+ *  @param key   a DEMILL_PAIR_* key.
+ *  @param value the new value: a choice (DEMILL_NORMAL_*, DEMILL_DAMPING_*,
+ *               DEMILL_TANGENTIAL_*, DEMILL_ROLLING_*) for a law key, else a
+ *               number in the key's unit.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
- *          DEMILL_ERR_NOT_FINITE or DEMILL_ERR_INVALID_VALUE. */
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_pair_set(demill_world *world, demill_id a, demill_id b,
                                          int32_t key, double value);
 
 /** Reads the effective value of a pair parameter (derived or set).
+ *  @param world      the world.
+ *  @param a          one material's id.
+ *  @param b          the other material's id (may equal a).
+ *  @param key        a DEMILL_PAIR_* key.
+ *  @param[out] value receives the value.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER or
  *          DEMILL_ERR_UNKNOWN_KEY. */
 DEMILL_API demill_status demill_pair_get(const demill_world *world, demill_id a, demill_id b,

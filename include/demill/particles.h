@@ -1,4 +1,5 @@
-/* demill/particles.h: adding, removing, reading and writing particles.
+/** @file demill/particles.h
+ * @brief Adding, removing, reading and writing particles.
  *
  * Bulk functions move whole fields in and out as flat, caller-owned arrays of
  * doubles: a vector field takes 3 doubles per particle (x, y, z; in a 2D
@@ -16,7 +17,8 @@
 extern "C" {
 #endif
 
-/** Particle fields. */
+/** Particle fields, for demill_particles_read(), demill_particles_write(),
+ *  demill_particle_get() and demill_particle_set(). */
 enum {
     DEMILL_PARTICLE_POSITION = 1,         /**< 3 doubles, m; read/write */
     DEMILL_PARTICLE_VELOCITY = 2,         /**< 3 doubles, m/s; read/write */
@@ -41,11 +43,14 @@ enum {
     DEMILL_ADD_NO_OVERLAP = 1u
 };
 
-/** The number of doubles per particle of a field (1 or 3), or 0 for an
- *  unknown field. */
+/** The size of a particle field.
+ *  @param field a DEMILL_PARTICLE_* field.
+ *  @return the number of doubles per particle of the field (1 or 3), or 0
+ *          for an unknown field. */
 DEMILL_API int32_t demill_particle_field_size(int32_t field);
 
-/** Adds n particles of one material.
+/** Adds n particles of one material. In a 2D world z components must be 0.
+ *  @param world      the world.
  *  @param material   the particles' material.
  *  @param n          number of particles (0 is allowed and does nothing).
  *  @param positions  3n doubles: centres in m.
@@ -53,8 +58,7 @@ DEMILL_API int32_t demill_particle_field_size(int32_t field);
  *  @param velocities 3n doubles in m/s, or NULL for rest.
  *  @param flags      0 or DEMILL_ADD_NO_OVERLAP; other bits give
  *                    DEMILL_ERR_UNKNOWN_KEY.
- *  @param ids        n ids written on success, or NULL.
- *  In a 2D world z components must be 0.
+ *  @param[out] ids   n ids written on success, or NULL.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE,
  *          DEMILL_ERR_UNKNOWN_KEY (flags), DEMILL_ERR_DIMENSION,
@@ -68,17 +72,23 @@ DEMILL_API demill_status demill_particles_add(demill_world *world, demill_id mat
                                               demill_id *ids);
 
 /** Removes n particles. Their ids become invalid; contacts with them end.
- *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (nothing removed; the
- *          message names the first bad id), DEMILL_ERR_INVALID_VALUE (an id
- *          listed twice) or DEMILL_ERR_NULL_POINTER. */
+ *  On failure nothing is removed.
+ *  @param world the world.
+ *  @param n     the number of ids.
+ *  @param ids   n particle ids.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (the message names the first
+ *          bad id), DEMILL_ERR_INVALID_VALUE (an id listed twice),
+ *          DEMILL_ERR_NULL_POINTER or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_particles_remove(demill_world *world, size_t n,
                                                  const demill_id *ids);
 
 /** Reads a field of every particle, in id order, into out.
- *  @param out      capacity × field size doubles, or NULL to ask the count.
- *  @param capacity number of particles out can hold.
- *  @param count    receives the number of particles (may be NULL if out is
- *                  not).
+ *  @param world       the world.
+ *  @param field       a DEMILL_PARTICLE_* field.
+ *  @param[out] out    capacity × field size doubles, or NULL to ask the count.
+ *  @param capacity    number of particles out can hold.
+ *  @param[out] count  receives the number of particles (may be NULL if out is
+ *                     not).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_DIMENSION (the angle in a 3D world),
  *          DEMILL_ERR_NULL_POINTER or DEMILL_ERR_BUFFER_TOO_SMALL (nothing
@@ -86,31 +96,57 @@ DEMILL_API demill_status demill_particles_remove(demill_world *world, size_t n,
 DEMILL_API demill_status demill_particles_read(const demill_world *world, int32_t field,
                                                double *out, size_t capacity, size_t *count);
 
-/** Reads ids (DEMILL_PARTICLE_ID) or material ids (DEMILL_PARTICLE_MATERIAL)
- *  of every particle, in id order. Arguments as for demill_particles_read(). */
+/** Reads the ids or the material ids of every particle, in id order (this
+ *  function defines id order).
+ *  @param world       the world.
+ *  @param field       DEMILL_PARTICLE_ID or DEMILL_PARTICLE_MATERIAL.
+ *  @param[out] out    capacity ids, or NULL to ask the count.
+ *  @param capacity    number of particles out can hold.
+ *  @param[out] count  receives the number of particles (may be NULL if out is
+ *                     not).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_NULL_POINTER or DEMILL_ERR_BUFFER_TOO_SMALL (nothing
+ *          written, *count set). */
 DEMILL_API demill_status demill_particles_read_ids(const demill_world *world, int32_t field,
                                                    demill_id *out, size_t capacity,
                                                    size_t *count);
 
-/** Writes a field of every particle, in id order. n must equal the number of
- *  particles. Values are checked first; on failure nothing is written and the
- *  message names the first bad particle by its position in id order.
+/** Writes a field of every particle, in id order. Values are checked first;
+ *  on failure nothing is written and the message names the first bad
+ *  particle by its position in id order.
+ *  @param world the world.
+ *  @param field a writable DEMILL_PARTICLE_* field.
+ *  @param in    n × field size doubles.
+ *  @param n     the number of particles in `in`; must equal the number of
+ *               particles of the world.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NULL_POINTER,
- *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE or
- *          DEMILL_ERR_DIMENSION. */
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (a bad value, or n
+ *          is not the number of particles) or DEMILL_ERR_DIMENSION. */
 DEMILL_API demill_status demill_particles_write(demill_world *world, int32_t field,
                                                 const double *in, size_t n);
 
-/** Reads one particle's field into out (1 or 3 doubles).
+/** Reads one particle's field.
+ *  @param world     the world.
+ *  @param particle  the particle's id.
+ *  @param field     a DEMILL_PARTICLE_* field.
+ *  @param[out] out  receives the field's 1 or 3 doubles.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_DIMENSION (the angle in a 3D world) or
  *          DEMILL_ERR_NULL_POINTER. */
 DEMILL_API demill_status demill_particle_get(const demill_world *world, demill_id particle,
                                              int32_t field, double *out);
 
-/** Writes one particle's field from in (1 or 3 doubles). Errors as for
- *  demill_particles_write(). */
+/** Writes one particle's field. The value is checked first; on failure
+ *  nothing is written.
+ *  @param world    the world.
+ *  @param particle the particle's id.
+ *  @param field    a writable DEMILL_PARTICLE_* field.
+ *  @param in       the field's 1 or 3 doubles.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE or
+ *          DEMILL_ERR_DIMENSION. */
 DEMILL_API demill_status demill_particle_set(demill_world *world, demill_id particle,
                                              int32_t field, const double *in);
 

@@ -1,4 +1,5 @@
-/* demill/query.h: contacts and the energy account of a world. */
+/** @file demill/query.h
+ * @brief Contacts and the energy account of a world. */
 #ifndef DEMILL_QUERY_H
 #define DEMILL_QUERY_H
 
@@ -20,8 +21,10 @@ enum {
     DEMILL_CONTACT_ROLLING_TORQUE = 6    /**< 3 doubles: rolling-resistance torque on a, N m */
 };
 
-/** The number of doubles per contact of a contact field (1 or 3), or 0 for an
- *  unknown field. */
+/** The size of a contact field.
+ *  @param field a DEMILL_CONTACT_* field.
+ *  @return the number of doubles per contact of the field (1 or 3), or 0 for
+ *          an unknown field. */
 DEMILL_API int32_t demill_contact_field_size(int32_t field);
 
 /** Reads a field of every contact (overlap > 0) at the current state:
@@ -29,18 +32,33 @@ DEMILL_API int32_t demill_contact_field_size(int32_t field);
  *  order that stays the same between calls as long as the world is not
  *  stepped or changed. Forces are evaluated from the current positions,
  *  velocities and contact history without changing anything.
- *  @param out      capacity × field size doubles, or NULL to ask the count.
- *  @param capacity number of contacts out can hold.
- *  @param count    receives the number of contacts.
+ *  @param world       the world.
+ *  @param field       a DEMILL_CONTACT_* field.
+ *  @param[out] out    capacity × field size doubles, or NULL to ask the count.
+ *  @param capacity    number of contacts out can hold.
+ *  @param[out] count  receives the number of contacts (may be NULL if out is
+ *                     not).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
- *          DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NO_CONTACT_MODEL or
- *          DEMILL_ERR_BUFFER_TOO_SMALL (nothing written, *count set). */
+ *          DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NO_CONTACT_MODEL,
+ *          DEMILL_ERR_OUT_OF_MEMORY or DEMILL_ERR_BUFFER_TOO_SMALL (nothing
+ *          written, *count set). */
 DEMILL_API demill_status demill_contacts_read(demill_world *world, int32_t field, double *out,
                                               size_t capacity, size_t *count);
 
 /** Reads the ids of both bodies of every contact, in the order of
- *  demill_contacts_read(). a or b may be NULL to skip it. Errors as for
- *  demill_contacts_read(). */
+ *  demill_contacts_read().
+ *  @param world      the world.
+ *  @param[out] a     capacity ids of the first bodies (particles), or NULL
+ *                    to skip them.
+ *  @param[out] b     capacity ids of the second bodies (particles, walls or
+ *                    the drum), or NULL to skip them.
+ *  @param capacity   number of contacts a and b can hold.
+ *  @param[out] count receives the number of contacts (may be NULL if a or b
+ *                    is not).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER (a,
+ *          b and count all NULL), DEMILL_ERR_NO_CONTACT_MODEL,
+ *          DEMILL_ERR_OUT_OF_MEMORY or DEMILL_ERR_BUFFER_TOO_SMALL (nothing
+ *          written, *count set). */
 DEMILL_API demill_status demill_contacts_read_ids(demill_world *world, demill_id *a,
                                                   demill_id *b, size_t capacity, size_t *count);
 
@@ -66,9 +84,13 @@ enum {
     DEMILL_ENERGY_TOTAL = 12
 };
 
-/** Reads one energy term (DEMILL_ENERGY_*) into *value.
+/** Reads one energy term of the world.
+ *  @param world      the world.
+ *  @param term       a DEMILL_ENERGY_* term.
+ *  @param[out] value receives the energy, J.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
- *          DEMILL_ERR_NULL_POINTER or DEMILL_ERR_NO_CONTACT_MODEL. */
+ *          DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NO_CONTACT_MODEL or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_world_energy(demill_world *world, int32_t term, double *value);
 
 #ifdef __cplusplus

@@ -1,6 +1,7 @@
-/* demill/state.h: the whole state of a world kept aside and brought back:
- * in-memory snapshots, checkpoint files and buffers, and the ids of what a
- * world holds (to find materials, walls and the drum again after a load).
+/** @file demill/state.h
+ * @brief The whole state of a world kept aside and brought back: in-memory
+ * snapshots, checkpoint files and buffers, and the ids of what a world holds
+ * (to find materials, walls and the drum again after a load).
  *
  * A world's state is everything that decides how it goes on: parameters,
  * materials and pair models, particles, walls and the drum with their motion
@@ -49,13 +50,16 @@ DEMILL_API demill_status demill_snapshot_take(demill_world *world, demill_snapsh
 /** Makes the world's state a copy of the snapshot's. The world may be the
  *  one the snapshot was taken from or another one; it takes the snapshot's
  *  dimension. The snapshot is not changed and can be restored again.
+ *  @param world    the world to restore into.
+ *  @param snapshot a snapshot from demill_snapshot_take().
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (snapshot),
  *          DEMILL_ERR_INVALID_HANDLE (snapshot is not a snapshot) or
  *          DEMILL_ERR_OUT_OF_MEMORY (the world is left as it was). */
 DEMILL_API demill_status demill_snapshot_restore(demill_world *world,
                                                  const demill_snapshot *snapshot);
 
-/** Frees a snapshot. NULL is ignored. */
+/** Frees a snapshot. NULL is ignored.
+ *  @param snapshot the snapshot, or NULL. */
 DEMILL_API void demill_snapshot_free(demill_snapshot *snapshot);
 /** @} */
 
@@ -87,6 +91,8 @@ DEMILL_API demill_status demill_world_save(demill_world *world, const char *path
  *  group's description for what is kept). The world takes the checkpoint's
  *  dimension, so any world will do, e.g. a new one from
  *  demill_world_create(3, &w).
+ *  @param world the world to load into.
+ *  @param path  the checkpoint file.
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (path), DEMILL_ERR_IO (the file
  *          cannot be opened or read), DEMILL_ERR_FORMAT (not a checkpoint,
  *          truncated, corrupt, or of a newer format version) or
@@ -95,6 +101,7 @@ DEMILL_API demill_status demill_world_load(demill_world *world, const char *path
 
 /** Writes the world's state as a checkpoint into a caller's buffer (the
  *  same bytes demill_world_save() writes to a file).
+ *  @param world    the world (not changed).
  *  @param buffer   where to write, or NULL to ask the size only.
  *  @param capacity bytes the buffer holds.
  *  @param size     receives the checkpoint's size in bytes (may be NULL if
@@ -106,7 +113,14 @@ DEMILL_API demill_status demill_world_save_buffer(demill_world *world, void *buf
                                                   size_t capacity, size_t *size);
 
 /** Replaces the world's state with the checkpoint in a buffer of `size`
- *  bytes. Errors as for demill_world_load(), without DEMILL_ERR_IO. */
+ *  bytes (as demill_world_load() does from a file).
+ *  @param world  the world to load into.
+ *  @param buffer the checkpoint's bytes.
+ *  @param size   their number.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (buffer), DEMILL_ERR_FORMAT
+ *          (not a checkpoint, truncated, corrupt, or of a newer format
+ *          version) or DEMILL_ERR_OUT_OF_MEMORY. On failure the world is
+ *          unchanged. */
 DEMILL_API demill_status demill_world_load_buffer(demill_world *world, const void *buffer,
                                                   size_t size);
 /** @} */
@@ -121,6 +135,8 @@ DEMILL_API demill_status demill_world_load_buffer(demill_world *world, const voi
  *  DEMILL_KIND_WALL (the walls added with demill_wall_add_plane(), in the
  *  order of their slots: a new wall may take the slot of a removed one; the
  *  drum's own surfaces are not walls) or DEMILL_KIND_DRUM (none or one).
+ *  @param world    the world.
+ *  @param kind     a DEMILL_KIND_* constant.
  *  @param out      capacity ids, or NULL to ask the count.
  *  @param capacity ids out can hold.
  *  @param count    receives the number of objects (may be NULL if out is

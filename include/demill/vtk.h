@@ -1,5 +1,6 @@
-/* demill/vtk.h: output for ParaView and other VTK tools: the particles and
- * the walls as VTK XML files, one at a time or as a time series.
+/** @file demill/vtk.h
+ * @brief Output for ParaView and other VTK tools: the particles and the walls
+ * as VTK XML files, one at a time or as a time series.
  *
  * Files are VTK XML (version 1.0) with their arrays in one block of raw
  * binary appended data (UInt64 headers, the machine's byte order, which the
@@ -13,16 +14,19 @@
  * The particle file (.vtu, an unstructured grid) has one vertex cell per
  * particle, at its centre, in id order (demill_particles_read_ids()), and
  * these point arrays:
- *   id                UInt64   the particle's id
- *   radius            Float64  m
- *   mass              Float64  kg
- *   material          Int32    the material's index: 0 for the first material
- *                              the world created, 1 for the second, ...
- *   velocity          Float64  3 components, m/s
- *   angular_velocity  Float64  3 components, rad/s (2D: x = y = 0)
- *   force             Float64  3 components, N, as DEMILL_PARTICLE_FORCE
- *   torque            Float64  3 components, N m, as DEMILL_PARTICLE_TORQUE
- *   angle             Float64  rad, 2D worlds only (DEMILL_PARTICLE_ANGLE)
+ *
+ * | array            | type    | content                                       |
+ * |------------------|---------|-----------------------------------------------|
+ * | id               | UInt64  | the particle's id                             |
+ * | radius           | Float64 | m                                             |
+ * | mass             | Float64 | kg                                            |
+ * | material         | Int32   | the material's index: 0 for the first material the world created, 1 for the second, ... |
+ * | velocity         | Float64 | 3 components, m/s                             |
+ * | angular_velocity | Float64 | 3 components, rad/s (2D: x = y = 0)           |
+ * | force            | Float64 | 3 components, N, as DEMILL_PARTICLE_FORCE     |
+ * | torque           | Float64 | 3 components, N m, as DEMILL_PARTICLE_TORQUE  |
+ * | angle            | Float64 | rad, 2D worlds only (DEMILL_PARTICLE_ANGLE)   |
+ *
  * Forces and torques are those of the last force evaluation (after a step,
  * or demill_world_step(world, 0)); before any they are 0. In a 2D world
  * every z is 0. In ParaView, show the particles with the Point Gaussian
@@ -43,12 +47,17 @@
  *     library's lifter polygons reach into the shell), at its current angle;
  *     in 3D a prism along the drum's length (a quadrilateral per side and the
  *     section at each end), in 2D the section as a polygon.
+ *
  * Polygons face the particles: their vertices run counter-clockwise seen
  * from the side the particles are on (for lifters, from outside them).
  * Each cell (polygon or line) carries three arrays of cell data:
- *   wall    UInt64  the id of the wall, or of the drum for its parts
- *   part    Int32   0 plane wall, 1 drum shell, 2 drum end cap, 3 lifter
- *   lifter  Int32   the lifter's index, -1 for other parts
+ *
+ * | array  | type   | content                                               |
+ * |--------|--------|-------------------------------------------------------|
+ * | wall   | UInt64 | the id of the wall, or of the drum for its parts      |
+ * | part   | Int32  | 0 plane wall, 1 drum shell, 2 drum end cap, 3 lifter  |
+ * | lifter | Int32  | the lifter's index, -1 for other parts                |
+ *
  * Both files carry the world's time as field data (TimeValue).
  *
  * Writing changes nothing in the world (not even its last-error message,
@@ -69,6 +78,7 @@ typedef struct demill_vtk_series demill_vtk_series;
 
 /** Writes every particle of the world to a VTK XML unstructured grid file
  *  (.vtu; see the top of this header for its arrays).
+ *  @param world the world (not changed).
  *  @param path the file to write, replaced if it exists.
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (path),
  *          DEMILL_ERR_OUT_OF_MEMORY or DEMILL_ERR_IO (the file cannot be
@@ -80,8 +90,11 @@ DEMILL_API demill_status demill_vtk_write_particles(demill_world *world, const c
  *  angle) to a VTK XML polygonal data file (.vtp; see the top of this header
  *  for its cells and arrays). A world without walls gives a valid file with
  *  no cells.
- *  @param path the file to write, replaced if it exists.
- *  @return as demill_vtk_write_particles(). */
+ *  @param world the world (not changed).
+ *  @param path  the file to write, replaced if it exists.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (path),
+ *          DEMILL_ERR_OUT_OF_MEMORY or DEMILL_ERR_IO (as for
+ *          demill_vtk_write_particles()). */
 DEMILL_API demill_status demill_vtk_write_walls(demill_world *world, const char *path);
 
 /** Starts a time series for ParaView. With prefix "out/mill" the series is
@@ -95,6 +108,8 @@ DEMILL_API demill_status demill_vtk_write_walls(demill_world *world, const char 
  *  even if the program stops at any moment. The directory must exist; existing
  *  files of the same names are replaced. The series holds only its names
  *  and the frames' times; it may be written from any world.
+ *  @param world  the world (not changed); it only holds the last-error
+ *                message.
  *  @param prefix the path of the files without their endings; its last
  *                part (after the last '/') must not be empty.
  *  @param out    receives the series (NULL on failure); free it with
@@ -112,13 +127,16 @@ DEMILL_API demill_status demill_vtk_series_open(demill_world *world, const char 
  *  increasing times, as ParaView orders them by time. If it fails, the
  *  frame is not added (the .pvd stays as it was) and the next frame reuses
  *  its number.
+ *  @param world  the world (not changed).
+ *  @param series the series.
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (series),
  *          DEMILL_ERR_OUT_OF_MEMORY or DEMILL_ERR_IO. */
 DEMILL_API demill_status demill_vtk_series_write(demill_world *world, demill_vtk_series *series);
 
 /** Frees a series. Its files stay complete as they are (the .pvd is up to
  *  date after every frame, so there is nothing left to write). NULL is
- *  ignored. */
+ *  ignored.
+ *  @param series the series, or NULL. */
 DEMILL_API void demill_vtk_series_close(demill_vtk_series *series);
 
 #ifdef __cplusplus

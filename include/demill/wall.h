@@ -1,4 +1,5 @@
-/* demill/wall.h: walls, bodies of infinite mass moved by a prescribed motion.
+/** @file demill/wall.h
+ * @brief Walls, bodies of infinite mass moved by a prescribed motion.
  *
  * A wall is not moved by the particles. Contact with a wall uses the contact
  * model of the pair (particle material, wall material) with R* = R and m* = m
@@ -30,6 +31,11 @@ enum {
  *  it. In a 2D world the plane is a line: z components must be 0.
  *  The wall is at rest until demill_wall_set_motion() is called; its centre of
  *  rotation is `point`.
+ *  @param world    the world.
+ *  @param material the wall's material.
+ *  @param point    a point on the plane, m.
+ *  @param normal   the plane's normal, towards the particles' side.
+ *  @param[out] out receives the wall's id.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (zero normal),
  *          DEMILL_ERR_DIMENSION or DEMILL_ERR_OUT_OF_MEMORY. */
@@ -38,6 +44,8 @@ DEMILL_API demill_status demill_wall_add_plane(demill_world *world, demill_id ma
                                                demill_id *out);
 
 /** Removes a wall. Its id becomes invalid; contacts with it end.
+ *  @param world the world.
+ *  @param wall  the wall's id.
  *  @return DEMILL_OK or DEMILL_ERR_INVALID_HANDLE. */
 DEMILL_API demill_status demill_wall_remove(demill_world *world, demill_id wall);
 
@@ -47,6 +55,12 @@ DEMILL_API demill_status demill_wall_remove(demill_world *world, demill_id wall)
  *  velocity means zero, NULL centre keeps the current centre. Positions are
  *  advanced exactly (no drift) from the moment of this call. In 2D, velocity
  *  and centre must have z = 0 and the angular velocity only a z component.
+ *  @param world            the world.
+ *  @param wall             the wall's id.
+ *  @param velocity         velocity of the centre, m/s, or NULL for 0.
+ *  @param angular_velocity angular velocity about the centre, rad/s, or NULL
+ *                          for 0.
+ *  @param centre           the centre of rotation, m, or NULL to keep it.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE or
  *          DEMILL_ERR_DIMENSION. */
 DEMILL_API demill_status demill_wall_set_motion(demill_world *world, demill_id wall,
@@ -54,7 +68,11 @@ DEMILL_API demill_status demill_wall_set_motion(demill_world *world, demill_id w
                                                 const double angular_velocity[3],
                                                 const double centre[3]);
 
-/** Reads a wall field (3 doubles) into out.
+/** Reads a wall field.
+ *  @param world    the world.
+ *  @param wall     the wall's id.
+ *  @param field    a DEMILL_WALL_* field.
+ *  @param[out] out receives the field's 3 doubles.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY or
  *          DEMILL_ERR_NULL_POINTER. */
 DEMILL_API demill_status demill_wall_get(const demill_world *world, demill_id wall,

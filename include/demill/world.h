@@ -1,4 +1,5 @@
-/* demill/world.h: creating, configuring and stepping a simulation world. */
+/** @file demill/world.h
+ * @brief Creating, configuring and stepping a simulation world. */
 #ifndef DEMILL_WORLD_H
 #define DEMILL_WORLD_H
 
@@ -39,12 +40,15 @@ enum {
 enum {
     /** Time step Δt in s, > 0. Default 1e-5. */
     DEMILL_WORLD_TIME_STEP = 100,
-    /** Gravity vector components in m/s². Default (0, -9.81, 0). In a 2D
-     *  world the z component must stay 0. */
+    /** Gravity vector, x component in m/s². Default 0. */
     DEMILL_WORLD_GRAVITY_X = 101,
+    /** Gravity vector, y component in m/s². Default -9.81. */
     DEMILL_WORLD_GRAVITY_Y = 102,
+    /** Gravity vector, z component in m/s². Default 0; in a 2D world it must
+     *  stay 0. */
     DEMILL_WORLD_GRAVITY_Z = 103,
-    /** DEMILL_INTEGRATOR_*. Default DEMILL_INTEGRATOR_VELOCITY_VERLET. */
+    /** The integrator, DEMILL_INTEGRATOR_*. Default
+     *  DEMILL_INTEGRATOR_VELOCITY_VERLET. */
     DEMILL_WORLD_INTEGRATOR = 104,
     /** Verlet skin of the neighbour list as a fraction of the largest particle
      *  radius, in [0.01, 10]. Larger skins rebuild less often but test more
@@ -108,7 +112,7 @@ enum {
      *  1 % of the run time; at 100, 4 %). */
     DEMILL_WORLD_WATCHDOG_INTERVAL = 114,
 
-    /** 2 or 3. */
+    /** The world's dimension, 2 or 3. */
     DEMILL_WORLD_DIMENSION = 150,
     /** Number of steps taken since creation. */
     DEMILL_WORLD_STEP_COUNT = 151,
@@ -133,34 +137,46 @@ enum {
 /** Creates an empty world of the given dimension (2 or 3) with default
  *  parameters: gravity (0, -9.81, 0), time step 1e-5 s, velocity Verlet.
  *  @param dimension 2 or 3.
- *  @param out receives the world; set to NULL on failure.
+ *  @param[out] out  receives the world; set to NULL on failure.
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_INVALID_VALUE (bad
  *          dimension) or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_world_create(int32_t dimension, demill_world **out);
 
-/** Frees a world and everything it owns. NULL is ignored. Ids of the world
- *  become meaningless. */
+/** Frees a world and everything it owns. Ids of the world become
+ *  meaningless.
+ *  @param world the world to free; NULL is ignored. */
 DEMILL_API void demill_world_destroy(demill_world *world);
 
-/** The message of the last error reported by a function called on this world,
- *  naming the argument, particle or parameter at fault; "" if none. The
- *  string stays valid until the next call on the world. NULL or a pointer that
- *  is not a world gives a static message saying so. */
+/** The message of the last error reported by a function called on this
+ *  world.
+ *  @param world the world, or NULL.
+ *  @return the message, naming the argument, particle or parameter at fault;
+ *          "" if none. The string stays valid until the next call on the
+ *          world. NULL or a pointer that is not a world gives a static
+ *          message saying so; never NULL. */
 DEMILL_API const char *demill_world_last_error(const demill_world *world);
 
-/** Sets a world parameter (DEMILL_WORLD_* keys below 150).
+/** Sets a world parameter.
+ *  @param world the world.
+ *  @param key   a settable DEMILL_WORLD_* key (below 150).
+ *  @param value the new value, in the key's unit (demill_param_unit()).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NOT_FINITE,
  *          DEMILL_ERR_INVALID_VALUE (out of bounds, or not a whole number for
- *          a choice) or DEMILL_ERR_DIMENSION (e.g. gravity z in 2D). */
+ *          a choice), DEMILL_ERR_DIMENSION (e.g. gravity z in 2D) or
+ *          DEMILL_ERR_UNSUPPORTED (more than one thread in a library built
+ *          without OpenMP). */
 DEMILL_API demill_status demill_world_set(demill_world *world, int32_t key, double value);
 
-/** Reads a world parameter (any DEMILL_WORLD_* key) into *value.
+/** Reads a world parameter.
+ *  @param world      the world.
+ *  @param key        any DEMILL_WORLD_* key.
+ *  @param[out] value receives the value.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER or
  *          DEMILL_ERR_UNKNOWN_KEY. */
 DEMILL_API demill_status demill_world_get(const demill_world *world, int32_t key, double *value);
 
-/** Advances the world by `steps` time steps.
+/** Advances the world by a number of time steps.
  *
  *  Before the first step every pair of materials in use (by particles or
  *  walls) must have a contact model (demill_pair_set() with
@@ -171,6 +187,8 @@ DEMILL_API demill_status demill_world_get(const demill_world *world, int32_t key
  *  With a progress callback set (demill_world_set_progress()), the call
  *  reports to it as it goes, and the callback may stop it.
  *
+ *  @param world the world.
+ *  @param steps the number of steps of DEMILL_WORLD_TIME_STEP to take.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NO_CONTACT_MODEL,
  *          DEMILL_ERR_INVALID_VALUE, DEMILL_ERR_OUT_OF_MEMORY,
  *          DEMILL_ERR_UNSTABLE or DEMILL_ERR_INTERRUPTED. If memory runs out
@@ -232,6 +250,7 @@ typedef int32_t (*demill_progress_fn)(void *user_data, uint64_t steps_done, uint
  *  demill_world_step(). The callback is not part of the simulated state:
  *  the watchdog's return to a good state keeps the current callback.
  *
+ *  @param world       the world.
  *  @param fn          the callback, or NULL to remove it (then user_data and
  *                     every_steps are ignored).
  *  @param user_data   passed to fn as it is; may be NULL.
@@ -254,6 +273,7 @@ DEMILL_API demill_status demill_world_set_progress(demill_world *world, demill_p
  *  of each particle material bounds the step too (0.2 of it, as is usual).
  *  The suggestion is the smallest of: contact time / steps_per_contact,
  *  0.2 Rayleigh time (Hertz) and 0.2 of the stability limit.
+ *  @param world             the world.
  *  @param impact_speed      the largest impact speed expected, m/s; 0 lets
  *                           the library estimate it from the scene (twice the
  *                           fastest particle, the speed of a fall through the
@@ -262,14 +282,15 @@ DEMILL_API demill_status demill_world_set_progress(demill_world *world, demill_p
  *  @param steps_per_contact how finely to resolve the shortest contact, >= 1;
  *                           0 takes 50 (about 1 % in restitution with velocity
  *                           Verlet, see docs/physics.md §8).
- *  @param suggested         receives the suggested Δt, s.
- *  @param critical          receives the stability limit of the explicit
+ *  @param[out] suggested    receives the suggested Δt, s.
+ *  @param[out] critical     receives the stability limit of the explicit
  *                           integrators, s (may be NULL).
- *  @param contact_time      receives the shortest contact duration, s (may be
+ *  @param[out] contact_time receives the shortest contact duration, s (may be
  *                           NULL).
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (suggested), DEMILL_ERR_NOT_FINITE,
  *          DEMILL_ERR_INVALID_VALUE (a negative argument, or a world without
- *          particles) or DEMILL_ERR_NO_CONTACT_MODEL. Changes nothing. */
+ *          particles), DEMILL_ERR_NO_CONTACT_MODEL or
+ *          DEMILL_ERR_OUT_OF_MEMORY. Changes nothing. */
 DEMILL_API demill_status demill_world_suggest_time_step(demill_world *world, double impact_speed,
                                                         double steps_per_contact,
                                                         double *suggested, double *critical,

@@ -14,7 +14,7 @@ bulk data::
         print(w.particles.positions)
 
 Every failing call raises a :class:`demill.Error` subclass carrying the
-status code and the library's message. See python/README.md.
+status code and the library's message. See docs/getting-started-python.md.
 """
 
 import ctypes
