@@ -140,7 +140,7 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
          * integrator's second kick covers */
         const double hm = (1.0 - reach) * dt_hist / mstar;
         const double implicit = (vn + hm * (fel - hin[HT])) / (1.0 + hm * cn);
-        vnd = !pp->clamp & (hin[HT + 1] > 0.0) ? implicit : vn;
+        vnd = (!pp->clamp & (hin[HT + 1] > 0.0)) ? implicit : vn;
     }
     double fn = fel - cn * vnd;
     fn = (pp->clamp & (fn < 0.0)) ? 0.0 : fn;

@@ -532,6 +532,11 @@ double dm_drum_omega_at(const dm_drum *d, double time, double *theta);
 double dm_drum_target_speed(const demill_world *w);
 void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall_kind, double energy);
 demill_status dm_drum_prepare(demill_world *w);
+/* Whether a lifter is valid in a drum of this diameter, as
+ * demill_drum_add_lifter() checks it: finite, its height, width and face
+ * angle within their keys' bounds, not reaching the axis, not wider than the
+ * drum, with a top left by its face angle. */
+demill_status dm_drum_check_lifter(demill_world *w, const dm_lifter_spec *l, double diameter);
 
 /* integrate/integrate.c */
 demill_status dm_integrate(demill_world *w, uint64_t steps);

@@ -594,7 +594,19 @@ static demill_status check_walls(demill_world *t)
 
 static demill_status check_drum(demill_world *t)
 {
-    const dm_spectrum *sp = &t->drum.spectrum;
+    const dm_drum *d = &t->drum;
+    if (d->alive) {
+        demill_status s;
+        double v;
+        for (int32_t key = 400; key < 450; key++)
+            if (demill_param_name(key) && demill_drum_get(t, dm_drum_id(t), key, &v) == DEMILL_OK &&
+                (s = check_param(t, key, v)))
+                return s;
+        for (uint32_t k = 0; k < d->nlifters; k++)
+            if ((s = dm_drum_check_lifter(t, &d->lifters[k], d->diameter)))
+                return s;
+    }
+    const dm_spectrum *sp = &d->spectrum;
     if (t->events != (sp->counts != NULL))
         return dm_fail(t, DEMILL_ERR_FORMAT, "the collision spectrum is half there");
     if (!sp->counts)

@@ -130,11 +130,15 @@ static void contacts_copy(demill_world *w, int save)
         for (int k = 0; k < DM_KERNELS; k++) {
             dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
             const size_t nh = (size_t)b->n * (size_t)b->hs;
+            if (!b->n)
+                continue; /* (nothing to copy, and maybe no room allocated at all) */
             if (save) {
-                memcpy(R->hist + h, b->hist, nh * sizeof *b->hist);
+                if (nh)
+                    memcpy(R->hist + h, b->hist, nh * sizeof *b->hist);
                 memcpy(R->on + o, b->on, b->n);
             } else {
-                memcpy(b->hist, R->hist + h, nh * sizeof *b->hist);
+                if (nh)
+                    memcpy(b->hist, R->hist + h, nh * sizeof *b->hist);
                 memcpy(b->on, R->on + o, b->n);
             }
             h += nh;
@@ -149,10 +153,12 @@ static void contacts_copy(demill_world *w, int save)
     const size_t nc = sp->counts ? dm_spectrum_counters(sp) * sizeof *sp->counts : 0;
     if (save) {
         R->tally = w->tally;
-        memcpy(R->spectrum, sp->counts, nc);
+        if (nc)
+            memcpy(R->spectrum, sp->counts, nc);
     } else {
         w->tally = R->tally;
-        memcpy(sp->counts, R->spectrum, nc);
+        if (nc)
+            memcpy(sp->counts, R->spectrum, nc);
     }
 }
 

@@ -207,9 +207,19 @@ static void even_lifters(dm_drum *d, uint32_t n)
                                          d->lifter_w, d->lifter_face};
 }
 
-/* Whether lifters fit inside the shell: not reaching the axis. */
-static demill_status check_lifter(demill_world *w, const dm_lifter_spec *l, double diameter)
+demill_status dm_drum_check_lifter(demill_world *w, const dm_lifter_spec *l, double diameter)
 {
+    const double v[4] = {l->angle, l->height, l->width, l->face};
+    static const char *names[4] = {"angle", "height", "width", "face_angle"};
+    for (int k = 0; k < 4; k++)
+        if (!isfinite(v[k]))
+            return dm_fail(w, DEMILL_ERR_NOT_FINITE, "drum: lifter %s = %g is not finite",
+                           names[k], v[k]);
+    demill_status s;
+    if ((s = dm_check_value(w, DEMILL_DRUM_LIFTER_HEIGHT, l->height)) ||
+        (s = dm_check_value(w, DEMILL_DRUM_LIFTER_WIDTH, l->width)) ||
+        (s = dm_check_value(w, DEMILL_DRUM_LIFTER_FACE_ANGLE, l->face)))
+        return s;
     if (l->height >= 0.5 * diameter)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                        "drum: lifter height %g m reaches the axis of a drum of diameter %g m",
@@ -346,7 +356,7 @@ DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_
             d->even_count)
             even_lifters(d, d->even_count);
         for (uint32_t k = 0; k < d->nlifters && !s; k++)
-            s = check_lifter(w, &d->lifters[k], d->diameter);
+            s = dm_drum_check_lifter(w, &d->lifters[k], d->diameter);
         if (s || (s = drum_walls_build(w))) {
             *d = saved;
             return s;
@@ -364,23 +374,13 @@ DEMILL_API demill_status demill_drum_add_lifter(demill_world *w, demill_id drum,
     demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
     if (s)
         return s;
-    const double v[4] = {angle, height, width, face_angle};
-    static const char *names[4] = {"angle", "height", "width", "face_angle"};
-    for (int k = 0; k < 4; k++)
-        if (!isfinite(v[k]))
-            return dm_fail(w, DEMILL_ERR_NOT_FINITE, "drum_add_lifter: %s = %g is not finite",
-                           names[k], v[k]);
-    if ((s = dm_check_value(w, DEMILL_DRUM_LIFTER_HEIGHT, height)) ||
-        (s = dm_check_value(w, DEMILL_DRUM_LIFTER_WIDTH, width)) ||
-        (s = dm_check_value(w, DEMILL_DRUM_LIFTER_FACE_ANGLE, face_angle)))
-        return s;
     dm_drum *d = &w->drum, saved = *d;
+    const dm_lifter_spec l = {angle, height, width, face_angle};
+    if ((s = dm_drum_check_lifter(w, &l, d->diameter)))
+        return s;
     if (d->nlifters == DM_MAX_LIFTERS)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_add_lifter: at most %d lifters",
                        DM_MAX_LIFTERS);
-    dm_lifter_spec l = {angle, height, width, face_angle};
-    if ((s = check_lifter(w, &l, d->diameter)))
-        return s;
     d->lifters[d->nlifters++] = l;
     d->even_count = 0;
     if ((s = drum_walls_build(w))) {
@@ -473,10 +473,12 @@ void dm_drum_measure(demill_world *w)
         d->rev.power_cm_sum += power_cm(w, d->omega);
         d->rev.power_cm_count++;
     }
-    const uint64_t done = (uint64_t)(fabs(d->theta - d->theta_start) / TWO_PI);
-    if (done > d->revolutions) {
+    /* whole turns since the start, counted in doubles (at any finite speed
+     * a drum may turn more times than an integer holds) */
+    const double turns = floor(fabs(d->theta - d->theta_start) / TWO_PI);
+    if (turns > (double)d->revolutions) {
         const double span = w->time - d->rev.t0;
-        d->revolutions = done;
+        d->revolutions = turns < 0x1p64 ? (uint64_t)turns : UINT64_MAX;
         d->mean_power = d->rev.energy_in / span;
         d->mean_power_cm =
             d->rev.power_cm_count ? d->rev.power_cm_sum / d->rev.power_cm_count : NAN;

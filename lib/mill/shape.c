@@ -56,7 +56,7 @@ void dm_charge_shape(const demill_world *w, double angles[3])
     const double width = 2.0 * DM_PI / DM_SHAPE_BINS;
     for (uint32_t i = 0; i < P->n; i++) {
         const double x = P->x[D * i], y = P->x[D * i + 1], r = sqrt(x * x + y * y);
-        if (r <= inner || r >= R)
+        if (!(r > inner && r < R)) /* (also a particle flown off to inf or NaN) */
             continue;
         int b = (int)floor((charge_angle(x, y, s) + DM_PI) / width);
         bins[b < 0 ? 0 : b >= DM_SHAPE_BINS ? DM_SHAPE_BINS - 1 : b]++;

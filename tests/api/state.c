@@ -454,6 +454,60 @@ START_TEST(corruption_behind_a_repaired_checksum_never_crashes)
 }
 END_TEST
 
+/* A checkpoint is held to the bounds the API holds a drum to: a drum value
+ * or a lifter that demill_drum_set() or demill_drum_add_lifter() would
+ * refuse, written into a checkpoint behind a repaired checksum, is refused
+ * on load (before, the charge-shape measurement read such a lifter as
+ * spanning more than the whole circle, out of its bins). */
+START_TEST(drum_values_the_api_refuses_are_refused)
+{
+    demill_world *w, *target;
+    demill_id liner, drum;
+    ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+    ck_assert_int_eq(demill_world_create(3, &target), DEMILL_OK);
+    DM_OK(w, demill_material_create(w, &liner));
+    DM_OK(w, demill_drum_create(w, liner, &drum));
+    DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_DIAMETER, 0.1));
+    DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_FILL_POROSITY, 0.377));
+    const double width = 0.0123;
+    DM_OK(w, demill_drum_add_lifter(w, drum, 0.3, 0.0071, width, 0.0));
+    bytes good = checkpoint_of(w), before = checkpoint_of(target);
+    /* each value is in the payload once; put there what the API refuses */
+    const struct {
+        double value, bad;
+        const char *word;
+    } cases[] = {
+        {width, 0.2, "lifter width 0.2 m exceeds the diameter"},
+        {width, -1.0, "drum.lifter_width"},
+        {width, NAN, "not finite"},
+        {0.0071, 0.06, "reaches the axis"},
+        {0.377, 1.5, "drum.fill_porosity"},
+    };
+    unsigned char *bad = malloc(good.n);
+    ck_assert_ptr_nonnull(bad);
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        size_t at = 0, found = 0;
+        for (size_t k = 32; k + 8 <= good.n; k++)
+            if (!memcmp(good.b + k, &cases[c].value, 8)) {
+                at = k;
+                found++;
+            }
+        ck_assert_uint_eq(found, 1);
+        memcpy(bad, good.b, good.n);
+        memcpy(bad + at, &cases[c].bad, 8);
+        dm_test_ckpt_repair(bad, good.n);
+        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, cases[c].word, cases[c].word);
+    }
+    /* unchanged, it loads */
+    DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
+    free(bad);
+    free(good.b);
+    free(before.b);
+    demill_world_destroy(w);
+    demill_world_destroy(target);
+}
+END_TEST
+
 START_TEST(file_errors)
 {
     demill_world *w = small();
@@ -521,6 +575,7 @@ int main(int argc, char **argv)
         {"ids", listing_ids, 1},
         {"refused", truncated_and_corrupt_checkpoints_are_refused, 1},
         {"repaired", corruption_behind_a_repaired_checksum_never_crashes, 1},
+        {"drum", drum_values_the_api_refuses_are_refused, 1},
         {"files", file_errors, 1},
     };
     for (size_t k = 0; k < sizeof tests / sizeof tests[0]; k++) {
