@@ -11,7 +11,9 @@
 int dm_grow_arrays(void **const *arrays, const size_t *sizes, size_t n, size_t cap)
 {
     for (size_t k = 0; k < n; k++) {
-        void *q = realloc(*arrays[k], cap * sizes[k]);
+        /* never 0 bytes: realloc(p, 0) may free p and return NULL */
+        const size_t bytes = cap * sizes[k];
+        void *q = realloc(*arrays[k], bytes ? bytes : 1);
         if (!q)
             return -1;
         *arrays[k] = q;

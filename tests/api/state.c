@@ -508,6 +508,58 @@ START_TEST(drum_values_the_api_refuses_are_refused)
 }
 END_TEST
 
+/* The state of an empty world (no particle room at all) restored into a
+ * world whose refinement integrator has room for particles: the room shrinks
+ * to none (before, shrinking it to 0 bytes freed it and reported running out
+ * of memory, and the next step with particles used what was freed), and the
+ * world then steps, empty and with particles again: a ball falls freely,
+ * y = y0 - g t^2 / 2 (the refinement is exact for constant forces). */
+START_TEST(empty_state_into_a_refining_world)
+{
+    demill_world *w, *empty;
+    demill_id steel, ball;
+    for (int kind = 0; kind < 2; kind++) { /* 0: snapshot, 1: checkpoint */
+        ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+        ck_assert_int_eq(demill_world_create(3, &empty), DEMILL_OK);
+        DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR,
+                                  DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT));
+        DM_OK(empty, demill_world_set(empty, DEMILL_WORLD_INTEGRATOR,
+                                      DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT));
+        DM_OK(w, demill_material_create(w, &steel));
+        DM_OK(w, demill_pair_set(w, steel, steel, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
+        const double x[3] = {0, 1, 0}, r = 0.01;
+        DM_OK(w, demill_particles_add(w, steel, 1, x, &r, NULL, 0, &ball));
+        DM_OK(w, demill_world_step(w, 10));
+        if (kind == 0) {
+            demill_snapshot *snap;
+            DM_OK(empty, demill_snapshot_take(empty, &snap));
+            DM_OK(w, demill_snapshot_restore(w, snap));
+            demill_snapshot_free(snap);
+        } else {
+            bytes b = checkpoint_of(empty);
+            DM_OK(w, demill_world_load_buffer(w, b.b, b.n));
+            free(b.b);
+        }
+        DM_OK(w, demill_world_step(w, 10));
+        DM_OK(w, demill_material_create(w, &steel));
+        DM_OK(w, demill_pair_set(w, steel, steel, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
+        DM_OK(w, demill_particles_add(w, steel, 1, x, &r, NULL, 0, &ball));
+        double dt, t0, t1, y[3], gy;
+        DM_OK(w, demill_world_get(w, DEMILL_WORLD_TIME_STEP, &dt));
+        DM_OK(w, demill_world_get(w, DEMILL_WORLD_TIME, &t0));
+        DM_OK(w, demill_world_step(w, 1000));
+        DM_OK(w, demill_world_get(w, DEMILL_WORLD_TIME, &t1));
+        DM_OK(w, demill_particle_get(w, ball, DEMILL_PARTICLE_POSITION, y));
+        DM_OK(w, demill_world_get(w, DEMILL_WORLD_GRAVITY_Y, &gy));
+        const double t = t1 - t0, expect = 1.0 + 0.5 * gy * t * t;
+        ck_assert_double_eq_tol(t, 1000 * dt, 1e-12);
+        ck_assert_double_eq_tol(y[1], expect, 1e-12);
+        demill_world_destroy(w);
+        demill_world_destroy(empty);
+    }
+}
+END_TEST
+
 START_TEST(file_errors)
 {
     demill_world *w = small();
@@ -576,6 +628,7 @@ int main(int argc, char **argv)
         {"refused", truncated_and_corrupt_checkpoints_are_refused, 1},
         {"repaired", corruption_behind_a_repaired_checksum_never_crashes, 1},
         {"drum", drum_values_the_api_refuses_are_refused, 1},
+        {"empty", empty_state_into_a_refining_world, 1},
         {"files", file_errors, 1},
     };
     for (size_t k = 0; k < sizeof tests / sizeof tests[0]; k++) {
