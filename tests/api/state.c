@@ -355,6 +355,17 @@ static void refused(demill_world *w, bytes before, const unsigned char *bad, siz
     free(now.b);
 }
 
+/* Frees what a refusal test made: its two worlds, the good checkpoint, the
+ * target's before loading, and the corrupted copy. */
+static void release(demill_world *w, demill_world *target, bytes good, bytes before, void *bad)
+{
+    free(bad);
+    free(good.b);
+    free(before.b);
+    demill_world_destroy(w);
+    demill_world_destroy(target);
+}
+
 /* A small scene: a few particles touching a wall and each other. */
 static demill_world *small(void)
 {
@@ -401,11 +412,7 @@ START_TEST(truncated_and_corrupt_checkpoints_are_refused)
     /* the good one still loads, and then equals its source */
     DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
     same_observed(w, target, "loaded");
-    free(bad);
-    free(good.b);
-    free(before.b);
-    demill_world_destroy(w);
-    demill_world_destroy(target);
+    release(w, target, good, before, bad);
 }
 END_TEST
 
@@ -500,11 +507,7 @@ START_TEST(drum_values_the_api_refuses_are_refused)
     }
     /* unchanged, it loads */
     DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
-    free(bad);
-    free(good.b);
-    free(before.b);
-    demill_world_destroy(w);
-    demill_world_destroy(target);
+    release(w, target, good, before, bad);
 }
 END_TEST
 
