@@ -124,8 +124,7 @@ demill_status dm_state_copy(demill_world *dst, const demill_world *src)
     if (!same_dim) { /* the scratch is laid out for a dimension: start it afresh */
         dm_results_free(dst);
         memset(&dst->res, 0, sizeof dst->res);
-        dm_refine_free(dst);
-        memset(&dst->refine, 0, sizeof dst->refine);
+        dm_refine_free(dst); /* (which leaves it zeroed) */
     }
     return DEMILL_OK;
 }
