@@ -48,16 +48,9 @@ static demill_world *mill3d(int integrator)
     demill_id balls, liner, drum;
     ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrator));
-    DM_OK(w, demill_material_create(w, &balls));
-    DM_OK(w, demill_material_create(w, &liner));
+    dm_test_mill_materials(w, &balls, &liner);
     const demill_id mats[2] = {balls, liner};
     for (int k = 0; k < 2; k++) {
-        DM_OK(w, demill_material_set(w, mats[k], DEMILL_MATERIAL_DENSITY, 7800));
-        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ));
-        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_DAMPING,
-                                 DEMILL_DAMPING_RESTITUTION));
-        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_TANGENTIAL,
-                                 DEMILL_TANGENTIAL_MINDLIN));
         DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_ROLLING,
                                  DEMILL_ROLLING_CONSTANT_TORQUE));
         DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_ROLLING_FRICTION, 0.05));

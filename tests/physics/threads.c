@@ -48,17 +48,7 @@ static int run(int dim, int integrator, uint64_t steps, int threads, outcome *o)
     }
     DM_OK(w, st);
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrator));
-    DM_OK(w, demill_material_create(w, &balls));
-    DM_OK(w, demill_material_create(w, &liner));
-    const demill_id mats[2] = {balls, liner};
-    for (int k = 0; k < 2; k++) {
-        DM_OK(w, demill_material_set(w, mats[k], DEMILL_MATERIAL_DENSITY, 7800));
-        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ));
-        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_DAMPING,
-                                 DEMILL_DAMPING_RESTITUTION));
-        DM_OK(w, demill_pair_set(w, balls, mats[k], DEMILL_PAIR_TANGENTIAL,
-                                 DEMILL_TANGENTIAL_MINDLIN));
-    }
+    dm_test_mill_materials(w, &balls, &liner);
     DM_OK(w, demill_drum_create(w, liner, &drum));
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_DIAMETER, dim == 3 ? 0.2 : 0.7));
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LENGTH, 0.06));

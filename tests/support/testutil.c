@@ -14,6 +14,21 @@ demill_world *dm_test_world(int dim, int normal, int damping, demill_id *materia
     return w;
 }
 
+void dm_test_mill_materials(demill_world *w, demill_id *balls, demill_id *liner)
+{
+    DM_OK(w, demill_material_create(w, balls));
+    DM_OK(w, demill_material_create(w, liner));
+    const demill_id mats[2] = {*balls, *liner};
+    for (int k = 0; k < 2; k++) {
+        DM_OK(w, demill_material_set(w, mats[k], DEMILL_MATERIAL_DENSITY, 7800));
+        DM_OK(w, demill_pair_set(w, *balls, mats[k], DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ));
+        DM_OK(w, demill_pair_set(w, *balls, mats[k], DEMILL_PAIR_DAMPING,
+                                 DEMILL_DAMPING_RESTITUTION));
+        DM_OK(w, demill_pair_set(w, *balls, mats[k], DEMILL_PAIR_TANGENTIAL,
+                                 DEMILL_TANGENTIAL_MINDLIN));
+    }
+}
+
 int dm_test_run(Suite *s)
 {
     SRunner *sr = srunner_create(s);

@@ -30,6 +30,11 @@
  * normal and damping laws for the pair (m, m). */
 demill_world *dm_test_world(int dim, int normal, int damping, demill_id *material);
 
+/* The materials of a steel ball mill: balls and liner, both of density
+ * 7800, with Hertz contact, restitution damping and Mindlin friction for
+ * ball-ball and ball-liner (the liner-liner pair has no model). */
+void dm_test_mill_materials(demill_world *w, demill_id *balls, demill_id *liner);
+
 /* Runs a Check suite and returns the process exit status. */
 int dm_test_run(Suite *s);
 
