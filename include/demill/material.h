@@ -21,7 +21,10 @@ enum {
     /** Spring stiffness k in N/m, > 0, used by linear laws; a pair's normal
      *  stiffness is the series value k_a k_b / (k_a + k_b). Default 1e5. */
     DEMILL_MATERIAL_STIFFNESS = 203,
-    /** Coefficient of restitution e, in (0, 1]. Default 0.5. */
+    /** Coefficient of restitution e, in [0, 1]. Default 0.5. e = 0 with
+     *  the unclamped normal law (DEMILL_PAIR_CLAMP_NORMAL = 0) is critical
+     *  damping; with the clamp it would need infinite damping, which no time
+     *  step integrates (demill_world_step() says so). */
     DEMILL_MATERIAL_RESTITUTION = 204,
     /** Sliding friction coefficient μ, >= 0. Default 0.5. */
     DEMILL_MATERIAL_FRICTION = 205,
@@ -51,7 +54,9 @@ enum {
      *  damping ratio ξ, c_n = 2 ξ √(m* k_n). Hertz: the nonlinear Tsuji form
      *  c_n = 2 √(5/6) ξ √(m* S_n), S_n = 2 E* √(R* δ). ξ is chosen so that
      *  an isolated binary collision rebounds with exactly the pair's
-     *  restitution, with or without DEMILL_PAIR_CLAMP_NORMAL. */
+     *  restitution, with or without DEMILL_PAIR_CLAMP_NORMAL. Heavy damping
+     *  (small e) lowers the stable time step (see
+     *  demill_world_suggest_time_step()). */
     DEMILL_DAMPING_RESTITUTION = 2
 };
 
@@ -90,7 +95,7 @@ enum {
     DEMILL_PAIR_DAMPING = 301,     /**< normal damping law, DEMILL_DAMPING_* */
     DEMILL_PAIR_TANGENTIAL = 302,  /**< tangential law, DEMILL_TANGENTIAL_* */
     DEMILL_PAIR_ROLLING = 303,     /**< rolling resistance law, DEMILL_ROLLING_* */
-    /** Restitution in (0, 1]; derived: mean of the two materials'. */
+    /** Restitution in [0, 1]; derived: mean of the two materials'. */
     DEMILL_PAIR_RESTITUTION = 310,
     /** Sliding friction μ >= 0; derived: mean of the two materials'. */
     DEMILL_PAIR_FRICTION = 311,

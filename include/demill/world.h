@@ -86,8 +86,13 @@ enum {
      *  number in [1, 100]. A step that has not converged by then is accepted
      *  as it stands (counted in DEMILL_WORLD_REFINE_UNCONVERGED). Default 8. */
     DEMILL_WORLD_REFINE_MAX_ITERATIONS = 111,
-    /** The stability watchdog, on (1, default) or off (0). Every
-     *  DEMILL_WORLD_WATCHDOG_INTERVAL steps it checks that positions and
+    /** The stability watchdog, on (1, default) or off (0). When a run
+     *  starts after the world was changed, it checks that the time step is
+     *  within the stability limit of every pair of materials that can meet
+     *  (see demill_world_suggest_time_step()); if not, demill_world_step()
+     *  returns DEMILL_ERR_UNSTABLE naming the pair and the largest stable
+     *  time step, and nothing changes. Every DEMILL_WORLD_WATCHDOG_INTERVAL
+     *  steps, and at the end of every call, it checks that positions and
      *  velocities are finite, that no overlap exceeds
      *  DEMILL_WORLD_WATCHDOG_OVERLAP of the smaller radius, and that no
      *  energy is being created: with energy tracking on, the energy balance
@@ -97,11 +102,16 @@ enum {
      *  state, gravity and the drum could supply. When a check fails,
      *  demill_world_step() returns DEMILL_ERR_UNSTABLE with a message naming
      *  the particle, the time and the likely cause, and the world is put back
-     *  to the last state that passed, or to the state the run started from
-     *  (kept as a copy, which costs about as much memory as the particles and
-     *  contacts, and a copy per interval). A run starting after the world was changed through
-     *  the API starts from a fresh copy, so that a failure never undoes the
-     *  caller's changes. */
+     *  to the last state that passed a check, or to where the failing call
+     *  started if that is later: no call that returned DEMILL_OK is ever
+     *  undone. (The last good state is kept as a copy, taken at every
+     *  interval's check, which costs about as much memory as the particles
+     *  and contacts; going back to a call's start steps that copy on again.)
+     *  A run starting after the world was changed through the API starts
+     *  from a fresh copy, so that a failure never undoes the caller's
+     *  changes. Off, none of this is done, except that a call whose steps
+     *  leave a position, velocity or spin that is not finite returns
+     *  DEMILL_ERR_UNSTABLE, the world left where it diverged. */
     DEMILL_WORLD_WATCHDOG = 112,
     /** The watchdog's overlap limit as a fraction of the smaller radius of a
      *  contact, in (0, 1]. Default 0.25. */
@@ -190,14 +200,19 @@ DEMILL_API demill_status demill_world_get(const demill_world *world, int32_t key
  *  @param world the world.
  *  @param steps the number of steps of DEMILL_WORLD_TIME_STEP to take.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NO_CONTACT_MODEL,
- *          DEMILL_ERR_INVALID_VALUE, DEMILL_ERR_OUT_OF_MEMORY,
+ *          DEMILL_ERR_INVALID_VALUE (also: the world's time is so large that
+ *          a time step does not advance it), DEMILL_ERR_OUT_OF_MEMORY,
  *          DEMILL_ERR_UNSTABLE or DEMILL_ERR_INTERRUPTED. If memory runs out
  *          in the middle of a run, the world holds the state after the last
- *          completed step. On DEMILL_ERR_UNSTABLE (the watchdog, see
- *          DEMILL_WORLD_WATCHDOG) the world holds the last state that passed
- *          the watchdog's check, and the message names the particle, the
- *          time and the likely cause; the caller may lower the time step and
- *          step again. On DEMILL_ERR_INTERRUPTED (the progress callback
+ *          completed step. On DEMILL_ERR_UNSTABLE (see DEMILL_WORLD_WATCHDOG)
+ *          the time step exceeds a pair's stability limit and nothing
+ *          changed, or a check failed and the world holds the last state
+ *          that passed it or the state this call started from; the message
+ *          names the pair and the limit, or the particle, the time and the
+ *          likely cause; the caller may lower the time step and step again.
+ *          With the watchdog off it means the state is no longer finite, and
+ *          the world is left so. No call returns DEMILL_OK with a position,
+ *          velocity or spin that is not finite. On DEMILL_ERR_INTERRUPTED (the progress callback
  *          asked to stop) the world holds the state after the step it was
  *          called at, a valid state from which stepping may go on; the
  *          message says at which step and time the run stopped. */
@@ -260,19 +275,27 @@ typedef int32_t (*demill_progress_fn)(void *user_data, uint64_t steps_done, uint
 DEMILL_API demill_status demill_world_set_progress(demill_world *world, demill_progress_fn fn,
                                                    void *user_data, uint64_t every_steps);
 
-/** Suggests a time step for the current scene (PHYSICS.md §8), from every
- *  pair of materials that can meet: particle materials with each other and
- *  with the materials of walls and drum, each taken with its lightest
+/** Suggests a time step for the current scene (docs/physics.md §8), from
+ *  every pair of materials that can meet: particle materials with each other
+ *  and with the materials of walls and drum, each taken with its lightest
  *  particle (smallest radius), so that m* and R* are the smallest the scene
- *  has. For a linear normal law, ω = √(k_n/m*), the contact lasts
- *  π/ω and the explicit integrators are stable for Δt < 2/ω. For a Hertz
- *  law the stiffness grows with the overlap: at the impact speed v the
- *  largest overlap is δ = (15 m* v² / (16 E* √R*))^(2/5), the contact lasts
- *  2.87 (m*² / (R* E*² v))^(1/5) and the stiffness 2 E* √(R* δ) sets
- *  the stability limit; the Rayleigh time π R √(ρ/G) / (0.1631 ν + 0.8766)
+ *  has. For a linear normal law, ω = √(k_n/m*) and the contact lasts π/ω.
+ *  For a Hertz law the stiffness grows with the overlap: at the impact speed
+ *  v the largest overlap is δ = (15 m* v² / (16 E* √R*))^(2/5), the contact
+ *  lasts 2.87 (m*² / (R* E*² v))^(1/5) and the stiffness S = 2 E* √(R* δ)
+ *  gives ω = √(S/m*); the Rayleigh time π R √(ρ/G) / (0.1631 ν + 0.8766)
  *  of each particle material bounds the step too (0.2 of it, as is usual).
- *  The suggestion is the smallest of: contact time / steps_per_contact,
- *  0.2 Rayleigh time (Hertz) and 0.2 of the stability limit.
+ *  The stability limit of a pair is the smallest over its contact's modes
+ *  of 2/(√(ω² + 4β²) + 2β), β = c/(2m) the damping rate of the mode's
+ *  dashpot c (2/ω undamped; about 1/(2ξω) for a heavy damping ratio ξ):
+ *  the normal spring and dashpot on m*; the tangential spring k_t and its
+ *  dashpot, or the regularised Coulomb dashpot, on the mass the contact
+ *  points move with their spins (1/m_a + 1/m_b + R_a²/I_a + R_b²/I_b, 2/7
+ *  of m* for spheres); the rolling resistance's dashpot on the relative
+ *  rotation. The suggestion is the smallest of: contact time /
+ *  steps_per_contact, 0.2 Rayleigh time (Hertz) and 0.2 of the stability
+ *  limit. With the watchdog on, demill_world_step() refuses a time step
+ *  beyond the stability limit of a pair that can meet.
  *  @param world             the world.
  *  @param impact_speed      the largest impact speed expected, m/s; 0 lets
  *                           the library estimate it from the scene (twice the
@@ -283,14 +306,15 @@ DEMILL_API demill_status demill_world_set_progress(demill_world *world, demill_p
  *                           0 takes 50 (about 1 % in restitution with velocity
  *                           Verlet, see docs/physics.md §8).
  *  @param[out] suggested    receives the suggested Δt, s.
- *  @param[out] critical     receives the stability limit of the explicit
- *                           integrators, s (may be NULL).
+ *  @param[out] critical     receives the smallest stability limit, s (may
+ *                           be NULL).
  *  @param[out] contact_time receives the shortest contact duration, s (may be
  *                           NULL).
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (suggested), DEMILL_ERR_NOT_FINITE,
  *          DEMILL_ERR_INVALID_VALUE (a negative argument, or a world without
- *          particles), DEMILL_ERR_NO_CONTACT_MODEL or
- *          DEMILL_ERR_OUT_OF_MEMORY. Changes nothing. */
+ *          particles), DEMILL_ERR_NO_CONTACT_MODEL, DEMILL_ERR_UNSTABLE (no
+ *          time step integrates a pair: restitution 0 with the clamped normal
+ *          law) or DEMILL_ERR_OUT_OF_MEMORY. Changes nothing. */
 DEMILL_API demill_status demill_world_suggest_time_step(demill_world *world, double impact_speed,
                                                         double steps_per_contact,
                                                         double *suggested, double *critical,

@@ -240,10 +240,16 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
 }
 
 /* Fills a contact record from the kinematics and the law's output, as seen
- * from body a (forces on a). */
+ * from body a (forces on a); without forces, only the overlap and the
+ * stored energies. */
 static void contact_record(int dim, dm_laws l, const dm_pairparam *pp, const dm_kin *q,
-                           const double *xa, const double *hist, dm_contact_eval *e)
+                           const double *xa, const double *hist, int forces, dm_contact_eval *e)
 {
+    e->delta = q->delta;
+    dm_law_stored(dim, l.normal, l.tangential, pp, q->delta, q->rstar, hist, &e->e_normal,
+                  &e->e_tangential);
+    if (!forces)
+        return;
     double h[DM_MAX_HIST];
     dm_law_out o;
     dm_law(dim, l.normal, l.damping, l.tangential, l.rolling, pp, q->n, q->delta, q->vc, q->dc,
@@ -263,15 +269,14 @@ static void contact_record(int dim, dm_laws l, const dm_pairparam *pp, const dm_
         memcpy(e->mr, o.mr, sizeof e->mr);
     else
         e->mr[2] = o.mr[0];
-    e->delta = q->delta;
-    dm_law_stored(dim, l.normal, l.tangential, pp, q->delta, q->rstar, hist, &e->e_normal,
-                  &e->e_tangential);
 }
 
 /* Calls fn for every contact (overlap > 0) at the current state, without
- * changing the world's physical state. The pair table must be resolved and
- * the wall geometry current (dm_wgeom_update). */
-void dm_contacts_visit(demill_world *w, dm_contact_visitor fn, void *ctx)
+ * changing the world's physical state; forces: with the contact's forces,
+ * point and normal (otherwise only its bodies, overlap and stored energies
+ * are given). The pair table must be resolved and the wall geometry current
+ * (dm_wgeom_update). */
+void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void *ctx)
 {
     const int D = w->dim;
     const dm_particles *P = &w->p;
@@ -284,10 +289,12 @@ void dm_contacts_visit(demill_world *w, dm_contact_visitor fn, void *ctx)
             double d[3], r2;
             if (!dm_pp_touch(D, P, i, j, d, &r2))
                 continue;
-            dm_kin q;
-            dm_pp_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, i, j, d, r2, &q);
+            dm_kin q = {.delta = P->r[i] + P->r[j] - sqrt(r2),
+                        .rstar = P->r[i] * P->r[j] / (P->r[i] + P->r[j])};
+            if (forces)
+                dm_pp_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, i, j, d, r2, &q);
             const dm_pairparam *pp = &w->ptab[P->mat[i] * w->nmat_tab + P->mat[j]];
-            contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, &e);
+            contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, forces, &e);
             e.a = dm_particle_id(w, i);
             e.b = dm_particle_id(w, j);
             fn(ctx, &e);
@@ -302,10 +309,12 @@ void dm_contacts_visit(demill_world *w, dm_contact_visitor fn, void *ctx)
             const dm_wall *wall = &w->walls[b->j[p]];
             if (!(w->wg.delta[g0 + p] > 0.0))
                 continue;
-            dm_kin q;
-            dm_pw_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, &w->wg, g0 + p, i, wall, &q);
+            dm_kin q = {.delta = w->wg.delta[g0 + p], .rstar = P->r[i]};
+            if (forces)
+                dm_pw_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, &w->wg, g0 + p, i, wall,
+                          &q);
             const dm_pairparam *pp = &w->ptab[P->mat[i] * w->nmat_tab + wall->material];
-            contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, &e);
+            contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, forces, &e);
             e.a = dm_particle_id(w, i);
             e.b = dm_wall_id(w, b->j[p]);
             fn(ctx, &e);

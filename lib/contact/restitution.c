@@ -37,6 +37,8 @@ double dm_damping_ratio(double e, int clamp)
 {
     if (e >= 1.0)
         return 0.0;
+    if (e <= 0.0) /* unclamped: critical damping, e(1) = 0; clamped: e > 0 for any finite ξ */
+        return clamp ? INFINITY : 1.0;
     if (!clamp) {
         double l = log(e);
         return -l / sqrt(DM_PI * DM_PI + l * l);

@@ -42,7 +42,7 @@ demill_status dm_energies(demill_world *w, int stored, double e[5])
     }
     demill_status s = DEMILL_OK;
     if (stored && !(s = prepare_query(w)))
-        dm_contacts_visit(w, add_stored, e + 3);
+        dm_contacts_visit(w, 0, add_stored, e + 3);
     return s;
 }
 
@@ -135,7 +135,7 @@ static demill_status read_contacts(demill_world *w, fill_ctx *f, size_t capacity
     if (s)
         return s;
     fill_ctx counter = {0};
-    dm_contacts_visit(w, fill, &counter);
+    dm_contacts_visit(w, 0, fill, &counter);
     if (count)
         *count = counter.n;
     if (!f->out && !f->a && !f->b)
@@ -143,7 +143,7 @@ static demill_status read_contacts(demill_world *w, fill_ctx *f, size_t capacity
     if (capacity < counter.n)
         return dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL, "capacity %zu, %zu contacts", capacity,
                        counter.n);
-    dm_contacts_visit(w, fill, f);
+    dm_contacts_visit(w, f->out != NULL, fill, f);
     dm_clear_error(w);
     return DEMILL_OK;
 }

@@ -319,6 +319,9 @@ typedef struct dm_watch_energy {
 typedef struct dm_watch {
     struct demill_world *good; /* the last state that passed, NULL until taken */
     uint64_t edits;            /* the world's edits when it was taken */
+    uint64_t call_start;       /* the step count when the current call started */
+    uint64_t stepped;          /* the world's edits + 1 when the time step was last found
+                                  within every pair's stability limit (0: never) */
     uint32_t countdown;        /* steps to the next check */
     dm_watch_energy start, last; /* at the start of the run and at the last check */
     double peak, pmin, pmax;     /* since the start: largest kinetic + elastic energy,
@@ -481,6 +484,16 @@ const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b);
 /* The contact kernel of two materials' model (the resolved table's), -1 for none. */
 int dm_pair_kernel(const demill_world *w, uint32_t a, uint32_t b);
 void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, double *inv_i);
+/* As dm_particle_mass(), and DEMILL_ERR_INVALID_VALUE with a message naming
+ * `who` unless the mass, the moment of inertia and their inverses are all
+ * finite and positive. */
+demill_status dm_particle_mass_checked(demill_world *w, uint32_t mat, double r, const char *who,
+                                       double *m, double *inv_i);
+
+/* core/timestep.c: DEMILL_ERR_UNSTABLE, naming the pair, unless the time
+ * step is within the stability limit of every pair of materials that can
+ * meet */
+demill_status dm_check_time_step(demill_world *w);
 
 /* contact/restitution.c */
 double dm_damping_ratio(double e, int clamp);
@@ -521,7 +534,7 @@ typedef struct dm_contact_eval {
     demill_id a, b;
 } dm_contact_eval;
 typedef void (*dm_contact_visitor)(void *ctx, const dm_contact_eval *c);
-void dm_contacts_visit(demill_world *w, dm_contact_visitor fn, void *ctx);
+void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void *ctx);
 
 /* mill/ */
 void dm_charge_shape(const demill_world *w, double angles[3]);
@@ -556,6 +569,8 @@ demill_status dm_energies(demill_world *w, int stored, double e[5]);
 
 /* integrate/watchdog.c */
 demill_status dm_watched_steps(demill_world *w, uint64_t steps);
+/* DEMILL_ERR_UNSTABLE unless every position, velocity and spin is finite. */
+demill_status dm_check_finite(demill_world *w);
 void dm_watch_free(demill_world *w);
 
 /* integrate/refine.c */

@@ -50,7 +50,7 @@ static const param_info params[] = {
     {DEMILL_MATERIAL_YOUNGS_MODULUS, "material.youngs_modulus", "Pa", 0, 1e30, 1e8, OPEN_LO},
     {DEMILL_MATERIAL_POISSON_RATIO, "material.poisson_ratio", "1", 0, 0.5, 0.3, OPEN_HI},
     {DEMILL_MATERIAL_STIFFNESS, "material.stiffness", "N/m", 0, 1e30, 1e5, OPEN_LO},
-    {DEMILL_MATERIAL_RESTITUTION, "material.restitution", "1", 0, 1, 0.5, OPEN_LO},
+    {DEMILL_MATERIAL_RESTITUTION, "material.restitution", "1", 0, 1, 0.5, 0},
     {DEMILL_MATERIAL_FRICTION, "material.friction", "1", 0, 1e6, 0.5, 0},
     {DEMILL_MATERIAL_ROLLING_FRICTION, "material.rolling_friction", "1", 0, 1e6, 0, 0},
 
@@ -58,7 +58,7 @@ static const param_info params[] = {
     {DEMILL_PAIR_DAMPING, "pair.damping", "enum", 0, 2, 0, WHOLE},
     {DEMILL_PAIR_TANGENTIAL, "pair.tangential", "enum", 0, 3, 0, WHOLE},
     {DEMILL_PAIR_ROLLING, "pair.rolling", "enum", 0, 1, 0, WHOLE},
-    {DEMILL_PAIR_RESTITUTION, "pair.restitution", "1", 0, 1, 0.5, OPEN_LO},
+    {DEMILL_PAIR_RESTITUTION, "pair.restitution", "1", 0, 1, 0.5, 0},
     {DEMILL_PAIR_FRICTION, "pair.friction", "1", 0, 1e6, 0.5, 0},
     {DEMILL_PAIR_ROLLING_FRICTION, "pair.rolling_friction", "1", 0, 1e6, 0, 0},
     {DEMILL_PAIR_NORMAL_STIFFNESS, "pair.normal_stiffness", "N/m", 0, 1e30, 5e4, OPEN_LO},

@@ -249,10 +249,14 @@ demill_status dm_integrate(demill_world *w, uint64_t steps)
     }
 }
 
-/* Steps a prepared world, under the watchdog when it is on. */
+/* Steps a prepared world, under the watchdog when it is on; without it, a
+ * run that leaves the state not finite still fails (where it is). */
 demill_status dm_run_steps(demill_world *w, uint64_t steps)
 {
-    return w->watchdog ? dm_watched_steps(w, steps) : dm_integrate(w, steps);
+    if (w->watchdog)
+        return dm_watched_steps(w, steps);
+    demill_status s = dm_integrate(w, steps);
+    return s || !steps ? s : dm_check_finite(w);
 }
 
 DEMILL_API demill_status demill_world_step(demill_world *w, uint64_t steps)
@@ -260,6 +264,7 @@ DEMILL_API demill_status demill_world_step(demill_world *w, uint64_t steps)
     demill_status s = dm_check_world(w);
     if (s)
         return s;
+    w->watch.call_start = w->steps;
     if ((s = dm_prepare_step(w)) ||
         (s = w->progress.fn ? dm_progress_steps(w, steps) : dm_run_steps(w, steps)))
         return s;

@@ -1,7 +1,7 @@
-/* watchdog.c: the stability watchdog (PHYSICS.md §8): steps in stretches
- * of world.watchdog_interval, checks the state after each, and keeps a copy
- * of the last state that passed, to which the world returns when a check
- * fails.
+/* watchdog.c: the stability watchdog (docs/physics.md §8): steps in
+ * stretches of world.watchdog_interval, checks the state after each, and
+ * keeps a copy of the last state that passed, to which the world returns
+ * when a check fails.
  *
  * The checks, in order:
  *  - positions, velocities and angular velocities are finite;
@@ -19,9 +19,15 @@
  *    the potential energy released and the drum's work since); where walls
  *    other than the drum move, nothing measures their work and this check
  *    is left out.
- * A fresh copy is taken when a run starts after the world was changed
- * through the API (dm_changed), so that a failure never undoes the caller's
- * own changes. */
+ * The end of every call is checked too, so that no call returns DEMILL_OK
+ * on a state that fails them. A copy of the state is not taken
+ * at every call: a failure found in a call whose start is later than the
+ * last copy puts that copy back and steps it on to where the call started,
+ * which gives the call's starting state bitwise (the integrators give the
+ * same state however a run is split), so that a failure never undoes a call
+ * that succeeded. A fresh copy is taken when a run starts after the world
+ * was changed through the API (dm_changed), so that a failure never undoes
+ * the caller's own changes either. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -92,17 +98,24 @@ typedef struct verdict {
     const char *cause;
 } verdict;
 
+/* The particle's position and velocities are finite (NaN and infinity
+ * propagate into the sum). */
+static int particle_finite(const dm_particles *P, int D, uint32_t i)
+{
+    const int W = D == 3 ? 3 : 1;
+    double sum = 0.0;
+    for (int c = 0; c < D; c++)
+        sum += P->x[D * i + c] * 0.0 + P->v[D * i + c] * 0.0;
+    for (int c = 0; c < W; c++)
+        sum += P->w[W * i + c] * 0.0;
+    return sum == 0.0;
+}
+
 static int finite_check(const demill_world *w, verdict *v)
 {
     const dm_particles *P = &w->p;
-    const int D = w->dim, W = D == 3 ? 3 : 1;
     for (uint32_t i = 0; i < P->n; i++) {
-        double sum = 0.0; /* NaN or infinite if any term is */
-        for (int c = 0; c < D; c++)
-            sum += P->x[D * i + c] * 0.0 + P->v[D * i + c] * 0.0;
-        for (int c = 0; c < W; c++)
-            sum += P->w[W * i + c] * 0.0;
-        if (sum != 0.0) {
+        if (!particle_finite(P, w->dim, i)) {
             snprintf(v->what, sizeof v->what, "the position or velocity is not finite");
             v->particle = i;
             v->cause = "the motion blew up: the time step is too large for the contact "
@@ -213,20 +226,47 @@ static int energy_check(const demill_world *w, verdict *v, dm_watch_energy e, in
     return 1;
 }
 
-/* Puts the world back at its last good state, with a message saying why. */
+/* Puts the world back at its last good state, or where the current call
+ * started if that is later, with a message saying why. */
 static demill_status fail_back(demill_world *w, const char *why)
 {
     char msg[sizeof w->error];
     snprintf(msg, sizeof msg, "%s", why);
     const double t_bad = w->time;
-    const dm_watch *g = &w->watch;
+    dm_watch *g = &w->watch;
     if (dm_state_restore(w, g->good))
         return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY,
                        "%s; and out of memory putting back the last good state", msg);
+    const char *where = "the last state that passed a check";
+    if (w->steps < g->call_start) {
+        /* step the copy on to the call's start; the steps it retakes all
+         * succeeded before */
+        demill_status s;
+        dm_watch_energy e;
+        int unknown;
+        if ((s = dm_prepare_step(w)) || (s = dm_integrate(w, g->call_start - w->steps)) ||
+            (s = energies(w, &e, &unknown)) || (s = take(w, 1, &e)))
+            return dm_fail(w, s, "%s; and going back to where this call started failed: %s",
+                           msg, w->error);
+        g->countdown = w->watch_interval;
+        where = "where this call started";
+    }
     return dm_fail(w, DEMILL_ERR_UNSTABLE,
-                   "watchdog at t = %.9g s: %s. The world is back at t = %.9g s (step %llu), "
-                   "the last state that passed a check (or where the run started).",
-                   t_bad, msg, w->time, (unsigned long long)w->steps);
+                   "watchdog at t = %.9g s: %s. The world is back at t = %.9g s (step %llu), %s.",
+                   t_bad, msg, w->time, (unsigned long long)w->steps, where);
+}
+
+/* The failure a verdict describes, the world put back. */
+static demill_status report(demill_world *w, const verdict *v)
+{
+    char why[sizeof w->error];
+    const dm_particles *P = &w->p;
+    const int D = w->dim;
+    snprintf(why, sizeof why, "particle 0x%llx at (%.6g, %.6g, %.6g): %s; likely cause: %s",
+             (unsigned long long)dm_particle_id(w, v->particle), P->x[D * v->particle],
+             P->x[D * v->particle + 1], D == 3 ? P->x[D * v->particle + 2] : 0.0, v->what,
+             v->cause);
+    return fail_back(w, why);
 }
 
 /* The checks; e receives the current energies, for take(). */
@@ -239,28 +279,42 @@ static demill_status check(demill_world *w, dm_watch_energy *e)
         return s;
     if (!finite_check(w, &v) && !overlap_check(w, &v) && !energy_check(w, &v, *e, unknown))
         return DEMILL_OK;
-    char why[sizeof w->error];
-    const dm_particles *P = &w->p;
-    const int D = w->dim;
-    snprintf(why, sizeof why, "particle 0x%llx at (%.6g, %.6g, %.6g): %s; likely cause: %s",
-             (unsigned long long)dm_particle_id(w, v.particle), P->x[D * v.particle],
-             P->x[D * v.particle + 1], D == 3 ? P->x[D * v.particle + 2] : 0.0, v.what,
-             v.cause);
-    return fail_back(w, why);
+    return report(w, &v);
 }
 
-/* Steps with the watchdog: in stretches that end at its checks. */
+demill_status dm_check_finite(demill_world *w)
+{
+    verdict v = {.particle = DM_FREE};
+    if (!finite_check(w, &v))
+        return DEMILL_OK;
+    const double *x = w->p.x + (size_t)w->dim * v.particle;
+    return dm_fail(w, DEMILL_ERR_UNSTABLE,
+                   "world_step at t = %.9g s: particle 0x%llx at (%.6g, %.6g, %.6g): %s; likely "
+                   "cause: %s. With the watchdog off (world.watchdog = 0) the world is left "
+                   "where it diverged: put back a snapshot or checkpoint",
+                   w->time, (unsigned long long)dm_particle_id(w, v.particle), x[0], x[1],
+                   w->dim == 3 ? x[2] : 0.0, v.what, v.cause);
+}
+
+/* Steps with the watchdog: in stretches that end at its checks, and a check
+ * at the end (which takes no copy). */
 demill_status dm_watched_steps(demill_world *w, uint64_t steps)
 {
     dm_watch *g = &w->watch;
     demill_status s;
     dm_watch_energy e;
     int unknown;
+    if (steps && g->stepped != w->edits + 1) { /* a run starts after a change */
+        if ((s = dm_check_time_step(w)))
+            return s;
+        g->stepped = w->edits + 1;
+    }
     if (!g->good || g->edits != w->edits) {
         if ((s = energies(w, &e, &unknown)) || (s = take(w, 1, &e)))
             return s;
         g->countdown = w->watch_interval;
     }
+    const int any = steps > 0;
     while (steps) {
         const uint64_t n = steps < g->countdown ? steps : g->countdown;
         if ((s = dm_integrate(w, n)))
@@ -273,5 +327,5 @@ demill_status dm_watched_steps(demill_world *w, uint64_t steps)
         if ((s = check(w, &e)) || (s = take(w, 0, &e)))
             return s;
     }
-    return DEMILL_OK;
+    return any && g->countdown != w->watch_interval ? check(w, &e) : DEMILL_OK;
 }

@@ -56,7 +56,7 @@ class Errors(unittest.TestCase):
         with self.assertFails(demill.InvalidValue, "material.poisson_ratio"):
             self.m.poisson_ratio = 0.5
         with self.assertFails(demill.InvalidValue, "pair.restitution"):
-            w.pair(self.m, self.m).restitution = 0
+            w.pair(self.m, self.m).restitution = -0.5
         with self.assertFails(demill.UnknownKey, "pair.tangential"):
             w.pair(self.m, self.m, tangential=9)
         self.assertEqual(w.time_step, 1e-5, "a failed call changes nothing")
@@ -111,13 +111,29 @@ class Errors(unittest.TestCase):
             self.assertEqual(w.step_count, 0)
 
     def test_unstable_run_is_reported_and_rolled_back(self):
-        """A time step far beyond the stability limit: the watchdog stops
-        the run with a message naming a particle and the time."""
+        """A time step beyond a pair's stability limit is refused before the
+        run starts, naming the pair and the limit; a chain of particles
+        pressed between two walls, whose fastest mode is √2 times one
+        pair's, blows up within that limit, and the watchdog stops the run
+        with a message naming a particle and the time."""
         w, m = linear_world(3, gravity=(0, -9.81, 0))
         w.add_plane(m, (0, 0, 0), (0, 1, 0))
         w.particles.add(m, [(0, 0.0099, 0)], 0.01)
         w.time_step = 5 * w.suggest_time_step().critical
-        with self.assertFails(demill.Unstable, "particle"):
+        with self.assertFails(demill.Unstable, "particle-wall", "largest stable time step"):
+            w.step(5000)
+        self.assertEqual(w.step_count, 0)
+        w.close()
+
+        w, m = linear_world(2, restitution=1.0)
+        r, n = 0.005, 10
+        x = [((r - 0.01 * r) + i * (1.99 * r), 0, 0) for i in range(n)]
+        v = [(0.01 if i % 2 else -0.01, 0, 0) for i in range(n)]
+        w.particles.add(m, x, r, velocities=v)
+        w.add_plane(m, (0, 0, 0), (1, 0, 0))
+        w.add_plane(m, (x[-1][0] + 0.99 * r, 0, 0), (-1, 0, 0))
+        w.time_step = 0.9 * w.suggest_time_step().critical
+        with self.assertFails(demill.Unstable, "particle", "back at t ="):
             w.step(5000)
         self.assertTrue(np.all(np.isfinite(w.particles.positions)))
         w.close()

@@ -7,12 +7,24 @@
  * E* = 1/((1-ν_a²)/E_a + (1-ν_b²)/E_b), m* and R* of the pair (a wall:
  * m* = m, R* = r); the comments give them rounded and say which pair of the
  * scene has the shortest contact.
- *  - Linear law: ω = √(k_n/m*), contact π/ω, stability limit 2/ω, suggested
- *    min(contact/steps, 0.2 · 2/ω); equal to 1e-12 relative.
+ *  - Linear law: ω = √(k_n/m*), contact π/ω, stability limit
+ *    (2/ω)(√(1 + 4ξ²) − 2ξ) (the central difference method's limit with
+ *    twice the damping ratio, demill/world.h), suggested
+ *    min(contact/steps, 0.2 · limit); equal to 1e-12 relative. The pairs
+ *    are unclamped, so that the damping ratio of restitution e has the
+ *    closed form ξ = −ln e/√(π² + ln² e).
  *  - Hertz law: contact 2.87 (m*²/(R* E*² v))^(1/5) (Johnson §11.4, the
  *    2.94324 δ_max/v of collision.c with δ_max written out), stability limit
- *    from S = 2 E* √(R* δ_max), and 0.2 of the Rayleigh time
- *    π R √(ρ/G)/(0.1631 ν + 0.8766), G = E/(2(1+ν)).
+ *    from S = 2 E* √(R* δ_max) with the Tsuji dashpot's ratio √(5/6) ξ, and
+ *    0.2 of the Rayleigh time π R √(ρ/G)/(0.1631 ν + 0.8766),
+ *    G = E/(2(1+ν)).
+ *  - The other modes of a contact: a tangential spring k_t moves the
+ *    contact points against m_t = 2/7 m* (the spheres' spins take part:
+ *    1/m_t = 1/m_a + 1/m_b + R_a²/I_a + R_b²/I_b), ω_t = √(k_t/m_t); the
+ *    regularised Coulomb law is a dashpot √(m* k_n) on m_t, limit
+ *    m_t/√(m* k_n).
+ *  - Restitution 0: critical damping (ξ = 1) unclamped; clamped, no time
+ *    step integrates it, which the call says.
  *  - A head-on collision of two equal spheres run at the suggested step (50
  *    steps per contact) rebounds with the set restitution within 1 %,
  *    measured as in collision.c over 8 entry phases (worst measured: 0.54 %
@@ -63,20 +75,44 @@ static demill_id add(demill_world *w, demill_id mat, double x, double y, double 
     return id;
 }
 
+/* The pair (a, b): `normal` law, unclamped restitution damping. */
 static void set_law(demill_world *w, demill_id a, demill_id b, int normal)
 {
     DM_OK(w, demill_pair_set(w, a, b, DEMILL_PAIR_NORMAL, normal));
     DM_OK(w, demill_pair_set(w, a, b, DEMILL_PAIR_DAMPING, DEMILL_DAMPING_RESTITUTION));
+    DM_OK(w, demill_pair_set(w, a, b, DEMILL_PAIR_CLAMP_NORMAL, 0));
 }
+
+/* A world without gravity with one material whose pair has the `normal`
+ * law, unclamped (set_law). */
+static demill_world *world(int dim, int normal, demill_id *m)
+{
+    demill_world *w = dm_test_world(dim, normal, DEMILL_DAMPING_RESTITUTION, m);
+    set_law(w, *m, *m, normal);
+    return w;
+}
+
+/* The unclamped damping ratio of restitution e. */
+static double xi_of(double e)
+{
+    return -log(e) / sqrt(M_PI * M_PI + log(e) * log(e));
+}
+
+/* The stability limit of a mode ω with damping ratio ξ. */
+static double limit(double omega, double xi)
+{
+    return 2.0 / omega * (sqrt(1.0 + 4.0 * xi * xi) - 2.0 * xi);
+}
+
+#define XI_HALF xi_of(0.5) /* the default restitution's: 0.2155 */
 
 /* ---- linear law ------------------------------------------------------------ */
 
 /* Linear pair of reduced mass m* and stiffness k at `steps` per contact. */
 static suggestion linear_expected(double mstar, double k, double steps)
 {
-    const double omega = sqrt(k / mstar);
-    const suggestion s = {fmin(M_PI / omega / steps, 0.2 * 2.0 / omega), 2.0 / omega,
-                          M_PI / omega};
+    const double omega = sqrt(k / mstar), crit = limit(omega, XI_HALF);
+    const suggestion s = {fmin(M_PI / omega / steps, 0.2 * crit), crit, M_PI / omega};
     return s;
 }
 
@@ -84,7 +120,7 @@ static suggestion linear_expected(double mstar, double k, double steps)
  * ρ 7800, k 2e5, radius 2 and 3 mm; all pairs linear, no gravity. */
 static demill_world *linear_scene(demill_id *A, demill_id *B)
 {
-    demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_RESTITUTION, A);
+    demill_world *w = world(3, DEMILL_NORMAL_LINEAR, A);
     DM_OK(w, demill_material_create(w, B));
     DM_OK(w, demill_material_set(w, *B, DEMILL_MATERIAL_DENSITY, 7800));
     DM_OK(w, demill_material_set(w, *B, DEMILL_MATERIAL_STIFFNESS, 2e5));
@@ -102,9 +138,9 @@ static demill_world *linear_scene(demill_id *A, demill_id *B)
  *   AA 3.3510e-4, 5e4,      6.702e-9
  *   AB 1.8804e-4, 6.6667e4, 2.821e-9
  *   BB 1.3069e-4, 1e5,      1.307e-9  <- shortest: ω = 2.7662e4 /s,
- * contact π/ω = 1.1357e-4 s, limit 2/ω = 7.2301e-5 s, suggested π/(50 ω) =
- * 2.2714e-6 s. At 5 steps per contact π/(5ω) = 0.63/ω exceeds 0.2 · 2/ω,
- * which is then taken. Pair AB made as stiff as 1e6 N/m has m* / k = 1.880e-10
+ * contact π/ω = 1.1357e-4 s, limit 0.658 · 2/ω = 4.757e-5 s (ξ = 0.2155),
+ * suggested π/(50 ω) = 2.2714e-6 s. At 5 steps per contact π/(5ω) = 0.63/ω
+ * exceeds 0.2 · limit = 0.263/ω, which is then taken. Pair AB made as stiff as 1e6 N/m has m* / k = 1.880e-10
  * and becomes the shortest. */
 START_TEST(linear_lightest_pair)
 {
@@ -164,7 +200,7 @@ END_TEST
 START_TEST(linear_discs)
 {
     demill_id m;
-    demill_world *w = dm_test_world(2, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_RESTITUTION, &m);
+    demill_world *w = world(2, DEMILL_NORMAL_LINEAR, &m);
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_DISC_THICKNESS, 0.01));
     add(w, m, 0, 0, 0, 0.005);
     const double mass = M_PI * 0.005 * 0.005 * 0.01 * 2500;
@@ -182,7 +218,7 @@ static void hertz_pair(double mstar, double rstar, double estar, double v, doubl
     const double delta = pow(15 * mstar * v * v / (16 * estar * sqrt(rstar)), 0.4);
     const double omega = sqrt(2 * estar * sqrt(rstar * delta) / mstar);
     s->contact = 2.87 * pow(mstar * mstar / (rstar * estar * estar * v), 0.2);
-    s->critical = 2 / omega;
+    s->critical = limit(omega, sqrt(5.0 / 6.0) * XI_HALF);
     s->dt = fmin(s->contact / steps, 0.2 * s->critical);
 }
 
@@ -194,14 +230,14 @@ static double rayleigh(double r, double rho, double E, double nu)
 /* One material (E 1e8, ν 0.3, ρ 2500), particles of radius 3 and 5 mm:
  * m* = 1.4137e-4 kg, R* = 1.5 mm, E* = 1e8/(2 · 0.91) = 5.4945e7 Pa.
  * At v = 1 m/s: δ_max = 8.27e-5 m, contact 2.43e-4 s, S = 3.87e4 N/m,
- * limit 2/ω = 1.21e-4 s; 0.2 of the Rayleigh time 8.21e-5 s is 1.64e-5 s,
+ * limit 0.681 · 2/ω = 8.24e-5 s; 0.2 of the Rayleigh time 8.21e-5 s is 1.64e-5 s,
  * above contact/50 = 4.87e-6 s, which is suggested. At v = 1 mm/s the
  * contact lasts 1000^(1/5) = 3.98 times longer, contact/50 = 1.94e-5 s, and
  * the Rayleigh bound 1.64e-5 s is taken. */
 START_TEST(hertz_contact_and_rayleigh)
 {
     demill_id m;
-    demill_world *w = dm_test_world(3, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, &m);
+    demill_world *w = world(3, DEMILL_NORMAL_HERTZ, &m);
     add(w, m, 0, 0, 0, 0.005);
     add(w, m, 0.1, 0, 0, 0.003);
     const double r = 0.003, mstar = sphere_mass(r, 2500) / 2, estar = 1e8 / (2 * (1 - 0.09));
@@ -226,7 +262,7 @@ END_TEST
 START_TEST(hertz_stiff_wall)
 {
     demill_id m, hard, wall;
-    demill_world *w = dm_test_world(3, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, &m);
+    demill_world *w = world(3, DEMILL_NORMAL_HERTZ, &m);
     add(w, m, 0, 0, 0, 0.005);
     add(w, m, 0.1, 0, 0, 0.003);
     DM_OK(w, demill_material_create(w, &hard));
@@ -282,7 +318,7 @@ START_TEST(linear_collision_at_suggested_step)
     const double r = 0.005, v0 = 1.0;
     for (int k = 0; k < 3; k++) {
         demill_id m, ids[2];
-        demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_RESTITUTION, &m);
+        demill_world *w = world(3, DEMILL_NORMAL_LINEAR, &m);
         DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, restitutions[k]));
         const double x[6] = {-1, 0, 0, 1, 0, 0}, rr[2] = {r, r};
         DM_OK(w, demill_particles_add(w, m, 2, x, rr, NULL, 0, ids));
@@ -293,6 +329,117 @@ START_TEST(linear_collision_at_suggested_step)
             DM_ASSERT_REL(rebound(w, ids, r, v0, dt, (p + 0.5) / 8), restitutions[k], 0.01);
         demill_world_destroy(w);
     }
+}
+END_TEST
+
+/* ---- damping and the other modes of a contact --------------------------------- */
+
+/* One material (k 5e4, ρ 2500) and one particle of radius 5 mm: m* = m/2 =
+ * 6.545e-4 kg, ω = √(k/m*) = 8740 /s. Each case sets the pair's laws and
+ * compares the stated limit with the hand-derived one. */
+START_TEST(damped_and_tangential_limits)
+{
+    demill_id m;
+    demill_world *w = world(3, DEMILL_NORMAL_LINEAR, &m);
+    add(w, m, 0, 0, 0, 0.005);
+    const double mstar = sphere_mass(0.005, 2500) / 2, k = 5e4, omega = sqrt(k / mstar);
+    const double mt = 2.0 / 7.0 * mstar; /* the contact points' mass with spins */
+    /* restitution 0.01, then 0: critical damping */
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, 0.01));
+    DM_ASSERT_REL(suggest(w, 1, 0).critical, limit(omega, xi_of(0.01)), REL);
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, 0.0));
+    DM_ASSERT_REL(suggest(w, 1, 0).critical, limit(omega, 1.0), REL);
+    /* viscous c_n = 2: ξ = c_n/(2 √(m* k)) = 0.1563 */
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_DAMPING, DEMILL_DAMPING_VISCOUS));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_VISCOUS_DAMPING, 2.0));
+    DM_ASSERT_REL(suggest(w, 1, 0).critical, limit(omega, 2.0 / (2 * sqrt(mstar * k))), REL);
+    /* undamped, a tangential spring k_t = 2 k on m_t: ω_t = √7 ω */
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_DAMPING, DEMILL_DAMPING_NONE));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_SPRING));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_TANGENTIAL_STIFFNESS_RATIO, 2.0));
+    DM_ASSERT_REL(suggest(w, 1, 0).critical, 2.0 / sqrt(2 * k / mt), REL);
+    /* the regularised Coulomb law: the dashpot √(m* k) on m_t */
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_COULOMB));
+    DM_ASSERT_REL(suggest(w, 1, 0).critical, mt / sqrt(mstar * k), REL);
+    /* rolling resistance alone: the dashpot R*² √(m* k) on the relative
+     * rotation, 1/I_rel = 2/(2/5 m r²), limit I_rel/c_r = 1.6/ω */
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_NONE));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_ROLLING, DEMILL_ROLLING_CONSTANT_TORQUE));
+    DM_ASSERT_REL(suggest(w, 1, 0).critical, 1.6 / omega, REL);
+    demill_world_destroy(w);
+}
+END_TEST
+
+/* Restitution 0 with the clamped normal law would need infinite damping:
+ * the suggestion and the step both say so, and change nothing. */
+START_TEST(restitution_zero_clamped)
+{
+    demill_id m;
+    demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_RESTITUTION, &m);
+    add(w, m, 0, 0, 0, 0.005);
+    add(w, m, 0.1, 0, 0, 0.005);
+    DM_OK(w, demill_material_set(w, m, DEMILL_MATERIAL_RESTITUTION, 0.0));
+    double dt = -1;
+    ck_assert_int_eq(demill_world_suggest_time_step(w, 1, 0, &dt, NULL, NULL),
+                     DEMILL_ERR_UNSTABLE);
+    ck_assert(dt == -1);
+    ck_assert_msg(strstr(demill_world_last_error(w), "restitution 0") &&
+                      strstr(demill_world_last_error(w), "no time step"),
+                  "%s", demill_world_last_error(w));
+    ck_assert_int_eq(demill_world_step(w, 10), DEMILL_ERR_UNSTABLE);
+    ck_assert_msg(strstr(demill_world_last_error(w), "exceeds the largest stable time step"),
+                  "%s", demill_world_last_error(w));
+    double t;
+    DM_OK(w, demill_world_get(w, DEMILL_WORLD_TIME, &t));
+    ck_assert(t == 0.0);
+    demill_world_destroy(w);
+}
+END_TEST
+
+/* Small restitutions, clamped (the default), at the suggested step are
+ * what was asked for, within 0.002 (measured: 1.5e-4 at most). At the step
+ * for 50 steps per contact alone, t_c/50 = 0.063/ω, the dashpot of e = 0.001
+ * (ξ = 15.8) is beyond its stability limit 0.032/ω: the linear law rebounded
+ * faster than it came and Hertz gave e = 0.26 before the limit was known.
+ * Unclamped, e = 0 is critical damping: the two spheres stay together. */
+START_TEST(small_restitution_at_suggested_step)
+{
+    static const double restitutions[] = {0.01, 0.001};
+    const double r = 0.005, v0 = 1.0;
+    for (int normal = DEMILL_NORMAL_LINEAR; normal <= DEMILL_NORMAL_HERTZ; normal++)
+        for (int k = 0; k < 2; k++) {
+            demill_id m, ids[2];
+            demill_world *w = dm_test_world(3, normal, DEMILL_DAMPING_RESTITUTION, &m);
+            DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, restitutions[k]));
+            const double x[6] = {-1, 0, 0, 1, 0, 0}, rr[2] = {r, r};
+            DM_OK(w, demill_particles_add(w, m, 2, x, rr, NULL, 0, ids));
+            double dt;
+            DM_OK(w, demill_world_suggest_time_step(w, v0, 50, &dt, NULL, NULL));
+            DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+            for (int p = 0; p < 4; p++) {
+                const double e = rebound(w, ids, r, v0, dt, (p + 0.5) / 4);
+                ck_assert_msg(fabs(e - restitutions[k]) < 0.002, "law %d, e = %g: %g", normal,
+                              restitutions[k], e);
+            }
+            demill_world_destroy(w);
+        }
+    demill_id m, ids[2];
+    demill_world *w = world(3, DEMILL_NORMAL_LINEAR, &m);
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, 0.0));
+    const double x[6] = {-r - 1e-5, 0, 0, r + 1e-5, 0, 0}, v[6] = {0.5, 0, 0, -0.5, 0, 0};
+    const double rr[2] = {r, r};
+    DM_OK(w, demill_particles_add(w, m, 2, x, rr, v, 0, ids));
+    double dt, contact;
+    DM_OK(w, demill_world_suggest_time_step(w, v0, 50, &dt, NULL, &contact));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+    DM_OK(w, demill_world_step(w, (uint64_t)(5 * contact / dt)));
+    const double dv = dm_test_get(w, ids[1], DEMILL_PARTICLE_VELOCITY, 0) -
+                      dm_test_get(w, ids[0], DEMILL_PARTICLE_VELOCITY, 0);
+    const double gap = dm_test_get(w, ids[1], DEMILL_PARTICLE_POSITION, 0) -
+                       dm_test_get(w, ids[0], DEMILL_PARTICLE_POSITION, 0) - 2 * r;
+    ck_assert_msg(fabs(dv) < 1e-3 * v0 && gap < 0.0, "e = 0: relative speed %g, gap %g", dv,
+                  gap);
+    demill_world_destroy(w);
 }
 END_TEST
 
@@ -311,7 +458,7 @@ static void assert_estimate(demill_world *w, double v)
 START_TEST(estimate_falling_particle)
 {
     demill_id m;
-    demill_world *w = dm_test_world(3, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, &m);
+    demill_world *w = world(3, DEMILL_NORMAL_HERTZ, &m);
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_GRAVITY_Y, -G));
     add(w, m, 0, 0, 0, 0.003);
     const demill_id faller = add(w, m, 0, 1.0, 0, 0.003);
@@ -337,7 +484,7 @@ END_TEST
 START_TEST(estimate_drum)
 {
     demill_id m, drum;
-    demill_world *w = dm_test_world(3, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, &m);
+    demill_world *w = world(3, DEMILL_NORMAL_HERTZ, &m);
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_GRAVITY_Y, -G));
     DM_OK(w, demill_drum_create(w, m, &drum));
     add(w, m, 0, -0.14, 0, 0.003);
@@ -375,7 +522,7 @@ START_TEST(bad_arguments)
     ck_assert_int_eq(demill_world_suggest_time_step(NULL, 1, 0, &dt, NULL, NULL),
                      DEMILL_ERR_NULL_POINTER);
     demill_id m, other;
-    demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_RESTITUTION, &m);
+    demill_world *w = world(3, DEMILL_NORMAL_LINEAR, &m);
     assert_fails(w, DEMILL_ERR_INVALID_VALUE, "no particles", 1, 0, 0);
     add(w, m, 0, 0, 0, 0.003);
     assert_fails(w, DEMILL_ERR_NULL_POINTER, "suggested", 1, 0, 1);
@@ -415,7 +562,7 @@ END_TEST
  * stay bitwise equal. */
 static demill_world *twin(demill_id *m)
 {
-    demill_world *w = dm_test_world(3, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, m);
+    demill_world *w = world(3, DEMILL_NORMAL_HERTZ, m);
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_GRAVITY_Y, -G));
     DM_OK(w, demill_pair_set(w, *m, *m, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN));
     demill_id wall;
@@ -458,6 +605,9 @@ int main(void)
     tcase_add_test(tc, hertz_contact_and_rayleigh);
     tcase_add_test(tc, hertz_stiff_wall);
     tcase_add_test(tc, linear_collision_at_suggested_step);
+    tcase_add_test(tc, damped_and_tangential_limits);
+    tcase_add_test(tc, restitution_zero_clamped);
+    tcase_add_test(tc, small_restitution_at_suggested_step);
     tcase_add_test(tc, estimate_falling_particle);
     tcase_add_test(tc, estimate_drum);
     tcase_add_test(tc, bad_arguments);

@@ -78,3 +78,31 @@ dm_collision dm_test_collide(demill_world *w, demill_id mat, double r, double v0
     DM_OK(w, demill_particles_remove(w, 2, ids));
     return o;
 }
+
+demill_world *dm_test_chain(int n, double fraction, demill_id *ids)
+{
+    demill_id m, wall;
+    demill_world *w = dm_test_world(2, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_NONE, &m);
+    const double r = 0.005, gap = 2.0 * r - 0.01 * r;
+    double *x = calloc(3 * (size_t)n, sizeof *x), *v = calloc(3 * (size_t)n, sizeof *v),
+           *rad = calloc((size_t)n, sizeof *rad);
+    ck_assert(x && v && rad);
+    for (int i = 0; i < n; i++) {
+        x[3 * i] = (r - 0.01 * r) + i * gap;
+        v[3 * i] = i % 2 ? 0.01 : -0.01;
+        rad[i] = r;
+    }
+    DM_OK(w, demill_particles_add(w, m, (size_t)n, x, rad, v, 0, ids));
+    const double p0[3] = {0, 0, 0}, n0[3] = {1, 0, 0};
+    const double p1[3] = {x[3 * (n - 1)] + r - 0.01 * r, 0, 0}, n1[3] = {-1, 0, 0};
+    DM_OK(w, demill_wall_add_plane(w, m, p0, n0, &wall));
+    DM_OK(w, demill_wall_add_plane(w, m, p1, n1, &wall));
+    double k;
+    DM_OK(w, demill_pair_get(w, m, m, DEMILL_PAIR_NORMAL_STIFFNESS, &k));
+    const double mstar = dm_test_get(w, ids[0], DEMILL_PARTICLE_MASS, 0) / 2;
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, fraction * 2.0 / sqrt(k / mstar)));
+    free(x);
+    free(v);
+    free(rad);
+    return w;
+}

@@ -54,4 +54,16 @@ typedef struct dm_collision {
 dm_collision dm_test_collide(demill_world *w, demill_id mat, double r, double v0, double dt,
                              double phase, double offset);
 
+/* A chain of n particles of radius 5 mm in a row along x between two plane
+ * walls, each pressed into the next by 1 % of its radius, in a 2D world
+ * without gravity; linear undamped contacts (k 5e4 N/m), the particles
+ * moving ±1 cm/s alternately. The time step is `fraction` of the stability
+ * limit of one pair, 2/ω with ω = √(k/m*), m* = m/2, which the library
+ * checks when stepping starts. The chain's highest mode, the particles
+ * moving against both neighbours, has ω_max = 2 √(k/m) sin(nπ/(2(n+1))),
+ * nearly √2 times the pair's (Kittel 2005, Introduction to Solid State
+ * Physics, ch. 4): between 1/√2 and 1 of the pair limit the run passes the
+ * check and then blows up. ids receives the particles' ids. */
+demill_world *dm_test_chain(int n, double fraction, demill_id *ids);
+
 #endif
