@@ -106,7 +106,8 @@ enum {
     DEMILL_ERR_UNSTABLE = 14,        /**< the simulation went unstable (see DEMILL_WORLD_WATCHDOG) */
     DEMILL_ERR_IO = 15,              /**< a file could not be opened, read or written (the message has the system's reason) */
     DEMILL_ERR_FORMAT = 16,          /**< a file or buffer is not what it should be: foreign, truncated, corrupt or of an unsupported version */
-    DEMILL_ERR_INTERRUPTED = 17      /**< the progress callback asked the run to stop (see demill_world_set_progress()) */
+    DEMILL_ERR_INTERRUPTED = 17,     /**< the progress callback asked the run to stop (see demill_world_set_progress()) */
+    DEMILL_ERR_LIMIT = 18            /**< a fixed limit of the library was reached (4096 live worlds, 65535 drums made in one world) */
 };
 
 /** A generic description of a status code.
@@ -124,6 +125,14 @@ DEMILL_API const char *demill_strerror(demill_status code);
  * of a removed object, of another world or of the wrong kind is rejected with
  * DEMILL_ERR_INVALID_HANDLE instead of touching the wrong object.
  * DEMILL_ID_NONE (0) is never a valid id.
+ *
+ * What exactly is guaranteed: an id never names any object but its own in
+ * its own world, however many objects are added and removed (a handle whose
+ * generation counter would wrap round is retired, never reused); no two
+ * worlds alive at the same time accept each other's ids (at most 4096 worlds
+ * are alive at once: demill_world_create() returns DEMILL_ERR_LIMIT beyond).
+ * An id of a destroyed world may name an object of a world created after
+ * 4096 or more further worlds; do not keep ids past their world.
  * @{ */
 /** The id of a material, particle, wall or drum of a world. */
 typedef uint64_t demill_id;

@@ -173,8 +173,9 @@ enum {
  *  @param material the material of the drum's walls.
  *  @param[out] out receives the drum's id.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
- *          DEMILL_ERR_INVALID_VALUE (a drum exists) or
- *          DEMILL_ERR_OUT_OF_MEMORY. */
+ *          DEMILL_ERR_INVALID_VALUE (a drum exists), DEMILL_ERR_OUT_OF_MEMORY
+ *          or DEMILL_ERR_LIMIT (the world has made 65535 drums, each with an
+ *          id of its own). */
 DEMILL_API demill_status demill_drum_create(demill_world *world, demill_id material,
                                             demill_id *out);
 
@@ -259,9 +260,11 @@ DEMILL_API demill_status demill_drum_lifter_get(demill_world *world, demill_id d
  *                      hold); may be NULL.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_UNKNOWN_KEY, DEMILL_ERR_NOT_FINITE,
- *          DEMILL_ERR_INVALID_VALUE (bad distribution or target; the charge
- *          does not fit: nothing is added), DEMILL_ERR_BUFFER_TOO_SMALL or
- *          DEMILL_ERR_OUT_OF_MEMORY. */
+ *          DEMILL_ERR_INVALID_VALUE (bad distribution or target; a target
+ *          of more particles than a world holds, about 1.07e9; particles so
+ *          small against the drum that the placement lattice has more than
+ *          2^30 sites; the charge does not fit: nothing is added),
+ *          DEMILL_ERR_BUFFER_TOO_SMALL or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_drum_fill(demill_world *world, demill_id drum, demill_id material,
                                           int32_t distribution, const double *params,
                                           size_t nparams, int32_t target, double value,
@@ -283,7 +286,8 @@ DEMILL_API demill_status demill_drum_fill(demill_world *world, demill_id drum, d
  *  @param edges  nedges increasing diameters, m.
  *  @param nbins  the number of energy bins, 1 to 10000.
  *  @param e_min  the lower edge of the first bin, J, > 0.
- *  @param e_max  the upper edge of the last bin, J, > e_min.
+ *  @param e_max  the upper edge of the last bin, J, > e_min, far enough above
+ *                it that log10(e_max) > log10(e_min).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE or
  *          DEMILL_ERR_OUT_OF_MEMORY. */
@@ -317,9 +321,11 @@ DEMILL_API demill_status demill_drum_spectrum(demill_world *world, demill_id dru
  *  @param[out] settled        receives 1 if the charge settled, 0 if the
  *                             time ran out; may be NULL.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE,
- *          DEMILL_ERR_INVALID_VALUE (negative arguments), and what
- *          demill_world_step() returns: DEMILL_ERR_NO_CONTACT_MODEL,
- *          DEMILL_ERR_OUT_OF_MEMORY or DEMILL_ERR_UNSTABLE. */
+ *          DEMILL_ERR_INVALID_VALUE (negative arguments, or max_time more
+ *          than 1e18 time steps), and what demill_world_step() returns:
+ *          DEMILL_ERR_NO_CONTACT_MODEL, DEMILL_ERR_INVALID_VALUE (the clock
+ *          cannot advance), DEMILL_ERR_OUT_OF_MEMORY or DEMILL_ERR_UNSTABLE.
+ *          The steps are counted, so that the call always ends. */
 DEMILL_API demill_status demill_world_settle(demill_world *world, double max_time,
                                              double energy_per_particle, int32_t *settled);
 

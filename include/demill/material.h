@@ -11,7 +11,9 @@ extern "C" {
 
 /** Material parameter keys (demill_material_set(), demill_material_get()). */
 enum {
-    /** Density ρ in kg/m³, > 0. Default 2500. */
+    /** Density ρ in kg/m³, > 0. Default 2500. Changing it recomputes the
+     *  masses of the material's particles; a density that would make a mass
+     *  or moment of inertia, or their inverse, not finite or 0 is refused. */
     DEMILL_MATERIAL_DENSITY = 200,
     /** Young's modulus E in Pa, > 0, used by Hertz and Mindlin laws.
      *  Default 1e8. */

@@ -54,7 +54,10 @@ DEMILL_API int32_t demill_particle_field_size(int32_t field);
  *  @param material   the particles' material.
  *  @param n          number of particles (0 is allowed and does nothing).
  *  @param positions  3n doubles: centres in m.
- *  @param radii      n doubles: radii in m, > 0.
+ *  @param radii      n doubles: radii in m, > 0, such that the particle's
+ *                    mass and moment of inertia and their inverses are
+ *                    finite and positive (in doubles: about 1e-100 m to
+ *                    1e60 m at the density of steel).
  *  @param velocities 3n doubles in m/s, or NULL for rest.
  *  @param flags      0 or DEMILL_ADD_NO_OVERLAP; other bits give
  *                    DEMILL_ERR_UNKNOWN_KEY.
@@ -118,7 +121,9 @@ DEMILL_API demill_status demill_particles_read_ids(const demill_world *world, in
  *  @param field a writable DEMILL_PARTICLE_* field.
  *  @param in    n × field size doubles.
  *  @param n     the number of particles in `in`; must equal the number of
- *               particles of the world.
+ *               particles of the world. A radius must give a mass and a
+ *               moment of inertia that are finite and positive, as are
+ *               their inverses (see demill_particles_add()).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (a bad value, or n
@@ -142,7 +147,8 @@ DEMILL_API demill_status demill_particle_get(const demill_world *world, demill_i
  *  @param world    the world.
  *  @param particle the particle's id.
  *  @param field    a writable DEMILL_PARTICLE_* field.
- *  @param in       the field's 1 or 3 doubles.
+ *  @param in       the field's 1 or 3 doubles (a radius as for
+ *                  demill_particles_write()).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE or

@@ -83,7 +83,9 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snapshot);
  *  @param world the world (not changed).
  *  @param path  the file to write.
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (path), DEMILL_ERR_IO (the
- *          message has the path and the system's reason) or
+ *          message has the path and the system's reason),
+ *          DEMILL_ERR_UNSTABLE (the state is not finite: a run diverged with
+ *          the watchdog off; nothing is written) or
  *          DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_world_save(demill_world *world, const char *path);
 
@@ -95,7 +97,8 @@ DEMILL_API demill_status demill_world_save(demill_world *world, const char *path
  *  @param path  the checkpoint file.
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (path), DEMILL_ERR_IO (the file
  *          cannot be opened or read), DEMILL_ERR_FORMAT (not a checkpoint,
- *          truncated, corrupt, or of a newer format version) or
+ *          truncated, corrupt, of a newer format version, or holding a value
+ *          the library never writes, such as a non-finite number) or
  *          DEMILL_ERR_OUT_OF_MEMORY. On failure the world is unchanged. */
 DEMILL_API demill_status demill_world_load(demill_world *world, const char *path);
 
@@ -107,8 +110,9 @@ DEMILL_API demill_status demill_world_load(demill_world *world, const char *path
  *  @param size     receives the checkpoint's size in bytes (may be NULL if
  *                  buffer is not).
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (buffer and size both NULL),
- *          DEMILL_ERR_BUFFER_TOO_SMALL (nothing written, *size set) or
- *          DEMILL_ERR_OUT_OF_MEMORY. */
+ *          DEMILL_ERR_BUFFER_TOO_SMALL (nothing written, *size set),
+ *          DEMILL_ERR_UNSTABLE (the state is not finite, as for
+ *          demill_world_save()) or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_world_save_buffer(demill_world *world, void *buffer,
                                                   size_t capacity, size_t *size);
 

@@ -57,7 +57,8 @@ enum {
     /** 2D worlds only: 0 (default) makes particles spheres constrained to the
      *  plane (m = 4/3 π R³ ρ, I = 2/5 m R²); a positive thickness t in m makes
      *  them discs (m = π R² t ρ, I = 1/2 m R²). Changing it recomputes the
-     *  masses of all particles. */
+     *  masses of all particles; a thickness that would make a mass or moment
+     *  of inertia, or their inverse, not finite or 0 is refused. */
     DEMILL_WORLD_DISC_THICKNESS = 106,
     /** 1 (default) tallies dissipated energy and wall work during steps (see
      *  demill_world_energy()); 0 skips that work. */
@@ -149,7 +150,8 @@ enum {
  *  @param dimension 2 or 3.
  *  @param[out] out  receives the world; set to NULL on failure.
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_INVALID_VALUE (bad
- *          dimension) or DEMILL_ERR_OUT_OF_MEMORY. */
+ *          dimension), DEMILL_ERR_OUT_OF_MEMORY or DEMILL_ERR_LIMIT (4096
+ *          worlds are alive: each has its own tag in its ids). */
 DEMILL_API demill_status demill_world_create(int32_t dimension, demill_world **out);
 
 /** Frees a world and everything it owns. Ids of the world become

@@ -25,6 +25,7 @@ DEMILL_API const char *demill_strerror(demill_status code)
     case DEMILL_ERR_IO: return "input/output error";
     case DEMILL_ERR_FORMAT: return "not a valid file of this kind, or of an unsupported version";
     case DEMILL_ERR_INTERRUPTED: return "the run was stopped by its progress callback";
+    case DEMILL_ERR_LIMIT: return "a fixed limit of the library was reached";
     default: return "unknown status code";
     }
 }

@@ -16,6 +16,11 @@
 /* ---- ids (ids.c) ------------------------------------------------------- */
 /* Bits 63..52 world tag, 51..48 kind, 47..32 generation, 31..0 index. */
 demill_id dm_id_make(uint16_t tag, int kind, uint16_t gen, uint32_t index);
+#define DM_WORLD_TAGS 4096    /* live worlds at most: each has its own tag */
+#define DM_GEN_LAST UINT16_MAX /* the last generation of a handle or drum id */
+/* Claims a tag no live world has (-1: all are taken), and gives it back. */
+int dm_tag_claim(uint16_t *tag);
+void dm_tag_release(uint16_t tag);
 
 /* A table of generation-counted handles mapping to storage slots. */
 typedef struct dm_handles {
@@ -387,7 +392,8 @@ struct demill_world {
 
     /* the mill drum (at most one) */
     dm_drum drum;
-    uint16_t drum_gen;      /* generation of the drum id */
+    uint16_t drum_gen;      /* generation of the drum id: drums removed so far
+                               (DM_GEN_LAST: no further drum can be made) */
 
     /* contacts */
     dm_clist pp, pw;

@@ -42,6 +42,19 @@ static double *material_field(dm_material *m, int32_t key)
     }
 }
 
+demill_status dm_particle_mass_checked(demill_world *w, uint32_t mat, double r, const char *who,
+                                       double *m, double *inv_i)
+{
+    dm_particle_mass(w, mat, r, m, inv_i);
+    if (isfinite(*m) && *m > 0.0 && isfinite(1.0 / *m) && isfinite(*inv_i) && *inv_i > 0.0)
+        return DEMILL_OK;
+    return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                   "%s: radius %g m with density %g kg/m^3 gives mass %g kg and inverse moment "
+                   "of inertia %g: they must be finite and positive, and so must their "
+                   "inverses",
+                   who, r, w->mats[mat].density, *m, *inv_i);
+}
+
 void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, double *inv_i)
 {
     double rho = w->mats[mat].density, mass, inertia;
@@ -69,9 +82,19 @@ DEMILL_API demill_status demill_material_set(demill_world *w, demill_id material
                        (int)key);
     if ((s = dm_check_value(w, key, value)))
         return s;
+    const double old = *field;
     *field = value;
     if (key == DEMILL_MATERIAL_DENSITY) {
         dm_particles *p = &w->p;
+        for (uint32_t i = 0; i < p->n && !s; i++)
+            if (p->mat[i] == mi) {
+                double m, inv_i;
+                s = dm_particle_mass_checked(w, mi, p->r[i], "material.density", &m, &inv_i);
+            }
+        if (s) {
+            *field = old;
+            return s;
+        }
         for (uint32_t i = 0; i < p->n; i++)
             if (p->mat[i] == mi) {
                 dm_particle_mass(w, mi, p->r[i], &p->m[i], &p->iinv[i]);

@@ -111,13 +111,16 @@ static demill_status check_vec(demill_world *w, const double *v, const char *wha
     return DEMILL_OK;
 }
 
-static demill_status check_radius(demill_world *w, double r, const char *who)
+/* A radius > 0 that gives a particle of material mat a mass and moment of
+ * inertia that are finite and positive, as are their inverses. */
+static demill_status check_radius(demill_world *w, uint32_t mat, double r, const char *who)
 {
     if (!isfinite(r))
         return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: radius %g is not finite", who, r);
     if (!(r > 0.0))
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: radius %g must be > 0", who, r);
-    return DEMILL_OK;
+    double m, inv_i;
+    return dm_particle_mass_checked(w, mat, r, who, &m, &inv_i);
 }
 
 /* Overlap test of a batch against the world, itself (each particle against
@@ -181,7 +184,7 @@ DEMILL_API demill_status demill_particles_add(demill_world *w, demill_id materia
         char who[48];
         snprintf(who, sizeof who, "particle %zu of the batch", k);
         if ((s = check_vec(w, positions + 3 * k, "position", who, flat)) ||
-            (s = check_radius(w, radii[k], who)) ||
+            (s = check_radius(w, mat, radii[k], who)) ||
             (velocities && (s = check_vec(w, velocities + 3 * k, "velocity", who, flat))))
             return s;
     }
@@ -210,11 +213,11 @@ demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const
         for (int c = 0; c < D; c++) {
             P->x[D * i + c] = positions[3 * k + c];
             P->x0[D * i + c] = positions[3 * k + c];
-            P->v[D * i + c] = velocities ? velocities[3 * k + c] : 0.0;
+            P->v[D * i + c] = P->vp[D * i + c] = velocities ? velocities[3 * k + c] : 0.0;
             P->f[D * i + c] = 0.0;
         }
         for (int c = 0; c < W; c++)
-            P->w[W * i + c] = P->t[W * i + c] = 0.0;
+            P->w[W * i + c] = P->wp[W * i + c] = P->t[W * i + c] = 0.0;
         P->theta[i] = 0.0;
         P->r[i] = radii[k];
         dm_particle_mass(w, mat, radii[k], &P->m[i], &P->iinv[i]);
@@ -289,8 +292,10 @@ DEMILL_API demill_status demill_particles_remove(demill_world *w, size_t n, cons
             memcpy(P->x + D * m, P->x + D * i, D * sizeof *P->x);
             memcpy(P->x0 + D * m, P->x0 + D * i, D * sizeof *P->x);
             memcpy(P->v + D * m, P->v + D * i, D * sizeof *P->x);
+            memcpy(P->vp + D * m, P->vp + D * i, D * sizeof *P->x);
             memcpy(P->f + D * m, P->f + D * i, D * sizeof *P->x);
             memcpy(P->w + W * m, P->w + W * i, W * sizeof *P->x);
+            memcpy(P->wp + W * m, P->wp + W * i, W * sizeof *P->x);
             memcpy(P->t + W * m, P->t + W * i, W * sizeof *P->x);
             P->theta[m] = P->theta[i];
             P->r[m] = P->r[i];
@@ -366,7 +371,8 @@ static void get_one(const demill_world *w, uint32_t i, int32_t field, double *ou
         memcpy(out, src, (size_t)nsrc * sizeof *out);
 }
 
-static demill_status check_one(demill_world *w, int32_t field, const double *in,
+/* A value for `field` of the particle in storage slot i. */
+static demill_status check_one(demill_world *w, uint32_t i, int32_t field, const double *in,
                                const char *who)
 {
     const int flat = w->dim == 2;
@@ -382,7 +388,7 @@ static demill_status check_one(demill_world *w, int32_t field, const double *in,
                            who);
         return s;
     }
-    case DEMILL_PARTICLE_RADIUS: return check_radius(w, in[0], who);
+    case DEMILL_PARTICLE_RADIUS: return check_radius(w, w->p.mat[i], in[0], who);
     default:
         if (!isfinite(in[0]))
             return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: angle %g is not finite", who, in[0]);
@@ -489,13 +495,17 @@ DEMILL_API demill_status demill_particles_write(demill_world *w, int32_t field, 
     if (n && !in)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "particles_write: in is NULL");
     const int size = demill_particle_field_size(field);
-    for (size_t k = 0; k < n; k++) {
+    size_t k = 0;
+    for (uint32_t h = 0; h < w->ph.n; h++) {
+        const uint32_t i = w->ph.slot[h];
+        if (i == DM_FREE)
+            continue;
         char who[48];
         snprintf(who, sizeof who, "particle %zu (in id order)", k);
-        if ((s = check_one(w, field, in + (size_t)size * k, who)))
+        if ((s = check_one(w, i, field, in + (size_t)size * k++, who)))
             return s;
     }
-    size_t k = 0;
+    k = 0;
     for (uint32_t h = 0; h < w->ph.n; h++) {
         uint32_t i = w->ph.slot[h];
         if (i != DM_FREE)
@@ -532,7 +542,7 @@ DEMILL_API demill_status demill_particle_set(demill_world *w, demill_id particle
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "particle_set: in is NULL");
     char who[48];
     snprintf(who, sizeof who, "particle 0x%llx", (unsigned long long)particle);
-    if ((s = check_one(w, field, in, who)))
+    if ((s = check_one(w, i, field, in, who)))
         return s;
     set_one(w, i, field, in);
     dm_changed(w);

@@ -100,7 +100,9 @@ typedef struct io {
     size_t n, cap;
     const uint8_t *in; /* reading: the bytes still to read */
     size_t left;
-    demill_status status; /* the first failure: OUT_OF_MEMORY or FORMAT */
+    const char *section;  /* the section being walked */
+    demill_status status; /* the first failure: OUT_OF_MEMORY, FORMAT or (writing a
+                             state that is not finite) UNSTABLE */
     char why[200];        /* and what it was */
 } io;
 
@@ -148,7 +150,36 @@ static void io_bytes(io *s, void *v, size_t bytes)
     s->n += bytes;
 }
 
-static void io_f64(io *s, double *v, size_t n) { io_bytes(s, v, n * sizeof *v); }
+/* Checks that n doubles are finite, or NaN where nan_ok (the drum's "not
+ * measured yet"): what is read must be, and what is written too, so that the
+ * library never writes a checkpoint it would refuse to read. */
+static void io_finite(io *s, const double *v, size_t n, bool nan_ok)
+{
+    for (size_t k = 0; k < n && !s->status; k++)
+        if (!isfinite(v[k]) && !(nan_ok && isnan(v[k]))) {
+            if (s->reading)
+                io_fail(s, DEMILL_ERR_FORMAT, "section %s: a stored value is %g, not finite",
+                        s->section, v[k]);
+            else
+                io_fail(s, DEMILL_ERR_UNSTABLE,
+                        "section %s: a value is %g: the state is not finite (it diverged), "
+                        "and a diverged state is not saved",
+                        s->section, v[k]);
+        }
+}
+
+static void io_f64(io *s, double *v, size_t n)
+{
+    io_bytes(s, v, n * sizeof *v);
+    io_finite(s, v, n, false);
+}
+
+/* A double that may also be NaN, the drum's "not measured yet". */
+static void io_f64_or_nan(io *s, double *v)
+{
+    io_bytes(s, v, sizeof *v);
+    io_finite(s, v, 1, true);
+}
 static void io_u64(io *s, uint64_t *v) { io_bytes(s, v, sizeof *v); }
 static void io_u32(io *s, uint32_t *v, size_t n) { io_bytes(s, v, n * sizeof *v); }
 
@@ -203,6 +234,14 @@ static void io_array(io *s, void *field, size_t count, size_t room, size_t size)
     io_bytes(s, *p, count * size);
 }
 
+/* An array of count doubles, each finite (room as io_array's). */
+static void io_f64_array(io *s, double **field, size_t count, size_t room)
+{
+    io_array(s, field, count, room, sizeof **field);
+    if (!s->status)
+        io_finite(s, *field, count, false);
+}
+
 /* Before room for `count` structures read field by field is allocated: each
  * takes at least `least` bytes of the file. */
 static void io_room(io *s, uint32_t count, size_t least, const char *what)
@@ -215,6 +254,7 @@ static void io_room(io *s, uint32_t count, size_t least, const char *what)
 /* A section starts with its four-letter name. */
 static void io_section(io *s, const char *name)
 {
+    s->section = name;
     char got[4];
     memcpy(got, name, 4);
     io_bytes(s, got, 4);
@@ -274,19 +314,28 @@ static void transfer_drum(io *s, dm_drum *d, int dim)
     io_count(s, &d->nwall, d->nlifters + (dim == 3 ? 3 : 1), "drum walls");
     io_u32(s, d->wall_slot, d->nwall);
     io_int(s, &d->speed_key);
+    /* (NULL: a value that is NaN until measured, next in `unknown`) */
     double *const f[] = {&d->speed_value, &d->ramp, &d->crit_diameter, &d->t_set,
                          &d->theta_set, &d->omega_from, &d->omega_to, &d->theta, &d->omega,
-                         &d->theta_start, &d->torque, &d->power, &d->energy_in,
-                         &d->energy_dissipated, d->lifter_peak, d->lifter_energy, &d->mean_power,
-                         &d->mean_power_cm, &d->mean_dissipation, d->mean_shape,
-                         &d->lifter_force_mean[0][0], &d->rev.t0, &d->rev.energy_in,
-                         &d->rev.power_cm_sum, &d->rev.dissipated0, d->rev.shape_sum,
-                         &d->rev.lifter_impulse[0][0]};
+                         NULL, &d->torque, &d->power, &d->energy_in,
+                         &d->energy_dissipated, d->lifter_peak, d->lifter_energy, NULL,
+                         NULL, NULL, NULL, &d->lifter_force_mean[0][0], &d->rev.t0,
+                         &d->rev.energy_in, &d->rev.power_cm_sum, &d->rev.dissipated0,
+                         d->rev.shape_sum, &d->rev.lifter_impulse[0][0]};
     const size_t len[] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, DM_MAX_LIFTERS,
                           DM_MAX_LIFTERS, 1, 1, 1, 3, 3 * DM_MAX_LIFTERS, 1, 1, 1, 1, 3,
                           3 * DM_MAX_LIFTERS};
-    for (size_t k = 0; k < sizeof len / sizeof *len; k++)
-        io_f64(s, f[k], len[k]);
+    double *const unknown[] = {&d->theta_start, &d->mean_power, &d->mean_power_cm,
+                               &d->mean_dissipation, d->mean_shape};
+    for (size_t k = 0, u = 0; k < sizeof len / sizeof *len; k++) {
+        if (f[k]) {
+            io_f64(s, f[k], len[k]);
+            continue;
+        }
+        for (size_t q = 0; q < len[k]; q++)
+            io_f64_or_nan(s, unknown[u] + q);
+        u++;
+    }
     io_u32(s, &d->sample_interval, 1);
     io_u64(s, &d->samples_due);
     io_u64(s, &d->revolutions);
@@ -306,18 +355,22 @@ static void transfer_drum(io *s, dm_drum *d, int dim)
         return;
     io_f64(s, &sp->log_min, 1);
     io_f64(s, &sp->log_span, 1);
-    io_array(s, &sp->edges, sp->nclasses - 1, sp->nclasses - 1, sizeof *sp->edges);
+    io_f64_array(s, &sp->edges, sp->nclasses - 1, sp->nclasses - 1);
     const size_t counters = dm_spectrum_counters(sp);
     io_array(s, &sp->counts, counters, counters, sizeof *sp->counts);
 }
 
-static void transfer_bucket(io *s, dm_bucket *b, int kernel, int dim, bool events)
+/* A contact list: its kernel's history slots, and one more for the
+ * collision spectrum while one is recorded (events); after the spectrum was
+ * started or stopped the lists keep their old layout until they are rebuilt
+ * (valid false). */
+static void transfer_bucket(io *s, dm_bucket *b, int kernel, int dim, bool events, bool valid)
 {
     io_count(s, &b->n, UINT32_MAX, "contact list length");
     uint32_t hs = (uint32_t)b->hs;
     io_u32(s, &hs, 1);
     const uint32_t base = (uint32_t)dm_kernel_hist_size(kernel, dim);
-    if (s->reading && !s->status && (hs < base + events || hs > base + 1))
+    if (s->reading && !s->status && (valid ? hs != base + events : hs < base || hs > base + 1))
         io_fail(s, DEMILL_ERR_FORMAT, "contact list %d keeps %u history values, not %u", kernel,
                 hs, base + events);
     if (s->reading) {
@@ -328,7 +381,7 @@ static void transfer_bucket(io *s, dm_bucket *b, int kernel, int dim, bool event
     io_array(s, &b->i, b->n, b->n, sizeof *b->i);
     io_array(s, &b->j, b->n, b->n, sizeof *b->j);
     io_array(s, &b->on, b->n, b->n, sizeof *b->on);
-    io_array(s, &b->hist, (size_t)b->n * hs, (size_t)b->n * hs, sizeof *b->hist);
+    io_f64_array(s, &b->hist, (size_t)b->n * hs, (size_t)b->n * hs);
 }
 
 /* Walks every field of state w. Reading, w starts zeroed (with its pointers
@@ -411,7 +464,7 @@ static void transfer(io *s, demill_world *w)
                             &P->theta, &P->r, &P->m, &P->im, &P->iinv};
     const size_t per[] = {D, D, D, D, D, W, W, W, 1, 1, 1, 1, 1};
     for (size_t k = 0; k < sizeof per / sizeof *per; k++)
-        io_array(s, vec[k], n * per[k], n * per[k], sizeof(double));
+        io_f64_array(s, vec[k], n * per[k], n * per[k]);
     io_array(s, &P->mat, n, n, sizeof *P->mat);
     io_array(s, &P->hid, n, n, sizeof *P->hid);
     transfer_handles(s, &w->ph, "particle handles");
@@ -435,7 +488,8 @@ static void transfer(io *s, demill_world *w)
     io_section(s, "CONT");
     for (int side = 0; side < 2; side++)
         for (int k = 0; k < DM_KERNELS; k++)
-            transfer_bucket(s, side ? &w->pw.b[k] : &w->pp.b[k], k, w->dim, w->events);
+            transfer_bucket(s, side ? &w->pw.b[k] : &w->pp.b[k], k, w->dim, w->events,
+                            w->nlist_valid);
     io_section(s, "END.");
 }
 
@@ -488,15 +542,15 @@ static demill_status check_params(demill_world *t)
     return DEMILL_OK;
 }
 
-/* Handles map one to one onto `slots` live objects; the free ones are listed
- * once each. */
+/* Handles map one to one onto `live` objects; the free ones are listed once
+ * each, and the others are retired (at their last generation). */
 static demill_status check_handles(demill_world *t, const dm_handles *h, uint32_t live,
                                    const char *what)
 {
     uint32_t used = 0;
     for (uint32_t k = 0; k < h->n; k++)
         used += h->slot[k] != DM_FREE;
-    if (used != live || used + h->nfree != h->n)
+    if (used != live || used + h->nfree > h->n)
         return dm_fail(t, DEMILL_ERR_FORMAT, "%s: %u in use and %u free of %u, for %u objects",
                        what, used, h->nfree, h->n, live);
     uint8_t *seen = calloc(h->n ? h->n : 1, 1);
@@ -505,9 +559,13 @@ static demill_status check_handles(demill_world *t, const dm_handles *h, uint32_
     demill_status s = DEMILL_OK;
     for (uint32_t k = 0; k < h->nfree && !s; k++) {
         const uint32_t f = h->free[k];
-        if (f >= h->n || h->slot[f] != DM_FREE || seen[f]++)
+        if (f >= h->n || h->slot[f] != DM_FREE || h->gen[f] == DM_GEN_LAST || seen[f]++)
             s = dm_fail(t, DEMILL_ERR_FORMAT, "%s: free list entry %u is %u", what, k, f);
     }
+    for (uint32_t k = 0; k < h->n && !s; k++)
+        if (h->slot[k] == DM_FREE && !seen[k] && h->gen[k] != DM_GEN_LAST)
+            s = dm_fail(t, DEMILL_ERR_FORMAT, "%s: %u is neither in use, free nor retired", what,
+                        k);
     free(seen);
     return s;
 }
@@ -598,8 +656,21 @@ static demill_status check_drum(demill_world *t)
     if (d->alive) {
         demill_status s;
         double v;
+        /* the speed as it was set; its other forms are derived, and may lie
+         * outside their keys' bounds (or be NaN where the critical speed is
+         * undefined) */
+        const bool speed_key = d->speed_key == DEMILL_DRUM_SPEED ||
+                               d->speed_key == DEMILL_DRUM_SPEED_RPM ||
+                               d->speed_key == DEMILL_DRUM_SPEED_FRACTION;
+        if (!speed_key || t->drum_gen == DM_GEN_LAST)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "drum: speed key %d, generation %u",
+                           d->speed_key, (unsigned)t->drum_gen);
+        if ((s = check_param(t, d->speed_key, d->speed_value)))
+            return s;
         for (int32_t key = 400; key < 450; key++)
-            if (demill_param_name(key) && demill_drum_get(t, dm_drum_id(t), key, &v) == DEMILL_OK &&
+            if (key != DEMILL_DRUM_SPEED && key != DEMILL_DRUM_SPEED_RPM &&
+                key != DEMILL_DRUM_SPEED_FRACTION && demill_param_name(key) &&
+                demill_drum_get(t, dm_drum_id(t), key, &v) == DEMILL_OK &&
                 (s = check_param(t, key, v)))
                 return s;
         for (uint32_t k = 0; k < d->nlifters; k++)

@@ -1,14 +1,9 @@
 /* world.c: creating, configuring and destroying a world. */
 #include <math.h>
-#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "internal.h"
-
-/* Each world gets its own tag so that its ids are not taken for another
- * world's. The counter is the only state shared between worlds. */
-static atomic_uint next_tag;
 
 static double param_default(int32_t key)
 {
@@ -27,8 +22,11 @@ DEMILL_API demill_status demill_world_create(int32_t dimension, demill_world **o
     demill_world *w = calloc(1, sizeof *w);
     if (!w)
         return DEMILL_ERR_OUT_OF_MEMORY;
+    if (dm_tag_claim(&w->tag)) {
+        free(w);
+        return DEMILL_ERR_LIMIT;
+    }
     w->magic = DM_WORLD_MAGIC;
-    w->tag = (uint16_t)(atomic_fetch_add(&next_tag, 1u) & 0xfffu);
     w->dim = dimension;
     w->dt = param_default(DEMILL_WORLD_TIME_STEP);
     w->g[0] = param_default(DEMILL_WORLD_GRAVITY_X);
@@ -63,6 +61,7 @@ DEMILL_API void demill_world_destroy(demill_world *w)
     free(w->walls);
     free(w->pairs);
     free(w->ptab);
+    dm_tag_release(w->tag);
     w->magic = 0;
     free(w);
 }
@@ -109,12 +108,24 @@ DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double v
     case DEMILL_WORLD_DISC_THICKNESS:
         if (w->dim == 3)
             return dm_fail(w, DEMILL_ERR_DIMENSION, "world.disc_thickness applies to 2D worlds only");
+    {
+        const double old = w->disc_thickness;
         w->disc_thickness = value;
+        for (uint32_t i = 0; i < w->p.n && !s; i++) {
+            double m, inv_i;
+            s = dm_particle_mass_checked(w, w->p.mat[i], w->p.r[i], "world.disc_thickness", &m,
+                                         &inv_i);
+        }
+        if (s) {
+            w->disc_thickness = old;
+            return s;
+        }
         for (uint32_t i = 0; i < w->p.n; i++) {
             dm_particle_mass(w, w->p.mat[i], w->p.r[i], &w->p.m[i], &w->p.iinv[i]);
             w->p.im[i] = 1.0 / w->p.m[i];
         }
         break;
+    }
     case DEMILL_WORLD_ENERGY_TRACKING: w->energy_tracking = (int)value; break;
     case DEMILL_WORLD_THREADS: /* changes no result */
         if ((s = set_threads(w, (int)value)))

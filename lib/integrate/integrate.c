@@ -230,6 +230,11 @@ static demill_status euler(demill_world *w, uint64_t steps)
  * built, forces of the current state known. Changes nothing physical. */
 demill_status dm_prepare_step(demill_world *w)
 {
+    if (w->time + w->dt == w->time)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "world_step: at t = %.17g s a time step of %g s does not advance the "
+                       "clock; set world.time nearer 0",
+                       w->time, w->dt);
     demill_status s = dm_resolve_pairs(w, true);
     if (s || (s = dm_drum_prepare(w)))
         return s;

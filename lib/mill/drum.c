@@ -254,6 +254,11 @@ DEMILL_API demill_status demill_drum_create(demill_world *w, demill_id material,
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_create: out is NULL");
     if (w->drum.alive)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_create: the world has a drum already");
+    if (w->drum_gen == DM_GEN_LAST)
+        return dm_fail(w, DEMILL_ERR_LIMIT,
+                       "drum_create: this world has made %u drums, the most a world can (each "
+                       "needs an id of its own)",
+                       (unsigned)DM_GEN_LAST);
     dm_drum saved = w->drum;
     dm_drum *d = &w->drum;
     memset(d, 0, sizeof *d);

@@ -19,6 +19,7 @@
 
 #define FINE_CLASSES 32
 #define JITTER 0.02 /* per coordinate, as a fraction of the largest diameter */
+#define MAX_SITES 1073741824.0 /* lattice sites, at most: 2^30, a few minutes' scan */
 
 typedef struct size_class {
     double lo, hi;   /* diameter range (lo = hi for a discrete class) */
@@ -144,6 +145,12 @@ static demill_status class_counts(demill_world *w, uint32_t mat, const size_clas
     }
     /* largest remainder, so that a count target is met exactly */
     double want = scale * wsum, rem[FINE_CLASSES];
+    const double most = (double)(UINT32_MAX / 4) - (double)w->p.n;
+    if (!(want <= most))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum_fill: the target asks for %.3g particles; at most %.0f more can be "
+                       "added",
+                       want, most);
     size_t total = 0;
     for (size_t k = 0; k < ncls; k++) {
         const double x = scale * weight[k];
@@ -151,7 +158,7 @@ static demill_status class_counts(demill_world *w, uint32_t mat, const size_clas
         rem[k] = x - floor(x);
         total += count[k];
     }
-    while ((double)total + 0.5 < want) {
+    for (size_t it = 0; it < ncls && (double)total + 0.5 < want; it++) {
         size_t best = 0;
         for (size_t k = 1; k < ncls; k++)
             if (rem[k] > rem[best])
@@ -203,8 +210,27 @@ DEMILL_API demill_status demill_drum_fill(demill_world *w, demill_id drum, demil
         return dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL, "drum_fill: capacity %zu, %zu particles",
                        capacity, n);
     }
-    if (n > UINT32_MAX / 4 - (uint64_t)w->p.n)
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_fill: %zu particles are too many", n);
+    /* the smallest and largest particles have a finite mass and inertia */
+    for (size_t k = 0; k < ncls; k++)
+        if (per_class[k]) {
+            double m, inv_i;
+            if ((s = dm_particle_mass_checked(w, mat, 0.5 * cls[k].lo, "drum_fill", &m, &inv_i)) ||
+                (s = dm_particle_mass_checked(w, mat, 0.5 * cls[k].hi, "drum_fill", &m, &inv_i)))
+                return s;
+        }
+    /* the lattice the particles are placed on, whose sites the placement
+     * may visit all of */
+    const dm_drum *d = &w->drum;
+    const int D = w->dim;
+    const double jit = JITTER * dmax, a = dmax + 2.0 * jit, R = 0.5 * d->diameter;
+    const double zh = D == 3 ? 0.5 * d->length : 0.0;
+    const double sites = (2.0 * floor(R / a) + 1.0) * (2.0 * floor(R / a) + 1.0) *
+                         (2.0 * floor(zh / a) + 1.0);
+    if (!(sites <= MAX_SITES))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum_fill: particles of diameter %g m are too small for this drum: the "
+                       "lattice they are placed on would have %.3g sites, at most %.3g",
+                       dmax, sites, MAX_SITES);
 
     double *diam = malloc(n * sizeof *diam), *pos = malloc(3 * n * sizeof *pos);
     dm_sphere_index ix = {0};
@@ -227,10 +253,6 @@ DEMILL_API demill_status demill_drum_fill(demill_world *w, demill_id drum, demil
         diam[j] = t;
     }
     /* lattice sites from the bottom up: y, then x, then z */
-    const dm_drum *d = &w->drum;
-    const int D = w->dim;
-    const double jit = JITTER * dmax, a = dmax + 2.0 * jit, R = 0.5 * d->diameter;
-    const double zh = D == 3 ? 0.5 * d->length : 0.0;
     const long nxy = (long)floor(R / a), nz = D == 3 ? (long)floor(zh / a) : 0;
     size_t placed = 0;
     for (long iy = -nxy; iy <= nxy && placed < n; iy++)
@@ -279,14 +301,22 @@ DEMILL_API demill_status demill_world_settle(demill_world *w, double max_time,
         return dm_fail(w, DEMILL_ERR_NOT_FINITE, "world_settle: arguments must be finite");
     if (max_time < 0.0 || energy_per_particle < 0.0)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "world_settle: arguments must be >= 0");
-    const double t_end = w->time + max_time;
+    /* counted in steps, so that the call ends whatever the clock's
+     * resolution; the energy is looked at every millisecond */
+    const double steps = ceil(max_time / w->dt);
+    if (!(steps < 1e18))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "world_settle: max_time %g s is %.3g steps of %g s, too many", max_time,
+                       steps, w->dt);
+    const uint64_t chunk = (uint64_t)fmax(1.0, ceil(1e-3 / w->dt));
     const dm_particles *P = &w->p;
     const int D = w->dim;
     int32_t calm = 0;
-    while (!calm && w->time < t_end) {
-        uint64_t chunk = (uint64_t)ceil(fmin(t_end - w->time, 1e-3) / w->dt);
-        if ((s = demill_world_step(w, chunk ? chunk : 1)))
+    for (uint64_t left = (uint64_t)steps; !calm && left;) {
+        const uint64_t n = left < chunk ? left : chunk;
+        if ((s = demill_world_step(w, n)))
             return s;
+        left -= n;
         double ke = 0.0;
         for (uint32_t i = 0; i < P->n; i++)
             for (int c = 0; c < D; c++)

@@ -84,6 +84,11 @@ DEMILL_API demill_status demill_drum_spectrum_start(demill_world *w, demill_id d
                        nbins);
     dm_spectrum sp = {.nclasses = (uint32_t)nedges + 1, .nbins = nbins,
                       .log_min = log10(e_min), .log_span = log10(e_max) - log10(e_min)};
+    if (!(sp.log_span > 0.0))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum_spectrum_start: e_max = %.17g is too close to e_min = %.17g for "
+                       "their logarithms to differ",
+                       e_max, e_min);
     sp.edges = malloc((nedges ? nedges : 1) * sizeof *sp.edges);
     sp.counts = calloc(dm_spectrum_counters(&sp), sizeof *sp.counts);
     if (!sp.edges || !sp.counts) {

@@ -48,6 +48,7 @@ class Status(IntEnum):
     IO = 15
     FORMAT = 16
     INTERRUPTED = 17
+    LIMIT = 18
 
 
 class Kind(IntEnum):

@@ -10,7 +10,8 @@ from .constants import Status
 __all__ = ["Error", "NullPointer", "InvalidValue", "NotFinite", "UnknownKey", "InvalidHandle",
            "WorldClosed", "NoContactModel", "Overlap", "OutOfMemory", "BufferTooSmall",
            "ReadOnly", "DimensionError", "VersionError", "Unsupported", "Unstable",
-           "FileError", "FormatError", "Interrupted"]
+           "FileError", "FormatError", "Interrupted",
+           "LimitError"]
 
 
 class Error(Exception):
@@ -108,6 +109,11 @@ class Interrupted(Error):
     """``DEMILL_ERR_INTERRUPTED``: the progress callback stopped the run."""
 
 
+class LimitError(Error):
+    """``DEMILL_ERR_LIMIT``: a fixed limit of the library was reached (4096
+    live worlds, 65535 drums made in one world)."""
+
+
 #: The exception class of each status code.
 ERRORS = {
     Status.NULL_POINTER: NullPointer,
@@ -127,6 +133,7 @@ ERRORS = {
     Status.IO: FileError,
     Status.FORMAT: FormatError,
     Status.INTERRUPTED: Interrupted,
+    Status.LIMIT: LimitError,
 }
 
 

@@ -606,6 +606,167 @@ START_TEST(file_errors)
 }
 END_TEST
 
+/* ------------------------------------------------------------------------ */
+/* Whatever the API accepts, a checkpoint brings back                          */
+
+/* Saves w, loads that into a new world and saves again: the load succeeds
+ * and the two checkpoints are the same bytes. */
+static void round_trip(demill_world *w, const char *what)
+{
+    demill_world *copy;
+    ck_assert_int_eq(demill_world_create(3, &copy), DEMILL_OK);
+    bytes a = checkpoint_of(w);
+    if (demill_world_load_buffer(copy, a.b, a.n))
+        ck_abort_msg("%s: the checkpoint does not load: %s", what, demill_world_last_error(copy));
+    bytes b = checkpoint_of(copy);
+    same_bytes(a, b, what);
+    free(a.b);
+    free(b.b);
+    demill_world_destroy(copy);
+}
+
+/* A 3D world with gravity g (along -y), a material with a Hertz model and a
+ * drum of diameter `diameter` turning at `speed` rad/s. */
+static demill_world *drum_world(double g, double diameter, double speed, demill_id *mat,
+                                demill_id *drum)
+{
+    demill_world *w;
+    ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_GRAVITY_Y, -g));
+    DM_OK(w, demill_material_create(w, mat));
+    DM_OK(w, demill_pair_set(w, *mat, *mat, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ));
+    DM_OK(w, demill_drum_create(w, *mat, drum));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_DIAMETER, diameter));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_SPEED, speed));
+    return w;
+}
+
+/* States that calls accepted and the loader refused: a spectrum started
+ * but not yet stepped (its contact lists still without the spectrum's
+ * slot); a drum whose critical speed is undefined (no gravity, or a
+ * particle as wide as the drum), so that its speed as a fraction of
+ * critical reads NaN; a drum turning far above its critical speed (a
+ * fraction beyond that key's bounds); a particle handle used so often that
+ * it was retired. And the spectrum range of one ulp that the library took
+ * and later could not read is now refused when given. */
+START_TEST(accepted_states_reload)
+{
+    demill_world *w = mill3d(DEMILL_INTEGRATOR_VELOCITY_VERLET);
+    round_trip(w, "a spectrum started, no step since");
+    DM_OK(w, demill_world_step(w, 10));
+    round_trip(w, "a spectrum started, stepped");
+    demill_world_destroy(w);
+
+    demill_id m, drum, p;
+    w = drum_world(0.0, 0.3, 5.0, &m, &drum);
+    round_trip(w, "a drum without gravity");
+    demill_world_destroy(w);
+    w = drum_world(9.81, 0.1, 3.0, &m, &drum);
+    const double centre[3] = {0, 0, 0}, r = 0.05;
+    DM_OK(w, demill_particles_add(w, m, 1, centre, &r, NULL, 0, &p));
+    round_trip(w, "a particle as wide as the drum");
+    demill_world_destroy(w);
+    w = drum_world(9.81, 0.3, 1000.0, &m, &drum);
+    round_trip(w, "a drum at 122 times its critical speed");
+
+    bytes before = checkpoint_of(w);
+    const double e_min = 1e-6, e_max = nextafter(e_min, 1.0);
+    ck_assert_int_eq(demill_drum_spectrum_start(w, drum, 0, NULL, 10, e_min, e_max),
+                     DEMILL_ERR_INVALID_VALUE);
+    bytes after = checkpoint_of(w);
+    same_bytes(before, after, "a refused spectrum range");
+    free(before.b);
+    free(after.b);
+
+    const double x[3] = {0, -0.1, 0}, rs = 0.002;
+    for (int k = 0; k < 65537; k++) {
+        DM_OK(w, demill_particles_add(w, m, 1, x, &rs, NULL, 0, &p));
+        DM_OK(w, demill_particles_remove(w, 1, &p));
+    }
+    round_trip(w, "a retired particle handle");
+    demill_world_destroy(w);
+}
+END_TEST
+
+/* A checkpoint is a function of the state alone: two worlds that made the
+ * same calls, one on 1 thread and one on 2, with the heap left holding
+ * another world's data, save the same bytes. Before, the velocities
+ * predicted for the end of a step were left as the heap had them for new
+ * particles (symplectic Euler never writes them). */
+START_TEST(checkpoint_bytes_depend_on_state_only)
+{
+    demill_world *x = box2d(DEMILL_INTEGRATOR_VELOCITY_VERLET);
+    DM_OK(x, demill_world_step(x, 50));
+    demill_world_destroy(x); /* its arrays go back to the heap, full of data */
+    demill_world *a = box2d(DEMILL_INTEGRATOR_SYMPLECTIC_EULER);
+    demill_world *b = box2d(DEMILL_INTEGRATOR_SYMPLECTIC_EULER);
+    const demill_status t = demill_world_set(b, DEMILL_WORLD_THREADS, 2);
+    ck_assert(t == DEMILL_OK || t == DEMILL_ERR_UNSUPPORTED);
+    bytes ca = checkpoint_of(a), cb = checkpoint_of(b);
+    same_bytes(ca, cb, "new particles");
+    free(ca.b);
+    free(cb.b);
+    DM_OK(a, demill_world_step(a, 100));
+    DM_OK(b, demill_world_step(b, 100));
+    ca = checkpoint_of(a);
+    cb = checkpoint_of(b);
+    same_bytes(ca, cb, "after 100 steps of symplectic Euler");
+    free(ca.b);
+    free(cb.b);
+    demill_world_destroy(a);
+    demill_world_destroy(b);
+}
+END_TEST
+
+/* A stored value that is not finite (a particle's angle or a wall's
+ * velocity here, which the loader did not look at) is refused behind a valid checksum; and
+ * a world whose state diverged (with the watchdog off) is not saved. */
+START_TEST(values_not_finite_are_refused)
+{
+    demill_world *w = small(), *target;
+    ck_assert_int_eq(demill_world_create(3, &target), DEMILL_OK);
+    /* values found once in the checkpoint: a particle's 2D angle and the
+     * piston wall's velocity */
+    demill_id ids[20], walls[4];
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_PARTICLE, ids, 20, NULL));
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_WALL, walls, 4, NULL));
+    const double angle = 1.2345678, v[3] = {0, -0.2345678, 0};
+    DM_OK(w, demill_particle_set(w, ids[3], DEMILL_PARTICLE_ANGLE, &angle));
+    DM_OK(w, demill_wall_set_motion(w, walls[3], v, NULL, NULL));
+    bytes good = checkpoint_of(w), before = checkpoint_of(target);
+    const double values[2] = {angle, v[1]}, bad_values[2] = {NAN, -INFINITY};
+    unsigned char *bad = malloc(good.n);
+    ck_assert_ptr_nonnull(bad);
+    for (int c = 0; c < 2; c++) {
+        size_t at = 0, found = 0;
+        for (size_t k = 32; k + 8 <= good.n; k++)
+            if (!memcmp(good.b + k, &values[c], 8)) {
+                at = k;
+                found++;
+            }
+        ck_assert_uint_eq(found, 1);
+        memcpy(bad, good.b, good.n);
+        memcpy(bad + at, &bad_values[c], 8);
+        dm_test_ckpt_repair(bad, good.n);
+        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "not finite", "a value");
+    }
+    release(w, target, good, before, bad);
+
+    demill_id one;
+    w = dm_test_chain(1, 1.5, &one);
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_WATCHDOG, 0));
+    demill_status st;
+    for (int k = 0; k < 10000 && (st = demill_world_step(w, 10)) == DEMILL_OK; k++)
+        ;
+    ck_assert_int_eq(st, DEMILL_ERR_UNSTABLE);
+    size_t n = 0;
+    ck_assert_int_eq(demill_world_save_buffer(w, NULL, 0, &n), DEMILL_ERR_UNSTABLE);
+    ck_assert_msg(n == 0 && strstr(demill_world_last_error(w), "not finite"), "%zu: %s", n,
+                  demill_world_last_error(w));
+    demill_world_destroy(w);
+}
+END_TEST
+
 int main(int argc, char **argv)
 {
     self = argv[0];
@@ -626,6 +787,9 @@ int main(int argc, char **argv)
         {"drum", drum_values_the_api_refuses_are_refused, 1},
         {"empty", empty_state_into_a_refining_world, 1},
         {"files", file_errors, 1},
+        {"accepted", accepted_states_reload, 1},
+        {"state_only", checkpoint_bytes_depend_on_state_only, 1},
+        {"not_finite", values_not_finite_are_refused, 1},
     };
     for (size_t k = 0; k < sizeof tests / sizeof tests[0]; k++) {
         TCase *tc = tcase_create(tests[k].name);
