@@ -15,20 +15,22 @@ typedef struct demill_world demill_world;
 
 /** Integrators, the values of DEMILL_WORLD_INTEGRATOR. */
 enum {
-    /** Velocity Verlet (kick-drift-kick), second order; contact forces see
-     *  the half-step velocities. The default. */
+    /** Velocity Verlet (kick-drift-kick), second order; dashpots and
+     *  friction see the predicted end-of-step velocity (docs/physics.md §8).
+     *  The default. */
     DEMILL_INTEGRATOR_VELOCITY_VERLET = 1,
     /** Symplectic (semi-implicit) Euler: v += a dt, then x += v dt. First
      *  order, cheapest. */
     DEMILL_INTEGRATOR_SYMPLECTIC_EULER = 2,
-    /** The iterative refinement of PHYSICS.md §8: a Taylor step with jerk,
-     *  x += v Δt + a Δt²/2 + b Δt³/6, v += a Δt + b Δt²/2, whose jerk
+    /** The iterative refinement of Katnov (2020; docs/physics.md §8): a
+     *  Taylor step with jerk, x += v Δt + a Δt²/2 + b Δt³/6,
+     *  v += a Δt + b Δt²/2, whose jerk
      *  b = (a(t+Δt) - a(t))/Δt is refined by evaluating the forces again
      *  at the predicted state until the accelerations of successive
      *  iterates agree to DEMILL_WORLD_REFINE_TOLERANCE, or
      *  DEMILL_WORLD_REFINE_MAX_ITERATIONS force evaluations were made.
      *  Converged, it is the implicit linear-acceleration method (Newmark
-     *  β = 1/6, γ = 1/2): second order, stable up to ω Δt = 2√3 where
+     *  1959, β = 1/6, γ = 1/2): second order, stable up to ω Δt = 2√3 where
      *  Verlet is stable up to 2. Each iteration costs a force evaluation;
      *  only the accepted iterate advances the contact histories and the
      *  energy tallies. See docs/accuracy.md for what it buys. */
@@ -260,7 +262,7 @@ typedef int32_t (*demill_progress_fn)(void *user_data, uint64_t steps_done, uint
 DEMILL_API demill_status demill_world_set_progress(demill_world *world, demill_progress_fn fn,
                                                    void *user_data, uint64_t every_steps);
 
-/** Suggests a time step for the current scene (PHYSICS.md §8), from every
+/** Suggests a time step for the current scene (docs/physics.md §8), from every
  *  pair of materials that can meet: particle materials with each other and
  *  with the materials of walls and drum, each taken with its lightest
  *  particle (smallest radius), so that m* and R* are the smallest the scene
@@ -270,7 +272,8 @@ DEMILL_API demill_status demill_world_set_progress(demill_world *world, demill_p
  *  largest overlap is δ = (15 m* v² / (16 E* √R*))^(2/5), the contact lasts
  *  2.87 (m*² / (R* E*² v))^(1/5) and the stiffness 2 E* √(R* δ) sets
  *  the stability limit; the Rayleigh time π R √(ρ/G) / (0.1631 ν + 0.8766)
- *  of each particle material bounds the step too (0.2 of it, as is usual).
+ *  of each particle material (Li, Xu and Thornton 2005) bounds the step
+ *  too (0.2 of it, as is usual).
  *  The suggestion is the smallest of: contact time / steps_per_contact,
  *  0.2 Rayleigh time (Hertz) and 0.2 of the stability limit.
  *  @param world             the world.

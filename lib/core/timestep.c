@@ -1,4 +1,4 @@
-/* timestep.c: the time step a scene needs (PHYSICS.md §8): contact durations
+/* timestep.c: the time step a scene needs (docs/physics.md §8): contact durations
  * and stability limits of the material pairs that can meet, and the Rayleigh
  * time of Hertz materials. */
 #include <math.h>

@@ -1,4 +1,4 @@
-/* watchdog.c: the stability watchdog (PHYSICS.md §8): steps in stretches
+/* watchdog.c: the stability watchdog (docs/physics.md §8): steps in stretches
  * of world.watchdog_interval, checks the state after each, and keeps a copy
  * of the last state that passed, to which the world returns when a check
  * fails.
