@@ -1,5 +1,5 @@
-/* accuracy.c: the work-precision study of the integrators (issue 5 item 4;
- * docs/accuracy.md, bench/README.md).
+/* accuracy.c: the work-precision study of the integrators (docs/accuracy.md,
+ * bench/README.md).
  *
  * For each integrator (symplectic Euler, velocity Verlet, the iterative
  * refinement at several tolerances ε_a) and time step Δt = t_c / n (t_c a

@@ -1,5 +1,5 @@
 /* demill_bench.c: libdemill's side of the benchmark (bench/run). Builds a
- * canonical drum of SCENES.md (or the same drum scaled to another particle
+ * canonical drum of docs/scenes.md (or the same drum scaled to another particle
  * count, the drum grown to keep the fill), settles it for 0.3 s, turns it at
  * 75 % of critical for 0.3 s, then times a window of steps on the moving
  * charge and prints one line:

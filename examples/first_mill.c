@@ -1,6 +1,7 @@
 /* first_mill.c: a small ball mill. A drum 20 cm across with four lifters,
- * a quarter filled with 12 mm steel balls, turns at 75 % of its critical
- * speed; the program prints the power it draws and where the charge lies.
+ * a quarter filled with steel balls 12 mm in diameter, turns at 75 % of its
+ * critical speed; the program prints the power it draws and where the charge
+ * lies.
  * The second program of docs/getting-started-c.md, which shows this file as
  * it is (the test api_docs_snippets keeps the two the same). */
 #include <demill.h>
@@ -25,7 +26,7 @@ int main(void)
 {
     demill_world *w = NULL;
     demill_id steel, drum;
-    const double balls[2] = {0.012, 1.0}; /* one size class: 12 mm, all of the mass */
+    const double balls[2] = {0.012, 1.0}; /* one size class: 12 mm diameter, all the mass */
     size_t n;
     int32_t settled;
     double revolutions = 0, power, toe, shoulder;

@@ -1,6 +1,8 @@
 /* two_balls.c: two steel balls collide head-on, then a spinning ball is set
  * down on a floor and starts to roll. Prints what happens and compares it
- * with theory (Hertz impact; seed 000, fig. 7: v = 2/7 R ω0).
+ * with theory (Hertz impact, Johnson 1985, Contact Mechanics, §11.4; a ball
+ * set spinning on a floor rolls off at v = 2/7 R ω0, from its angular momentum
+ * about the contact point).
  *
  *   two_balls            run both scenes
  */

@@ -1,19 +1,20 @@
 #!/usr/bin/python3
 """peers.py: geometry and particle files for the peer codes (LIGGGHTS, LAMMPS)
-on the canonical scenes of SCENES.md.  Used by bench/run; no third-party code.
+on the canonical scenes of docs/scenes.md.  Used by bench/run; no third-party
+code.
 
   peers.py params SCENE              print the scene's numbers as KEY=VALUE lines
   peers.py stl SCENE OUT.stl         the drum as an ASCII STL mesh (LIGGGHTS)
   peers.py data CODE SCENE PACKING OUT.data
                                      a read_data file from `demill_bench
                                      --dump-packing` (x y z r per line)
-  peers.py packing SCENE OUT         the packing of SCENES.md written here in
+  peers.py packing SCENE OUT         the packing of docs/scenes.md written here in
                                      Python (random.Random(12345)), the same
                                      numbers as demill_bench --dump-packing;
                                      bench/run falls back on it when libdemill
                                      does not build
 
-drum3d mesh (SCENES.md): the shell is a 120-gon inscribed in R = 0.15 m
+drum3d mesh (docs/scenes.md): the shell is a 120-gon inscribed in R = 0.15 m
 (vertices at 0, 3, 6, ... degrees, flat-to-flat radius 0.14995 m) split into 4
 along z, the end caps z = +-0.05 m are fans from the axis to the shell's
 vertices, and the 8 lifters are their inner face (0.135 m from the axis) and
@@ -62,7 +63,7 @@ def params(scene):
 
 
 def packing(scene):
-    """SCENES.md: a square (2D) / simple-cubic (3D) lattice of spacing 2.1 r =
+    """docs/scenes.md: a square (2D) / simple-cubic (3D) lattice of spacing 2.1 r =
     6.3 mm; the sites with x^2 + y^2 <= Rs^2 sorted by (y, x, z index), the
     lowest N kept; each coordinate jittered by uniform(-0.1, 0.1) mm from
     random.Random(12345) (drum3d: 15 layers from z = -0.046 m)."""

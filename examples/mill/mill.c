@@ -2,10 +2,10 @@
  *
  * By default a 3D mill of the drum3d scene's geometry and materials (a
  * 0.3 m x 0.1 m drum with eight 15 mm lifters, steel balls, Hertz-Mindlin
- * contacts with restitution 0.5 and friction 0.5) charged with 5 mm balls of
- * the drum3d charge's mass, settled for 0.3 s and turned for two
- * revolutions at 75 % of critical speed. --scene drum3d and --scene drum2d
- * run the canonical scenes of SCENES.md exactly. Writes a time series, a
+ * contacts with restitution 0.5 and friction 0.5) charged with balls of
+ * 5 mm radius to the drum3d charge's mass, settled for 0.3 s and turned for
+ * two revolutions at 75 % of critical speed. --scene drum3d and --scene
+ * drum2d run the canonical scenes exactly, as docs/scenes.md defines them. Writes a time series, a
  * summary, VTK files for ParaView and two pictures to the output folder;
  * progress goes to stderr. Run `mill --help` for the options.
  */
@@ -39,8 +39,9 @@ static void usage(FILE *f)
           "Simulates a ball mill with libdemill and writes mill.csv, summary.txt, VTK files,\n"
           "charge.png and power.png to the output folder.\n\n"
           "  --scene NAME         default (a laboratory mill), drum3d or drum2d (the canonical\n"
-          "                       scenes of SCENES.md, exactly; geometry options then not allowed)\n"
-          "  --dim 2|3            2D (discs in a plane) or 3D [3]\n"
+          "                       scenes of docs/scenes.md, exactly; geometry options then not\n"
+          "                       allowed)\n"
+          "  --dim 2|3            2D (spheres moving in a plane) or 3D [3]\n"
           "  --diameter D         inner drum diameter, m [0.3]\n"
           "  --length L           drum length, m (3D) [0.1]\n"
           "  --speed PCT          speed, % of critical [75]\n"
@@ -148,7 +149,7 @@ static int parse_options(int argc, char **argv, options *o)
     }
     if (strcmp(o->scene, "default")) {
         if (geometry) {
-            fprintf(stderr, "mill: --scene %s is fixed by SCENES.md; only --revolutions, "
+            fprintf(stderr, "mill: --scene %s is fixed (docs/scenes.md); only --revolutions, "
                             "--vtk-every, --threads and --out may be given with it\n",
                     o->scene);
             return -1;

@@ -8,7 +8,7 @@
 
 #include <demill.h>
 
-/* A packing after SCENES.md: lattice sites of spacing 6.3 mm with
+/* A packing as docs/scenes.md defines it: lattice sites of spacing 6.3 mm with
  * x² + y² <= site_radius², in `layers` layers from z0 (3D), the lowest
  * `particles` of them, jittered with Python's random.Random(12345). */
 typedef struct scene_def {

@@ -1,4 +1,4 @@
-/* scene.c: the canonical drums of SCENES.md, packed exactly as defined
+/* scene.c: the canonical drums of docs/scenes.md, packed exactly as defined
  * there (drum3d: 15 layers from z = -0.046 m): a lattice of spacing 6.3 mm,
  * the lowest N sites inside the drum (sorted by y, then x, then z index),
  * each coordinate jittered by ±0.1 mm with Python's random.Random(12345). Python's generator is the Mersenne

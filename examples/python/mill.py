@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 """The default mill of examples/mill, from Python: a 0.3 m x 0.1 m drum with
-eight 15 mm lifters, 8.82 kg of 5 mm steel balls (Hertz-Mindlin contacts,
-restitution 0.5, friction 0.5), settled for 0.3 s at rest and turned for two
-revolutions at 75 % of critical speed. Prints the mean power draw over the
-last revolution, the toe and the shoulder as build/examples/mill does, and
-plots the power draw against time.
+eight 15 mm lifters, 8.82 kg of steel balls of 5 mm radius (Hertz-Mindlin
+contacts, restitution 0.5, friction 0.5), settled for 0.3 s at rest and
+turned for two revolutions at 75 % of critical speed. Prints the mean power
+draw over the last revolution, the toe and the shoulder as
+build/examples/mill does, and plots the power draw against time.
 
     PYTHONPATH=python /usr/bin/python3 examples/python/mill.py --out power.png
 """

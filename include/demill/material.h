@@ -39,9 +39,9 @@ enum {
 enum {
     /** No model: the pair may not touch (the default for every pair). */
     DEMILL_NORMAL_NONE = 0,
-    /** Linear spring F = k_n δ (PHYSICS.md §2). */
+    /** Linear spring F = k_n δ (Cundall and Strack 1979; docs/physics.md §2). */
     DEMILL_NORMAL_LINEAR = 1,
-    /** Hertz F = 4/3 E* √R* δ^{3/2} (PHYSICS.md §2). */
+    /** Hertz F = 4/3 E* √R* δ^{3/2} (Hertz 1882; docs/physics.md §2). */
     DEMILL_NORMAL_HERTZ = 2
 };
 
@@ -53,8 +53,9 @@ enum {
      *  DEMILL_PAIR_VISCOUS_DAMPING. */
     DEMILL_DAMPING_VISCOUS = 1,
     /** Damping from the coefficient of restitution. Linear law: critical
-     *  damping ratio ξ, c_n = 2 ξ √(m* k_n). Hertz: the nonlinear Tsuji form
-     *  c_n = 2 √(5/6) ξ √(m* S_n), S_n = 2 E* √(R* δ). ξ is chosen so that
+     *  damping ratio ξ, c_n = 2 ξ √(m* k_n). Hertz: the nonlinear form of
+     *  Tsuji, Tanaka and Ishida (1992), c_n = 2 √(5/6) ξ √(m* S_n),
+     *  S_n = 2 E* √(R* δ). ξ is chosen so that
      *  an isolated binary collision rebounds with exactly the pair's
      *  restitution, with or without DEMILL_PAIR_CLAMP_NORMAL. Heavy damping
      *  (small e) lowers the stable time step (see
@@ -66,7 +67,7 @@ enum {
 enum {
     /** Frictionless (default). */
     DEMILL_TANGENTIAL_NONE = 0,
-    /** Regularised dynamic Coulomb friction (seed 000 eq. 8):
+    /** Regularised dynamic Coulomb friction (Haff and Werner 1986):
      *  F_t = -min(μ |F_n|, γ_t |v_t|) v_t/|v_t|, γ_t from
      *  DEMILL_PAIR_COULOMB_REGULARISATION. No history. */
     DEMILL_TANGENTIAL_COULOMB = 1,
@@ -74,7 +75,8 @@ enum {
      *  is the pair's linear stiffness (DEMILL_PAIR_NORMAL_STIFFNESS) and ratio
      *  is DEMILL_PAIR_TANGENTIAL_STIFFNESS_RATIO. */
     DEMILL_TANGENTIAL_SPRING = 2,
-    /** Spring-slider with history, Mindlin stiffness k_t = 8 G* √(R* δ). */
+    /** Spring-slider with history, Mindlin stiffness k_t = 8 G* √(R* δ)
+     *  (Mindlin and Deresiewicz 1953; docs/physics.md §4). */
     DEMILL_TANGENTIAL_MINDLIN = 3
 };
 
@@ -82,7 +84,8 @@ enum {
 enum {
     /** No rolling resistance (default). */
     DEMILL_ROLLING_NONE = 0,
-    /** Constant torque (seed 000 eq. 11): M_r = -min(μ_r R* |F_n|, γ_r |ω_rel|)
+    /** Constant torque (model type A of Ai, Chen, Rotter and Ooi 2011;
+     *  docs/physics.md §5): M_r = -min(μ_r R* |F_n|, γ_r |ω_rel|)
      *  ω_rel/|ω_rel| with ω_rel = ω_a - ω_b; γ_r from
      *  DEMILL_PAIR_ROLLING_REGULARISATION. */
     DEMILL_ROLLING_CONSTANT_TORQUE = 1

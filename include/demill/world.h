@@ -15,20 +15,22 @@ typedef struct demill_world demill_world;
 
 /** Integrators, the values of DEMILL_WORLD_INTEGRATOR. */
 enum {
-    /** Velocity Verlet (kick-drift-kick), second order; contact forces see
-     *  the half-step velocities. The default. */
+    /** Velocity Verlet (kick-drift-kick), second order; dashpots and
+     *  friction see the predicted end-of-step velocity (docs/physics.md §8).
+     *  The default. */
     DEMILL_INTEGRATOR_VELOCITY_VERLET = 1,
     /** Symplectic (semi-implicit) Euler: v += a dt, then x += v dt. First
      *  order, cheapest. */
     DEMILL_INTEGRATOR_SYMPLECTIC_EULER = 2,
-    /** The iterative refinement of PHYSICS.md §8: a Taylor step with jerk,
-     *  x += v Δt + a Δt²/2 + b Δt³/6, v += a Δt + b Δt²/2, whose jerk
+    /** The iterative refinement of Katnov (2020; docs/physics.md §8): a
+     *  Taylor step with jerk, x += v Δt + a Δt²/2 + b Δt³/6,
+     *  v += a Δt + b Δt²/2, whose jerk
      *  b = (a(t+Δt) - a(t))/Δt is refined by evaluating the forces again
      *  at the predicted state until the accelerations of successive
      *  iterates agree to DEMILL_WORLD_REFINE_TOLERANCE, or
      *  DEMILL_WORLD_REFINE_MAX_ITERATIONS force evaluations were made.
      *  Converged, it is the implicit linear-acceleration method (Newmark
-     *  β = 1/6, γ = 1/2): second order, stable up to ω Δt = 2√3 where
+     *  1959, β = 1/6, γ = 1/2): second order, stable up to ω Δt = 2√3 where
      *  Verlet is stable up to 2. Each iteration costs a force evaluation;
      *  only the accepted iterate advances the contact histories and the
      *  energy tallies. See docs/accuracy.md for what it buys. */
@@ -286,7 +288,8 @@ DEMILL_API demill_status demill_world_set_progress(demill_world *world, demill_p
  *  v the largest overlap is δ = (15 m* v² / (16 E* √R*))^(2/5), the contact
  *  lasts 2.87 (m*² / (R* E*² v))^(1/5) and the stiffness S = 2 E* √(R* δ)
  *  gives ω = √(S/m*); the Rayleigh time π R √(ρ/G) / (0.1631 ν + 0.8766)
- *  of each particle material bounds the step too (0.2 of it, as is usual).
+ *  of each particle material (Li, Xu and Thornton 2005) bounds the step too
+ *  (0.2 of it, as is usual).
  *  The stability limit of a pair is the smallest over its contact's modes
  *  of 2/(√(ω² + 4β²) + 2β), β = c/(2m) the damping rate of the mode's
  *  dashpot c (2/ω undamped; about 1/(2ξω) for a heavy damping ratio ξ):

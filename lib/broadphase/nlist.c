@@ -1,4 +1,4 @@
-/* nlist.c: the neighbour build (PHYSICS.md §9). Particles are sorted by cell
+/* nlist.c: the neighbour build (docs/physics.md §9). Particles are sorted by cell
  * of a uniform grid, then every pair closer than the sum of radii plus the
  * skin is listed once (i < j in storage order) in the bucket of its contact
  * kernel, with the history of contacts that were already touching carried

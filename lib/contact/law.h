@@ -1,5 +1,5 @@
 /* law.h: the contact force law of one contact, composed of a normal law, a
- * damping law, a tangential law and a rolling law (PHYSICS.md §2-5).
+ * damping law, a tangential law and a rolling law (docs/physics.md §2-5).
  *
  * dm_law() is written once and specialised by the compiler: the kernels call
  * it with compile-time constant law choices and dimension, so a part that is

@@ -1,5 +1,5 @@
 /* restitution.c: the damping ratio that gives a required coefficient of
- * restitution (PHYSICS.md §3).
+ * restitution (docs/physics.md §3).
  *
  * For the linear spring-dashpot x'' + 2ξx' + x = 0 (time in units of 1/ω0),
  * x(0) = 0, x'(0) = 1, the rebound velocity is the restitution e(ξ). Without a

@@ -1,4 +1,4 @@
-/* energy.c: the energy account of PHYSICS.md §10 and the contact queries,
+/* energy.c: the energy account of docs/physics.md §10 and the contact queries,
  * both read from the current state without changing it. */
 #include <string.h>
 

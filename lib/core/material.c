@@ -1,5 +1,5 @@
 /* material.c: materials, the user's per-pair choices, and their resolution
- * into the constants the contact kernels read (PHYSICS.md §2-5). */
+ * into the constants the contact kernels read (docs/physics.md §2-5). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -182,7 +182,7 @@ static void pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *
             v[k] = u->value[k];
 }
 
-/* E* and G* of PHYSICS.md (notation section). */
+/* E* and G* (docs/physics.md, notation). */
 static void elastic_moduli(const dm_material *ma, const dm_material *mb, double *e_star,
                            double *g_star)
 {

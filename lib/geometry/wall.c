@@ -1,4 +1,4 @@
-/* wall.c: walls with prescribed rigid motion (PHYSICS.md §7): the API, their
+/* wall.c: walls with prescribed rigid motion (docs/physics.md §7): the API, their
  * exact kinematics and the contact geometry of each particle-wall candidate.
  * Kinds: planes (free walls, and the drum's end caps), the inside of the
  * drum's cylindrical shell, and prisms with a convex polygonal cross-section

@@ -1,4 +1,4 @@
-/* integrate.c: time stepping (PHYSICS.md §8) behind one interface,
+/* integrate.c: time stepping (docs/physics.md §8) behind one interface,
  * dm_integrate(): velocity Verlet (default), symplectic Euler and the
  * iterative refinement (refine.c). Each step
  * moves the particles, advances the walls, rebuilds the neighbour lists when

@@ -1,5 +1,6 @@
-/* refine.c: the iterative refinement integrator (PHYSICS.md §8; seed 000
- * §2.3 and §2.9).
+/* refine.c: the iterative refinement integrator of Katnov (2020, §2.3 and
+ * §2.9; docs/physics.md §8, which shows that, converged, it is the
+ * linear-acceleration method of Newmark 1959).
  *
  * A step from t to t + Δt predicts the state with a Taylor step that has a
  * jerk b, the rate of change of the acceleration over the step:

@@ -1,4 +1,4 @@
-/* drum.c: the mill drum (PHYSICS.md §7): its walls (shell, end caps,
+/* drum.c: the mill drum (docs/physics.md §7): its walls (shell, end caps,
  * lifters) built from a few numbers, its speed in rad/s, rpm or as a
  * fraction of critical with an optional ramp, and what mill engineers read
  * from it (power, lifter loads, charge shape) with means over whole

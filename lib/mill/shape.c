@@ -1,5 +1,5 @@
 /* shape.c: the charge's toe, shoulder and centre-of-mass angles, computed
- * from the particle positions by the reference rule of SCENES.md.
+ * from the particle positions by the reference rule of docs/scenes.md.
  *
  * Angles φ are measured at the axis from the downward vertical, positive in
  * the direction of rotation. The particles in the ring R - h - 2d < r < R next

@@ -107,8 +107,9 @@ PROTOTYPES = {
     "demill_world_settle": (status, (WorldP, c_double, c_double, POINTER(c_int32))),
 }
 
-#: Functions of issue 6 (progress, VTK output, snapshots and checkpoints,
-#: object listing): bound when the library has them.
+#: Functions newer than the oldest library this binding supports (progress,
+#: VTK output, snapshots and checkpoints, object listing): bound when the
+#: library has them.
 OPTIONAL_PROTOTYPES = {
     "demill_world_set_progress": (status, (WorldP, ProgressFn, c_void_p, c_uint64)),
     "demill_vtk_write_particles": (status, (WorldP, c_char_p)),

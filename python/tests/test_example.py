@@ -1,5 +1,5 @@
 """examples/python/mill.py: its scene is the C example's (the charge of the
-drum3d mass in 5 mm balls, inside the drum) and its plot is written."""
+drum3d mass in balls of 5 mm radius, inside the drum) and its plot is written."""
 
 import importlib.util
 import math

@@ -1,6 +1,6 @@
 /* collision.c: binary collisions against analytic solutions.
  *
- * Linear spring-dashpot (PHYSICS.md §2-3): with damping ratio
+ * Linear spring-dashpot (docs/physics.md §2-3): with damping ratio
  * ξ = -ln e / √(π² + ln² e) the rebound velocity is e times the approach
  * velocity and the contact lasts π/ω_d, ω_d = √(k/m*) √(1-ξ²) (the classic
  * unclamped model). Hertz (Johnson, Contact Mechanics §11.4): maximum overlap

@@ -1,7 +1,8 @@
-/* directions.c: two-body direction tests (seed 000 §2.10 item 3).
+/* directions.c: two-body direction tests worked out by hand (as Katnov 2020,
+ * §2.10, checked his model; docs/physics.md lists the reference).
  *
  * What this suite proves: for two-body situations whose answer can be worked
- * out by hand (PHYSICS.md §2-7), the library gives forces, torques and spins
+ * out by hand (docs/physics.md §2-7), the library gives forces, torques and spins
  * of the right sign AND the right magnitude, in 2D and in 3D: head-on
  * repulsion along the line of centres; the normal dashpot adding to or
  * subtracting from the repulsion, with and without the clamp F_n >= 0;
@@ -18,7 +19,7 @@
  * contacts through demill_contacts_read() and checks that they add up to the
  * per-particle totals (a second, independent view of the same forces).
  *
- * Conventions (PHYSICS.md notation, demill/query.h): n points from body a to
+ * Conventions (docs/physics.md notation, demill/query.h): n points from body a to
  * body b; forces in the contact view are those b exerts on a. Relative
  * velocity at the contact point v_c = (v_b + ω_b × r_b) - (v_a + ω_a × r_a)
  * with lever arms r_a = (R_a - δ/2) n, r_b = -(R_b - δ/2) n. Friction on b is
@@ -390,7 +391,7 @@ END_TEST
  * (i) Viscous c_n = 100 N s/m, u = 0.1 m/s: k δ - c_n u = -5 N, attractive:
  *     a is pulled towards b, F_a = (+5, 0, 0), F_b = (-5, 0, 0) N.
  * (ii) Damping from restitution e = 0.5 without the clamp (the classic
- *     model, PHYSICS.md §3): ξ = -ln e/√(π² + ln² e) = 0.21545,
+ *     model, docs/physics.md §3): ξ = -ln e/√(π² + ln² e) = 0.21545,
  *     m* = m/2, c_n = 2 ξ √(m* k) = 6.9722 N s/m; u = 1 m/s:
  *     F = k δ - c_n u = 5 - 6.9722 = -1.9722 N, again a pull. */
 START_TEST(receding_unclamped_pulls)
@@ -980,8 +981,8 @@ END_TEST
  * F_a = (-k δ, -μ k δ, 0) = -F_b, so F_a + F_b = 0 (no gravity).
  * T_a = -(R_a - δ/2) μ k δ ẑ = -2.4875e-2 ẑ N m,
  * T_b = -(R_b - δ/2) μ k δ ẑ = -7.4875e-2 ẑ N m: the ratio is
- * (R_b - δ/2)/(R_a - δ/2) = 3.0101, not 1 as the seed's R* lever arm
- * (000 eq. 10, rejected in PHYSICS.md §4) would give.
+ * (R_b - δ/2)/(R_a - δ/2) = 3.0101, not 1 as an R* lever arm for both
+ * bodies (rejected in docs/physics.md §4) would give.
  * Contact point: x_a + (R_a - δ/2) x̂. */
 START_TEST(unequal_radii_lever_arms)
 {

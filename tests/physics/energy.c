@@ -1,4 +1,4 @@
-/* energy.c: the energy account of PHYSICS.md §10.
+/* energy.c: the energy account of docs/physics.md §10.
  *
  * A frictionless elastic gas in a closed box conserves kinetic + gravitational
  * + elastic energy: over 10^5 steps the total may wander by less than 10^-3 of

@@ -1,4 +1,5 @@
-/* rolling.c: the rolling tests of seed 000 (fig. 7) and of PHYSICS.md §5.
+/* rolling.c: a spinning ball set on a rough floor starts to roll (docs/physics.md
+ * §4), and rolling resistance stops a rolling ball (§5).
  *
  * A ball spinning at ω0 with no linear velocity, set on a rough floor, slides
  * while Coulomb friction μ m g acts at the contact. With k = I/(m R²) (2/5 for

@@ -1,5 +1,5 @@
 /* timestep.c: demill_world_suggest_time_step() against numbers derived by
- * hand from the rule in demill/world.h (PHYSICS.md §8), and against a
+ * hand from the rule in demill/world.h (docs/physics.md §8), and against a
  * collision run at the step it suggests.
  *
  * The expected numbers are computed here from the definitions only: masses
