@@ -20,15 +20,19 @@
  * Contact histories: each iterate's evaluation advances the tangential
  * springs by the displacement of that iterate, v̄ Δt with the mean velocity
  * v̄ = (x - x_n)/Δt, and the dashpots see the predicted end velocity. Every
- * iterate starts from the histories (and energy tallies) of the start of the
- * step, restored from a copy, so that only the accepted iterate's update
- * remains. Neighbour lists are rebuilt only at the start of a step, so that
- * the copy stays valid: when an iterate leaves the lists' reach, the lists
- * are rebuilt at the start of the step and the iterations start again; an
- * iterate that leaves the reach of lists built at the start of its own step
- * (more than half the skin in one step) has gone wrong, and the step is
- * given up. The particle arrays of the start of the step trade places
- * with the world's instead of being copied. */
+ * iterate starts from the histories, touch flags (and energy tallies) of the
+ * start of the step, restored from a copy, so that only the accepted
+ * iterate's update remains, and so that the law knows a contact's first
+ * sample by its flag (off: apart at the last step) in every iterate: an
+ * estimate from the iterate's overlap and end velocity, which already
+ * carries the contact's deceleration, would not tell it. Neighbour lists
+ * are rebuilt only at the start of a step, so that the copy stays valid:
+ * when an iterate leaves the lists' reach, the lists are rebuilt at the
+ * start of the step and the iterations start again; an iterate that leaves
+ * the reach of lists built at the start of its own step (more than half
+ * the skin in one step) has gone wrong, and the step is given up. The
+ * particle arrays of the start of the step trade places with the world's
+ * instead of being copied. */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
