@@ -20,7 +20,7 @@
  *
  * The problems:
  *   linear_restitution  binary impact, linear spring-dashpot, e = 0.5: worst
- *                       |e_meas - e| / e over PHASES entry phases;
+ *                       |e_meas - e| / e over the entry phases (phases[]);
  *                       t_c = π / ω_d, the damped half period
  *   hertz_restitution   the same with Hertz and Tsuji's damping;
  *                       t_c the undamped Hertz duration at 1 m/s
@@ -66,7 +66,6 @@
 #define YOUNG 1e8     /* Pa, of every material (Hertz) */
 #define POISSON 0.3
 #define DENSITY 2500  /* kg/m³, of all but the mill's steel balls */
-#define PHASES 8                  /* entry phases of a binary impact */
 #define MIN_TIME 0.05             /* s: shorter measurements are repeated */
 #define GAS_SPAN 5000.0           /* contact durations of the gas run (quick: 1/20) */
 #define MILL_REFERENCE_STEPS 400  /* steps per contact of the mill's reference */
@@ -324,6 +323,14 @@ static impact collide(run *r, demill_id mat, double rad, double v0, double dt, d
     return o;
 }
 
+/* The entry phases of a binary impact (the fraction of a step after a
+ * sample at which the bodies touch): eight spread evenly, and contacts
+ * that begin 1e-4 and 1e-2 of a step after a sample or before one, where
+ * the entry correction's first sample is nearly a step old or nearly
+ * new. */
+static const double phases[] = {1e-4,   1e-2,   0.0625, 0.1875, 0.3125,   0.4375,
+                                 0.5625, 0.6875, 0.8125, 0.9375, 1 - 1e-2, 1 - 1e-4};
+
 #define LINEAR_RADIUS 0.005
 #define LINEAR_STIFFNESS 5e4 /* N/m */
 #define HERTZ_RADIUS 0.003
@@ -339,8 +346,8 @@ static double impacts(run *r, int normal, int damping, double e, double rad, dou
         pair(r, m, DEMILL_PAIR_NORMAL_STIFFNESS, LINEAR_STIFFNESS);
     pair(r, m, DEMILL_PAIR_RESTITUTION, e);
     double worst = 0;
-    for (int p = 0; p < PHASES; p++) {
-        const impact o = collide(r, m, rad, 1.0, tc / r->spc, (p + 0.5) / PHASES);
+    for (size_t p = 0; p < sizeof phases / sizeof phases[0]; p++) {
+        const impact o = collide(r, m, rad, 1.0, tc / r->spc, phases[p]);
         worst = worse(worst, duration ? rel(o.duration, tc) : rel(o.restitution, e));
     }
     close_world(r);

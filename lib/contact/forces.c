@@ -253,7 +253,7 @@ static void contact_record(int dim, dm_laws l, const dm_pairparam *pp, const dm_
     double h[DM_MAX_HIST];
     dm_law_out o;
     dm_law(dim, l.normal, l.damping, l.tangential, l.rolling, pp, q->n, q->delta, q->vc, q->dc,
-           q->wrel, q->rstar, q->mstar, 0.0, 0.0, hist, h, &o);
+           q->wrel, q->rstar, q->mstar, 0.0, 0.0, 0, hist, h, &o);
     memset(e->point, 0, sizeof e->point);
     memset(e->normal, 0, sizeof e->normal);
     memset(e->fn, 0, sizeof e->fn);

@@ -189,17 +189,19 @@ typedef struct dm_chunk {
     uint32_t touch[DM_CHUNK];          /* whether each candidate touches */
     uint32_t k[DM_CHUNK];              /* the touching pairs, indices in the bucket */
     uint32_t pp[DM_CHUNK];             /* and their entries in the pair table */
+    uint32_t first[DM_CHUNK];          /* 1 if the pair was apart at the last step */
     double f[3][DM_CHUNK];             /* force on b */
     double ta[3][DM_CHUNK], tb[3][DM_CHUNK]; /* torques on a and b (W components) */
     double diss[4][DM_CHUNK];          /* normal, tangential, friction, rolling */
     double h[DM_MAX_HIST][DM_CHUNK];   /* histories, then their new values */
 } dm_chunk;
 
-/* Copies the histories of the chunk's m touching pairs into it, and their
- * entries in the pair table (WALLS: the pairs of bucket b are particle-wall
- * pairs); pads the list with copies of its last pair to a whole number of
- * vector lanes, which the law's loop then needs no scalar remainder for.
- * Returns the padded length. */
+/* Copies the histories of the chunk's m touching pairs into it, whether
+ * each is a new contact (its touch flag off), and their entries in the pair
+ * table (WALLS: the pairs of bucket b are particle-wall pairs); pads the
+ * list with copies of its last pair to a whole number of vector lanes, which
+ * the law's loop then needs no scalar remainder for. Returns the padded
+ * length. */
 DM_INLINE uint32_t dm_chunk_load(const int HSL, const int WALLS, const demill_world *w,
                                  const dm_bucket *b, dm_chunk *ch, uint32_t m)
 {
@@ -208,21 +210,23 @@ DM_INLINE uint32_t dm_chunk_load(const int HSL, const int WALLS, const demill_wo
         const uint32_t k = ch->k[s], j = b->j[k];
         for (int c = 0; c < HSL; c++)
             ch->h[c][s] = b->hist[(size_t)b->hs * k + c];
+        ch->first[s] = !b->on[k];
         ch->pp[s] = mat[b->i[k]] * w->nmat_tab + (WALLS ? w->walls[j].material : mat[j]);
     }
     const uint32_t padded = m ? (m + DM_LANES - 1) / DM_LANES * DM_LANES : 0;
     for (uint32_t s = m; s < padded; s++) {
         ch->k[s] = ch->k[m - 1];
         ch->pp[s] = ch->pp[m - 1];
+        ch->first[s] = ch->first[m - 1];
         for (int c = 0; c < HSL; c++)
             ch->h[c][s] = ch->h[c][m - 1];
     }
     return padded;
 }
 
-/* The law for pair s of a chunk with kinematics q, from the history loaded
- * into the chunk; stores the force on b, the torques on a (lever arm ai) and
- * b (aj), the dissipation and the new history. */
+/* The law for pair s of a chunk with kinematics q, from the history and
+ * new-contact flag loaded into the chunk; stores the force on b, the torques
+ * on a (lever arm ai) and b (aj), the dissipation and the new history. */
 DM_INLINE void dm_chunk_law(const int D, const int NL, const int DL, const int TL, const int RL,
                             const int HSL, dm_chunk *ch, uint32_t s, const dm_pairparam *pp,
                             const dm_kin *q, double dt_hist, double reach)
@@ -233,7 +237,7 @@ DM_INLINE void dm_chunk_law(const int D, const int NL, const int DL, const int T
         hin[c] = ch->h[c][s];
     dm_law_out o;
     dm_law(D, NL, DL, TL, RL, pp, q->n, q->delta, q->vc, q->dc, q->wrel, q->rstar, q->mstar,
-           dt_hist, reach, hin, hout, &o);
+           dt_hist, reach, (int)ch->first[s], hin, hout, &o);
     double nf[3];
     dm_n_cross(D, q->n, o.ft, nf);
     for (int c = 0; c < D; c++)

@@ -17,19 +17,33 @@
  * step (free flight), and every other step iterates, so that it stays
  * second order whatever ε_a. The accepted state is the last one evaluated,
  * so that the forces kept for the next step are those of the state reached.
+ * A step that stops at the limit unconverged takes its end velocities from
+ * those forces, v = v_n + Δt (a_n + a_k)/2, not from the a_(k-1) its
+ * positions were made with: every force sample then gives its impulse once,
+ * half in each of the steps next to it, as in a converged step. Where the
+ * iterates do not converge at all this matters: a contact that begins just
+ * before the end of a step has no fixed point (the dashpot's force jumps at
+ * contact, so that the iterate in contact makes a jerk that takes the next
+ * one out of contact, and so on), and the step kept half a step's impulse
+ * of a force its state did not have, or lost one, by the parity of the
+ * limit (e up to 3.4 % off at e = 0.1, 0.7 % at e = 0.5).
  *
  * Contact histories: each iterate's evaluation advances the tangential
  * springs by the displacement of that iterate, v̄ Δt with the mean velocity
  * v̄ = (x - x_n)/Δt, and the dashpots see the predicted end velocity. Every
- * iterate starts from the histories (and energy tallies) of the start of the
- * step, restored from a copy, so that only the accepted iterate's update
- * remains. Neighbour lists are rebuilt only at the start of a step, so that
- * the copy stays valid: when an iterate leaves the lists' reach, the lists
- * are rebuilt at the start of the step and the iterations start again; an
- * iterate that leaves the reach of lists built at the start of its own step
- * (more than half the skin in one step) has gone wrong, and the step is
- * given up. The particle arrays of the start of the step trade places
- * with the world's instead of being copied. */
+ * iterate starts from the histories, touch flags (and energy tallies) of the
+ * start of the step, restored from a copy, so that only the accepted
+ * iterate's update remains, and so that the law knows a contact's first
+ * sample by its flag (off: apart at the last step) in every iterate: an
+ * estimate from the iterate's overlap and end velocity, which already
+ * carries the contact's deceleration, would not tell it. Neighbour lists
+ * are rebuilt only at the start of a step, so that the copy stays valid:
+ * when an iterate leaves the lists' reach, the lists are rebuilt at the
+ * start of the step and the iterations start again; an iterate that leaves
+ * the reach of lists built at the start of its own step (more than half
+ * the skin in one step) has gone wrong, and the step is given up. The
+ * particle arrays of the start of the step trade places with the world's
+ * instead of being copied. */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -279,6 +293,35 @@ DM_INLINE void converged(const int D, demill_world *w, refine_args *a, int t, ui
     a->bad[t] = bad;
 }
 
+/* An unconverged step: the end velocities (and angular velocities) from the
+ * forces it keeps, v = v_n + Δt (a_n + a_k)/2, instead of from the a_(k-1)
+ * its jerk came from (see the top of the file). */
+DM_INLINE void trapezoid(const int D, demill_world *w, refine_args *a, uint32_t i0, uint32_t i1)
+{
+    const int W = D == 3 ? 3 : 1;
+    dm_particles *P = &w->p;
+    const dm_refine *R = &w->refine;
+    double *restrict vp = P->vp;
+    const double *restrict vn = R->vn, *restrict fn = R->fn, *restrict f = P->f;
+    const double *restrict im = P->im;
+    const double h = 0.5 * a->dt;
+    for (uint32_t i = i0; i < i1; i++)
+        for (int c = 0; c < D; c++) {
+            const size_t q = (size_t)D * i + c;
+            vp[q] = vn[q] + h * (fn[q] + f[q]) * im[i];
+        }
+    if (!a->rotation)
+        return;
+    double *restrict wp = P->wp;
+    const double *restrict wn = R->wn, *restrict tn = R->tn, *restrict tq = P->t;
+    const double *restrict ii = P->iinv;
+    for (uint32_t i = i0; i < i1; i++)
+        for (int c = 0; c < W; c++) {
+            const size_t q = (size_t)W * i + c;
+            wp[q] = wn[q] + h * (tn[q] + tq[q]) * ii[i];
+        }
+}
+
 #define DM_REFINE_LOOPS(D)                                                                        \
     DM_VECTOR_CLONES static void predict##D(demill_world *w, void *a, int t, uint32_t i0,         \
                                             uint32_t i1)                                          \
@@ -288,6 +331,11 @@ DM_INLINE void converged(const int D, demill_world *w, refine_args *a, int t, ui
     static void converged##D(demill_world *w, void *a, int t, uint32_t i0, uint32_t i1)           \
     {                                                                                             \
         converged(D, w, a, t, i0, i1);                                                            \
+    }                                                                                             \
+    static void trapezoid##D(demill_world *w, void *a, int t, uint32_t i0, uint32_t i1)           \
+    {                                                                                             \
+        (void)t;                                                                                  \
+        trapezoid(D, w, a, i0, i1);                                                               \
     }
 DM_REFINE_LOOPS(2)
 DM_REFINE_LOOPS(3)
@@ -413,6 +461,8 @@ static demill_status refine_step(demill_world *w)
         if (iterations(w, &a, &k, &done, &d2))
             return abort_step(w, d2);
     }
+    if (!done)
+        dm_parallel(w, P->n, w->dim == 3 ? trapezoid3 : trapezoid2, &a);
     swap(&P->v, &P->vp); /* the accepted state moves with its end velocities */
     if (w->rotation)
         swap(&P->w, &P->wp);

@@ -45,22 +45,20 @@ double dm_test_get(demill_world *w, demill_id p, int field, int c)
     return v[c];
 }
 
-dm_collision dm_test_collide(demill_world *w, demill_id mat, double r, double v0, double dt,
-                             double phase, double offset)
+/* Steps a collision of sphere ids[0] (radius r) with sphere ids[1] (wall = 0)
+ * or with the plane x = 0 (wall = 1), head-on along x at relative speed v0
+ * from a gap, and measures it (see dm_collision); the rebound ratio is the
+ * relative velocity along x afterwards over v0. */
+static dm_collision measure(demill_world *w, const demill_id *ids, int wall, double r, double v0,
+                            double dt, double gap)
 {
-    const double gap = (3.0 + phase) * v0 * dt;
-    double x[6] = {offset - r - gap / 2, 0, 0, offset + r + gap / 2, 0, 0};
-    double v[6] = {v0 / 2, 0, 0, -v0 / 2, 0, 0};
-    double rr[2] = {r, r};
-    demill_id ids[2];
-    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
-    DM_OK(w, demill_particles_add(w, mat, 2, x, rr, v, 0, ids));
     dm_collision o = {0, 0, 0};
     double prev = -gap, t_in = -1, t_out = -1;
     for (int k = 1; k < 100000 && t_out < 0; k++) {
         DM_OK(w, demill_world_step(w, 1));
-        double d = 2 * r - (dm_test_get(w, ids[1], DEMILL_PARTICLE_POSITION, 0) -
-                            dm_test_get(w, ids[0], DEMILL_PARTICLE_POSITION, 0));
+        const double x0 = dm_test_get(w, ids[0], DEMILL_PARTICLE_POSITION, 0);
+        const double d =
+            wall ? r - x0 : 2 * r - (dm_test_get(w, ids[1], DEMILL_PARTICLE_POSITION, 0) - x0);
         if (d > o.max_overlap)
             o.max_overlap = d;
         if (prev <= 0 && d > 0)
@@ -71,10 +69,24 @@ dm_collision dm_test_collide(demill_world *w, demill_id mat, double r, double v0
     }
     ck_assert_msg(t_in >= 0 && t_out > t_in, "the collision did not complete");
     DM_OK(w, demill_world_step(w, 5)); /* separated: velocities are final */
-    double va = dm_test_get(w, ids[0], DEMILL_PARTICLE_VELOCITY, 0);
-    double vb = dm_test_get(w, ids[1], DEMILL_PARTICLE_VELOCITY, 0);
-    o.restitution = (vb - va) / v0;
+    const double va = dm_test_get(w, ids[0], DEMILL_PARTICLE_VELOCITY, 0);
+    const double vb = wall ? 0.0 : dm_test_get(w, ids[1], DEMILL_PARTICLE_VELOCITY, 0);
+    o.restitution = (wall ? va : vb - va) / v0;
     o.duration = t_out - t_in;
+    return o;
+}
+
+dm_collision dm_test_collide(demill_world *w, demill_id mat, double r, double v0, double dt,
+                             double phase, double offset)
+{
+    const double gap = (3.0 + phase) * v0 * dt;
+    double x[6] = {offset - r - gap / 2, 0, 0, offset + r + gap / 2, 0, 0};
+    double v[6] = {v0 / 2, 0, 0, -v0 / 2, 0, 0};
+    double rr[2] = {r, r};
+    demill_id ids[2];
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+    DM_OK(w, demill_particles_add(w, mat, 2, x, rr, v, 0, ids));
+    const dm_collision o = measure(w, ids, 0, r, v0, dt, gap);
     DM_OK(w, demill_particles_remove(w, 2, ids));
     return o;
 }
@@ -105,4 +117,19 @@ demill_world *dm_test_chain(int n, double fraction, demill_id *ids)
     free(v);
     free(rad);
     return w;
+}
+
+dm_collision dm_test_bounce(demill_world *w, demill_id mat, double r, double v0, double dt,
+                            double phase)
+{
+    const double gap = (3.0 + phase) * v0 * dt;
+    double x[3] = {r + gap, 0, 0}, v[3] = {-v0, 0, 0}, origin[3] = {0, 0, 0}, n[3] = {1, 0, 0};
+    demill_id ids[1], plane;
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+    DM_OK(w, demill_wall_add_plane(w, mat, origin, n, &plane));
+    DM_OK(w, demill_particles_add(w, mat, 1, x, &r, v, 0, ids));
+    const dm_collision o = measure(w, ids, 1, r, v0, dt, gap);
+    DM_OK(w, demill_particles_remove(w, 1, ids));
+    DM_OK(w, demill_wall_remove(w, plane));
+    return o;
 }

@@ -66,4 +66,11 @@ dm_collision dm_test_collide(demill_world *w, demill_id mat, double r, double v0
  * check and then blows up. ids receives the particles' ids. */
 demill_world *dm_test_chain(int n, double fraction, demill_id *ids);
 
+/* A sphere of material mat and radius r approaches the plane x = 0 (added
+ * with material mat, its normal +x) head-on at speed v0 from a gap that
+ * closes after (3 + phase) steps of dt; returns what dm_test_collide()
+ * returns. The sphere and the plane are removed afterwards. */
+dm_collision dm_test_bounce(demill_world *w, demill_id mat, double r, double v0, double dt,
+                            double phase);
+
 #endif
