@@ -486,7 +486,8 @@ demill_status dm_nlist_build(demill_world *w)
     if (dm_wgeom_reserve(w) || dm_results_reserve(w))
         goto oom;
     carry_restore(w);
-    memcpy(P->x0, P->x, (size_t)D * n * sizeof *P->x);
+    if (n) /* a world that never had particles has no arrays */
+        memcpy(P->x0, P->x, (size_t)D * n * sizeof *P->x);
     dm_walls_mark_built(w);
     w->rebuilds++;
     w->nlist_valid = true;
