@@ -8,7 +8,16 @@
  * - a world without particles steps: every step adds Δt to the time, and a
  *   drum turning at ω has turned ω t (demill/drum.h: the motion is exact);
  *   its neighbour lists are built over no particles (a zero-length copy from
- *   the particle arrays, which such a world never allocated).
+ *   the particle arrays, which such a world never allocated);
+ * - contacts of a law that keeps no history (linear spring, no damping, no
+ *   friction): at rest with an overlap δ the force is k_n δ, k_n the series
+ *   stiffness k k / (k + k) = k/2 of two equal materials (demill/material.h),
+ *   particle on particle and particle on wall; a head-on collision of two
+ *   equal spheres lasts half a period of the spring, π √(m* / k_n) with
+ *   m* = m/2, and rebounds with e = 1 (the undamped linear oscillator:
+ *   Pöschel & Schwager 2005, Computational Granular Dynamics). Such a
+ *   law's history array was never allocated, and the kernels added 0 to its
+ *   NULL.
  */
 #include "testutil.h"
 
@@ -40,11 +49,55 @@ START_TEST(empty_world_steps)
 }
 END_TEST
 
+/* The magnitude of a 3-vector. */
+static double norm(const double *v)
+{
+    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+START_TEST(contacts_without_history)
+{
+    const int dim = 2 + _i;
+    demill_id m, ids[3], floor;
+    demill_world *w = dm_test_world(dim, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_NONE, &m);
+    const double r = 0.005, delta = 1e-4, k = 1e5, kn = k / 2, rho = 2500;
+    /* a pair overlapping by delta, and a particle on a floor by delta */
+    const double x[9] = {0, 0.1, 0, 2 * r - delta, 0.1, 0, 0.05, r - delta, 0};
+    const double radii[3] = {r, r, r}, origin[3] = {0, 0, 0}, up[3] = {0, 1, 0};
+    DM_OK(w, demill_wall_add_plane(w, m, origin, up, &floor));
+    DM_OK(w, demill_particles_add(w, m, 3, x, radii, NULL, 0, ids));
+    DM_OK(w, demill_world_step(w, 0));
+    size_t n;
+    double f[6], overlap[2];
+    DM_OK(w, demill_contacts_read(w, DEMILL_CONTACT_NORMAL_FORCE, f, 2, &n));
+    DM_OK(w, demill_contacts_read(w, DEMILL_CONTACT_OVERLAP, overlap, 2, &n));
+    ck_assert_uint_eq(n, 2);
+    for (int c = 0; c < 2; c++) {
+        DM_ASSERT_REL(overlap[c], delta, 1e-9);
+        DM_ASSERT_REL(norm(f + 3 * c), kn * delta, 1e-9);
+    }
+    double fp[3];
+    DM_OK(w, demill_particle_get(w, ids[2], DEMILL_PARTICLE_FORCE, fp));
+    DM_ASSERT_REL(fp[1], kn * delta, 1e-9);
+    DM_OK(w, demill_particles_remove(w, 3, ids));
+
+    const double mstar = 0.5 * 4.0 / 3.0 * M_PI * r * r * r * rho; /* 2D: spheres in a plane */
+    const double tc = M_PI * sqrt(mstar / kn);
+    for (int p = 0; p < 4; p++) {
+        dm_collision o = dm_test_collide(w, m, r, 1.0, tc / 50, (p + 0.5) / 4, 0.0);
+        DM_ASSERT_REL(o.restitution, 1.0, 0.01);
+        DM_ASSERT_REL(o.duration, tc, 0.02);
+    }
+    demill_world_destroy(w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("edge_cases");
     TCase *tc = tcase_create("edge_cases");
     tcase_add_loop_test(tc, empty_world_steps, 0, 2);
+    tcase_add_loop_test(tc, contacts_without_history, 0, 2);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }
