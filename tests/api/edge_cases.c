@@ -17,7 +17,11 @@
  *   m* = m/2, and rebounds with e = 1 (the undamped linear oscillator:
  *   Pöschel & Schwager 2005, Computational Granular Dynamics). Such a
  *   law's history array was never allocated, and the kernels added 0 to its
- *   NULL.
+ *   NULL;
+ * - particles 1e300 m from the origin, added with DEMILL_ADD_NO_OVERLAP or
+ *   present when the drum is filled: two at the same point overlap, two
+ *   1e300 m apart do not. The overlap search's cell index was the position
+ *   over the cell size converted to a 64-bit integer, which overflows.
  */
 #include "testutil.h"
 
@@ -92,12 +96,41 @@ START_TEST(contacts_without_history)
 }
 END_TEST
 
+START_TEST(no_overlap_far_away)
+{
+    const int dim = 2 + _i;
+    demill_id m;
+    demill_world *w = dm_test_world(dim, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, &m);
+    const double r = 0.01, far[3] = {1e300, 0, 0}, other[3] = {-1e300, 1e300, 0};
+    DM_OK(w, demill_particles_add(w, m, 1, far, &r, NULL, DEMILL_ADD_NO_OVERLAP, NULL));
+    ck_assert_int_eq(demill_particles_add(w, m, 1, far, &r, NULL, DEMILL_ADD_NO_OVERLAP, NULL),
+                     DEMILL_ERR_OVERLAP);
+    DM_OK(w, demill_particles_add(w, m, 1, other, &r, NULL, DEMILL_ADD_NO_OVERLAP, NULL));
+    const double pair[6] = {1e300, -1e300, 0, 1e300, -1e300, 0}, radii[2] = {r, r};
+    ck_assert_int_eq(demill_particles_add(w, m, 2, pair, radii, NULL, DEMILL_ADD_NO_OVERLAP, NULL),
+                     DEMILL_ERR_OVERLAP);
+
+    /* a fill places its charge in the drum, clear of the far particles */
+    demill_id drum;
+    const double sizes[2] = {0.02, 1};
+    size_t added;
+    DM_OK(w, demill_drum_create(w, m, &drum));
+    DM_OK(w, demill_drum_fill(w, drum, m, DEMILL_SIZES_CLASSES, sizes, 2, DEMILL_FILL_COUNT, 10,
+                              1, NULL, 0, &added));
+    double count;
+    DM_OK(w, demill_world_get(w, DEMILL_WORLD_PARTICLE_COUNT, &count));
+    ck_assert(added == 10 && count == 12);
+    demill_world_destroy(w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("edge_cases");
     TCase *tc = tcase_create("edge_cases");
     tcase_add_loop_test(tc, empty_world_steps, 0, 2);
     tcase_add_loop_test(tc, contacts_without_history, 0, 2);
+    tcase_add_loop_test(tc, no_overlap_far_away, 0, 2);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }
