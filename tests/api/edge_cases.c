@@ -21,7 +21,9 @@
  * - particles 1e300 m from the origin, added with DEMILL_ADD_NO_OVERLAP or
  *   present when the drum is filled: two at the same point overlap, two
  *   1e300 m apart do not. The overlap search's cell index was the position
- *   over the cell size converted to a 64-bit integer, which overflows.
+ *   over the cell size converted to a 64-bit integer, which overflows;
+ * - a pair parameter as large as its bound (1e30) reads back as set: every
+ *   value was converted to an int, wanted only for the laws' choices.
  */
 #include "testutil.h"
 
@@ -124,6 +126,23 @@ START_TEST(no_overlap_far_away)
 }
 END_TEST
 
+START_TEST(large_pair_values)
+{
+    demill_id m;
+    demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_VISCOUS, &m);
+    const int32_t keys[2] = {DEMILL_PAIR_NORMAL_STIFFNESS, DEMILL_PAIR_VISCOUS_DAMPING};
+    for (int k = 0; k < 2; k++) {
+        double hi, v;
+        ck_assert_int_eq(demill_param_bounds(keys[k], NULL, &hi, NULL), DEMILL_OK);
+        ck_assert(hi == 1e30);
+        DM_OK(w, demill_pair_set(w, m, m, keys[k], hi));
+        DM_OK(w, demill_pair_get(w, m, m, keys[k], &v));
+        ck_assert(v == hi);
+    }
+    demill_world_destroy(w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("edge_cases");
@@ -131,6 +150,7 @@ int main(void)
     tcase_add_loop_test(tc, empty_world_steps, 0, 2);
     tcase_add_loop_test(tc, contacts_without_history, 0, 2);
     tcase_add_loop_test(tc, no_overlap_far_away, 0, 2);
+    tcase_add_test(tc, large_pair_values);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }
