@@ -23,7 +23,9 @@
  *   1e300 m apart do not. The overlap search's cell index was the position
  *   over the cell size converted to a 64-bit integer, which overflows;
  * - a pair parameter as large as its bound (1e30) reads back as set: every
- *   value was converted to an int, wanted only for the laws' choices.
+ *   value was converted to an int, wanted only for the laws' choices;
+ * - demill_world_ids() lists no drum in a world without one, whatever
+ *   walls it has: it listed the walls instead, beyond the caller's count.
  */
 #include "testutil.h"
 
@@ -143,6 +145,30 @@ START_TEST(large_pair_values)
 }
 END_TEST
 
+START_TEST(ids_of_no_drum)
+{
+    demill_id m, walls[2], drum, out[4] = {1, 2, 3, 4};
+    demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_NONE, &m);
+    const double origin[3] = {0, 0, 0}, normals[2][3] = {{0, 1, 0}, {1, 0, 0}};
+    for (int k = 0; k < 2; k++)
+        DM_OK(w, demill_wall_add_plane(w, m, origin, normals[k], &walls[k]));
+    for (int pass = 0; pass < 2; pass++) { /* never a drum, then one removed */
+        size_t n = 99;
+        DM_OK(w, demill_world_ids(w, DEMILL_KIND_DRUM, out, 4, &n));
+        ck_assert_uint_eq(n, 0);
+        for (int k = 0; k < 4; k++)
+            ck_assert_msg(out[k] == (demill_id)k + 1, "out[%d] = 0x%llx was written", k,
+                          (unsigned long long)out[k]);
+        DM_OK(w, demill_drum_create(w, m, &drum));
+        DM_OK(w, demill_world_ids(w, DEMILL_KIND_DRUM, out, 1, &n));
+        ck_assert(n == 1 && out[0] == drum);
+        DM_OK(w, demill_drum_remove(w, drum));
+        out[0] = 1;
+    }
+    demill_world_destroy(w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("edge_cases");
@@ -151,6 +177,7 @@ int main(void)
     tcase_add_loop_test(tc, contacts_without_history, 0, 2);
     tcase_add_loop_test(tc, no_overlap_far_away, 0, 2);
     tcase_add_test(tc, large_pair_values);
+    tcase_add_test(tc, ids_of_no_drum);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }
