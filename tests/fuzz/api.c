@@ -1496,8 +1496,9 @@ static void run_call(void)
         trace("left out (capped)\n");
         return;
     }
-    trace(" = %d%s%s\n", (int)c.st, c.st && c.k >= 0 ? ": " : "",
-          c.st && c.k >= 0 ? demill_world_last_error(c.w) : "");
+    const bool message = c.st && c.k >= 0 && !c.worldless;
+    trace(" = %d%s%s\n", (int)c.st, message ? ": " : "",
+          message ? demill_world_last_error(c.w) : "");
     if (!c.worldless && c.k < 0) {
         const demill_status want = c.w ? DEMILL_ERR_INVALID_HANDLE : DEMILL_ERR_NULL_POINTER;
         if (c.st != want)
