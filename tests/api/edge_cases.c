@@ -88,6 +88,7 @@ START_TEST(contacts_without_history)
     DM_OK(w, demill_particle_get(w, ids[2], DEMILL_PARTICLE_FORCE, fp));
     DM_ASSERT_REL(fp[1], kn * delta, 1e-9);
     DM_OK(w, demill_particles_remove(w, 3, ids));
+    DM_OK(w, demill_wall_remove(w, floor)); /* the collision is on the x axis, at y = 0 */
 
     const double mstar = 0.5 * 4.0 / 3.0 * M_PI * r * r * r * rho; /* 2D: spheres in a plane */
     const double tc = M_PI * sqrt(mstar / kn);
