@@ -13,7 +13,9 @@
  *   - a call never changes the other world (checked at the end of each
  *     input);
  *   - whatever the calls leave, save → load (into a scratch world) → save
- *     gives the same bytes, and the load succeeds;
+ *     gives the same bytes, and the load succeeds (a state that is not
+ *     finite, left by a run that diverged with the watchdog off, cannot be
+ *     saved: such states are only told from finite ones);
  *   - no demill_world_step() or demill_world_settle() with the watchdog on
  *     returns DEMILL_OK with a non-finite position, velocity or angular
  *     velocity (read back through the API);
@@ -29,10 +31,11 @@
  * A violation prints what failed and aborts; DEMILL_FUZZ_TRACE=1 in the
  * environment prints every call with its arguments and status first.
  *
- * Calls that would run for long are capped (capped_steps(), settle_cap(),
- * fill_cap()): steps and particle counts stay small so that an input runs in
- * milliseconds, but a call that the library must refuse (NaN, negative or
- * huge arguments, NULL buffers with huge counts) is always made.
+ * Calls that the library would take and run for long are left out
+ * (capped_steps(), settle_cap(), fill_cap()): steps and particle counts stay
+ * small so that an input runs in milliseconds, but a call that the library
+ * must refuse (NaN, negative or huge arguments, NULL buffers with huge
+ * counts, fills and settles beyond its limits) is always made.
  *
  * Built two ways, like checkpoint.c: with libFuzzer (tests/fuzz/run api) and
  * with replay.c, which CTest runs on tests/fuzz/corpus-api/. */
@@ -63,9 +66,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 /* ---- harness state ------------------------------------------------------- */
 
+/* A world's checkpoint, or none: a state that is not finite (a run that
+ * diverged with the watchdog off) cannot be saved. */
 typedef struct buf {
     unsigned char *b;
     size_t n, cap;
+    bool diverged;
 } buf;
 
 typedef struct progress {
@@ -866,37 +872,68 @@ static void op_drum_lifter_get(call *c)
     c->st = demill_drum_lifter_get(c->w, d, index, field, null_out ? NULL : v);
 }
 
-/* Whether the harness leaves out a fill that would place more than a few
- * hundred particles or search more than 10^5 lattice sites: estimated from
- * the smallest diameter the distribution names, the drum's size and the
- * material's density. The library takes such a call (1 nm balls, 10^9
- * particles) for a run of hours or days; a fill it must refuse (bad
- * arguments, a drum or material that does not exist) is always made. */
+/* The sites of the lattice a fill places particles of largest diameter d
+ * on (spacing 1.04 d; demill_drum_fill()), with the spacing a. */
+static double fill_sites(const call *c, double D, double L, double a)
+{
+    const double xy = 2.0 * floor(0.5 * D / a) + 1.0;
+    return xy * xy * (c->dim == 3 ? 2.0 * floor(0.5 * L / a) + 1.0 : 1.0);
+}
+
+/* Volume (2D: area) and mass of a particle of diameter d. */
+static double fill_measure(const call *c, double d)
+{
+    return c->dim == 3 ? PI / 6.0 * d * d * d : PI / 4.0 * d * d;
+}
+
+static double fill_mass(const call *c, double rho, double d)
+{
+    const double t = world_value(c, DEMILL_WORLD_DISC_THICKNESS);
+    return rho * (c->dim == 2 && t > 0.0 ? PI / 4.0 * d * d * t : PI / 6.0 * d * d * d);
+}
+
+/* Whether the harness leaves out a fill that the library would take and
+ * that would place more than a few hundred particles or search more than
+ * 10^5 lattice sites, which takes long. Bounds come from the smallest and
+ * largest diameter the distribution names, the drum and the density. A fill
+ * the library must refuse is always made: bad arguments, and targets beyond
+ * what a world holds or lattices beyond 2^30 sites (demill_drum_fill()),
+ * which once ran for days. */
 static bool fill_cap(const call *c, demill_id drum, demill_id mat, int32_t dist, const double *p,
                      size_t np, int32_t target, double value)
 {
-    double D, L, rho, t;
+    double D, L, rho, porosity;
     if (c->k < 0 || !p || !isfinite(value) || !(value > 0.0) ||
         demill_drum_get(c->w, drum, DEMILL_DRUM_DIAMETER, &D) ||
         demill_drum_get(c->w, drum, DEMILL_DRUM_LENGTH, &L) ||
+        demill_drum_get(c->w, drum, DEMILL_DRUM_FILL_POROSITY, &porosity) ||
         demill_material_get(c->w, mat, DEMILL_MATERIAL_DENSITY, &rho))
         return false;
-    double dmin = INFINITY;
-    for (size_t k = dist == DEMILL_SIZES_CLASSES ? 0 : 2; k < np; k += 2)
-        if (p[k] > 0.0)
-            dmin = fmin(dmin, p[k]);
-    if (!isfinite(dmin))
+    double dmin = INFINITY, dmax = 0.0;
+    if (dist == DEMILL_SIZES_CLASSES) {
+        for (size_t k = 0; k + 1 < np; k += 2)
+            if (p[k] > 0.0 && isfinite(p[k])) {
+                dmin = fmin(dmin, p[k]);
+                dmax = fmax(dmax, p[k]);
+            }
+    } else if (np == 4 && p[2] > 0.0 && p[3] > p[2] && isfinite(p[3])) {
+        dmin = p[2];
+        dmax = p[3];
+    }
+    if (!(dmax > 0.0))
         return false;
-    t = world_value(c, DEMILL_WORLD_DISC_THICKNESS);
-    const double sites = pow(D / dmin + 1.0, 2.0) * (c->dim == 3 ? L / dmin + 1.0 : 1.0);
-    const double measure = c->dim == 3 ? PI / 6.0 * pow(dmin, 3.0) : PI / 4.0 * dmin * dmin;
-    const double mass = rho * (c->dim == 2 && t > 0.0 ? PI / 4.0 * dmin * dmin * t
-                                                      : PI / 6.0 * pow(dmin, 3.0));
     const double capacity = PI / 4.0 * D * D * (c->dim == 3 ? L : 1.0);
-    const double n = 40.0 + (target == DEMILL_FILL_MASS       ? value / mass
-                             : target == DEMILL_FILL_FRACTION ? value * capacity / measure
-                                                              : value);
-    return !(sites <= 1e5) || !(n + (double)c->np <= PARTICLES_MAX);
+    const double fewest = target == DEMILL_FILL_MASS ? value / fill_mass(c, rho, dmax)
+                          : target == DEMILL_FILL_FRACTION
+                              ? value * capacity * (1.0 - porosity) / fill_measure(c, dmax)
+                              : value;
+    if (fill_sites(c, D, L, 1.1 * dmax) > 0x1p30 || fewest > 1.01 * (UINT32_MAX / 4))
+        return false;
+    const double most = 40.0 + (target == DEMILL_FILL_MASS ? value / fill_mass(c, rho, dmin)
+                                : target == DEMILL_FILL_FRACTION
+                                    ? value * capacity / fill_measure(c, dmin)
+                                    : value);
+    return !(fill_sites(c, D, L, dmin) <= 1e5) || !(most + (double)c->np <= PARTICLES_MAX);
 }
 
 static void op_drum_fill(call *c)
@@ -1000,17 +1037,16 @@ static void op_step(call *c)
     c->st = demill_world_step(c->w, steps);
 }
 
-/* Whether the harness leaves out a settle that would run long: one that
- * asks for more than 64 steps' time, or starts where the time step is lost
- * in the rounding of the world's time (which then never advances: a settle
- * at t = 1e15 s never returns). Arguments the library must refuse are
- * always passed. */
+/* Whether the harness leaves out a settle the library would take and run
+ * for more than 64 steps. One it must refuse is always made: bad arguments,
+ * more than 1e18 steps, a clock the time step no longer advances
+ * (demill_world_settle(); a settle at t = 1e15 s once never returned). */
 static bool settle_cap(const call *c, double max_time)
 {
     if (c->k < 0 || !isfinite(max_time) || !(max_time > 0.0))
         return false;
-    const double dt = world_value(c, DEMILL_WORLD_TIME_STEP), t = world_value(c, DEMILL_WORLD_TIME);
-    return !(max_time <= 64.0 * dt) || !(dt >= fabs(t) * 0x1p-40);
+    const double steps = max_time / world_value(c, DEMILL_WORLD_TIME_STEP);
+    return steps > 64.0 && steps < 1e18;
 }
 
 static void op_settle(call *c)
@@ -1096,6 +1132,10 @@ static void op_buffer_transfer(call *c)
     const uint8_t f = byte();
     buf *src = &F.again;
     save(F.w[j], src, "source");
+    if (src->diverged) {
+        c->skipped = true;
+        return;
+    }
     unsigned char *shorter = grab(src->n, 1);
     /* the size asked four ways; the checks of each */
     size_t size = SIZE_MAX;
@@ -1380,6 +1420,11 @@ static void save(demill_world *w, buf *b, const char *what)
 {
     size_t n;
     demill_status st = demill_world_save_buffer(w, NULL, 0, &n);
+    b->diverged = st == DEMILL_ERR_UNSTABLE;
+    if (b->diverged) {
+        b->n = 0;
+        return;
+    }
     if (st == DEMILL_OK && n > b->cap) {
         unsigned char *p = realloc(b->b, n);
         if (!p)
@@ -1394,9 +1439,11 @@ static void save(demill_world *w, buf *b, const char *what)
              demill_world_last_error(w));
 }
 
+/* Two states are the same if their checkpoints are; two that cannot be
+ * saved cannot be told apart. */
 static bool same(const buf *a, const buf *b)
 {
-    return a->n == b->n && !memcmp(a->b, b->b, a->n);
+    return a->diverged == b->diverged && a->n == b->n && (!a->n || !memcmp(a->b, b->b, a->n));
 }
 
 /* The first byte at which two checkpoints differ, for messages. */
@@ -1411,6 +1458,8 @@ static size_t first_difference(const buf *a, const buf *b)
 /* save → load → save gives the same bytes, and the load succeeds. */
 static void check_round_trip(const buf *saved)
 {
+    if (saved->diverged)
+        return;
     const demill_status st = demill_world_load_buffer(F.scratch, saved->b, saved->n);
     if (st != DEMILL_OK)
         fail("the library refused to load a checkpoint it wrote (%zu bytes): %d: %s", saved->n,
