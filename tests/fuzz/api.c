@@ -633,7 +633,11 @@ static void op_particles_write(call *c)
     if (c->k >= 0)
         demill_particles_read(c->w, field, in, n, &got); /* as they are, where readable */
     switch ((f >> 3) & 3) {
-    case 1: in[byte() % (size * (n + 1))] = num(); break;
+    case 1: {
+        const size_t at = byte() % (size * (n + 1)); /* before num(): the order is the input's */
+        in[at] = num();
+        break;
+    }
     case 2: {
         const double v = num();
         for (size_t i = 0; i < size * n; i++)
@@ -672,10 +676,12 @@ static void op_particle_set(call *c)
     double v[3] = {0, 0, 0};
     if (c->k >= 0)
         demill_particle_get(c->w, p, field, v);
-    if (f & 2)
-        v[byte() % 3] = num();
-    else
+    if (f & 2) {
+        const int at = byte() % 3; /* before num(): the order is the input's */
+        v[at] = num();
+    } else {
         vec(v);
+    }
     trace("demill_particle_set(w, 0x%llx, %d, ", (unsigned long long)p, (int)field);
     trace_vec("in", f & 1 ? NULL : v);
     trace(")");
@@ -1303,7 +1309,8 @@ static void op_vtk_series(call *c)
 /* The functions that take no world, and demill_world_last_error(). */
 static void op_stateless(call *c)
 {
-    const int32_t key = (int32_t)(int16_t)(byte() | byte() << 8);
+    const uint8_t low = byte(); /* in a statement of its own: the order is the input's */
+    const int32_t key = (int32_t)(int16_t)(low | byte() << 8);
     const uint8_t b = byte();
     const demill_id id = raw64();
     c->worldless = true;
