@@ -20,7 +20,9 @@ static int bucket_reserve(dm_bucket *b, uint32_t n)
     void **const arrays[] = {(void **)&b->i, (void **)&b->j, (void **)&b->on, (void **)&b->hist};
     const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint8_t),
                             (size_t)b->hs * sizeof(double)};
-    if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, b->hs ? 4 : 3, cap))
+    /* the history too where the kernel keeps none (then a byte): the kernels
+     * offset its pointer by 0 for every pair, undefined on NULL */
+    if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 4, cap))
         return -1;
     b->cap = (uint32_t)cap;
     return 0;
@@ -486,7 +488,8 @@ demill_status dm_nlist_build(demill_world *w)
     if (dm_wgeom_reserve(w) || dm_results_reserve(w))
         goto oom;
     carry_restore(w);
-    memcpy(P->x0, P->x, (size_t)D * n * sizeof *P->x);
+    if (n) /* a world that never had particles has no arrays */
+        memcpy(P->x0, P->x, (size_t)D * n * sizeof *P->x);
     dm_walls_mark_built(w);
     w->rebuilds++;
     w->nlist_valid = true;

@@ -264,12 +264,11 @@ DEMILL_API demill_status demill_pair_set(demill_world *w, demill_id a, demill_id
         u->a = ma < mb ? ma : mb;
         u->b = ma < mb ? mb : ma;
     }
-    int32_t iv = (int32_t)value;
-    switch (key) {
-    case DEMILL_PAIR_NORMAL: u->normal = iv; break;
-    case DEMILL_PAIR_DAMPING: u->damping = iv; break;
-    case DEMILL_PAIR_TANGENTIAL: u->tangential = iv; break;
-    case DEMILL_PAIR_ROLLING: u->rolling = iv; break;
+    switch (key) { /* a law is a small whole number (checked); other values need not fit an int */
+    case DEMILL_PAIR_NORMAL: u->normal = (int32_t)value; break;
+    case DEMILL_PAIR_DAMPING: u->damping = (int32_t)value; break;
+    case DEMILL_PAIR_TANGENTIAL: u->tangential = (int32_t)value; break;
+    case DEMILL_PAIR_ROLLING: u->rolling = (int32_t)value; break;
     default:
         u->value[pk] = value;
         u->set |= 1u << pk;

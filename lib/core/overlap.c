@@ -22,11 +22,15 @@ static uint64_t cell_key(const int64_t q[3])
            (uint64_t)(q[2] & 0x1fffff);
 }
 
+/* The cell of a point. Coordinates beyond 2^62 cells are held at 2^62, which
+ * loses no overlap: there the spacing of doubles is far wider than a cell,
+ * so two spheres that overlap have that coordinate equal, and so their
+ * cells. (Converting the unclamped quotient would overflow int64.) */
 static void cell_of(const dm_sphere_index *ix, const double *x, int64_t q[3])
 {
     q[0] = q[1] = q[2] = 0;
     for (int c = 0; c < ix->dim; c++)
-        q[c] = (int64_t)floor(x[c] / ix->h);
+        q[c] = (int64_t)fmax(-0x1p62, fmin(floor(x[c] / ix->h), 0x1p62));
 }
 
 /* Indexes the world's particles (indices 0 .. n-1) followed by `nextra`

@@ -64,6 +64,8 @@ void dm_particles_permute(demill_world *w, const uint32_t *order)
     dm_particles *P = &w->p;
     const uint32_t n = P->n;
     const int D = w->dim, W = wdim(w);
+    if (n == 0) /* nothing to move, and a world that never had particles has no arrays */
+        return;
     double *s = w->grid.scratch;
     double *vec[] = {P->x, P->v, P->f, P->vp};
     for (size_t a = 0; a < 4; a++) {

@@ -972,14 +972,15 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
     if (capacity < n)
         return dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL, "world_ids: capacity %zu, %zu objects",
                        capacity, n);
-    if (kind == DEMILL_KIND_MATERIAL)
+    if (kind == DEMILL_KIND_MATERIAL) {
         for (uint32_t m = 0; m < w->nmat; m++)
             out[m] = dm_material_id(w, m);
-    else if (kind == DEMILL_KIND_DRUM && n)
-        out[0] = dm_drum_id(w);
-    else
+    } else if (kind == DEMILL_KIND_WALL) {
         for (uint32_t k = 0, q = 0; k < w->nwalls; k++)
             if (w->walls[k].kind && !w->walls[k].drum_part)
                 out[q++] = dm_wall_id(w, k);
+    } else if (n) { /* the drum */
+        out[0] = dm_drum_id(w);
+    }
     return DEMILL_OK;
 }
