@@ -31,7 +31,10 @@ DEMILL_API int32_t demill_contact_field_size(int32_t field);
  *  particle-particle contacts first, then particle-wall contacts, in an
  *  order that stays the same between calls as long as the world is not
  *  stepped or changed. Forces are evaluated from the current positions,
- *  velocities and contact history without changing anything.
+ *  velocities and contact history without changing them. Stale neighbour
+ *  lists are brought up to date first, as the next step would bring them
+ *  (the particles' storage order may change, and with it the bytes of a
+ *  checkpoint saved afterwards; what later steps compute does not).
  *  @param world       the world.
  *  @param field       a DEMILL_CONTACT_* field.
  *  @param[out] out    capacity × field size doubles, or NULL to ask the count.
@@ -84,7 +87,10 @@ enum {
     DEMILL_ENERGY_TOTAL = 12
 };
 
-/** Reads one energy term of the world.
+/** Reads one energy term of the world. The terms that include the energy
+ *  stored in the contacts (DEMILL_ENERGY_ELASTIC_NORMAL,
+ *  DEMILL_ENERGY_ELASTIC_TANGENTIAL, DEMILL_ENERGY_TOTAL) bring stale
+ *  neighbour lists up to date first, as demill_contacts_read() does.
  *  @param world      the world.
  *  @param term       a DEMILL_ENERGY_* term.
  *  @param[out] value receives the energy, J.

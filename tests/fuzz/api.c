@@ -757,7 +757,8 @@ static void op_wall_get(call *c)
 static void save(demill_world *w, buf *b, const char *what);
 
 /* The number of contacts, asked as a user would (0 if the world cannot say),
- * to size the buffers of a read. The question may rebuild stale neighbour
+ * to size the buffers of a read. The question (like one about the energy
+ * stored in the contacts) may rebuild stale neighbour
  * lists, which changes the checkpoint (the storage order, the lists, the
  * count of rebuilds), so the state the call is compared with is taken again
  * after it: only the call itself is judged. */
@@ -813,6 +814,7 @@ static void op_energy(call *c)
     const int32_t term = pick(fz_energy_terms, COUNT(fz_energy_terms));
     const bool null_out = byte() & 1;
     double v;
+    contact_count(c); /* the stored energies are a question about the contacts too */
     c->query = true;
     trace("demill_world_energy(w, %d, %s)", (int)term, null_out ? "NULL" : "&v");
     c->st = demill_world_energy(c->w, term, null_out ? NULL : &v);

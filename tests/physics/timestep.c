@@ -312,6 +312,21 @@ static double rebound(demill_world *w, const demill_id ids[2], double r, double 
            v0;
 }
 
+/* Two spheres of material m and radius r, far apart, with restitution e
+ * for the pair, and the world's time step set to the one it suggests for
+ * impacts at v0, 50 steps per contact; returns that step. */
+static double two_at_suggested_step(demill_world *w, demill_id m, double e, double r, double v0,
+                                    demill_id ids[2])
+{
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, e));
+    const double x[6] = {-1, 0, 0, 1, 0, 0}, rr[2] = {r, r};
+    DM_OK(w, demill_particles_add(w, m, 2, x, rr, NULL, 0, ids));
+    double dt;
+    DM_OK(w, demill_world_suggest_time_step(w, v0, 50, &dt, NULL, NULL));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+    return dt;
+}
+
 START_TEST(linear_collision_at_suggested_step)
 {
     static const double restitutions[] = {0.1, 0.5, 0.9};
@@ -319,12 +334,7 @@ START_TEST(linear_collision_at_suggested_step)
     for (int k = 0; k < 3; k++) {
         demill_id m, ids[2];
         demill_world *w = world(3, DEMILL_NORMAL_LINEAR, &m);
-        DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, restitutions[k]));
-        const double x[6] = {-1, 0, 0, 1, 0, 0}, rr[2] = {r, r};
-        DM_OK(w, demill_particles_add(w, m, 2, x, rr, NULL, 0, ids));
-        double dt;
-        DM_OK(w, demill_world_suggest_time_step(w, v0, 50, &dt, NULL, NULL));
-        DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+        const double dt = two_at_suggested_step(w, m, restitutions[k], r, v0, ids);
         for (int p = 0; p < 8; p++)
             DM_ASSERT_REL(rebound(w, ids, r, v0, dt, (p + 0.5) / 8), restitutions[k], 0.01);
         demill_world_destroy(w);
@@ -410,12 +420,7 @@ START_TEST(small_restitution_at_suggested_step)
         for (int k = 0; k < 2; k++) {
             demill_id m, ids[2];
             demill_world *w = dm_test_world(3, normal, DEMILL_DAMPING_RESTITUTION, &m);
-            DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, restitutions[k]));
-            const double x[6] = {-1, 0, 0, 1, 0, 0}, rr[2] = {r, r};
-            DM_OK(w, demill_particles_add(w, m, 2, x, rr, NULL, 0, ids));
-            double dt;
-            DM_OK(w, demill_world_suggest_time_step(w, v0, 50, &dt, NULL, NULL));
-            DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+            const double dt = two_at_suggested_step(w, m, restitutions[k], r, v0, ids);
             for (int p = 0; p < 4; p++) {
                 const double e = rebound(w, ids, r, v0, dt, (p + 0.5) / 4);
                 ck_assert_msg(fabs(e - restitutions[k]) < 0.002, "law %d, e = %g: %g", normal,
