@@ -15,13 +15,15 @@ enum {
      *  masses of the material's particles; a density that would make a mass
      *  or moment of inertia, or their inverse, not finite or 0 is refused. */
     DEMILL_MATERIAL_DENSITY = 200,
-    /** Young's modulus E in Pa, > 0, used by Hertz and Mindlin laws.
-     *  Default 1e8. */
+    /** Young's modulus E in Pa, in [1e-100, 1e30], used by Hertz and
+     *  Mindlin laws (smaller moduli would make a pair's E* or k_a k_b
+     *  underflow to 0). Default 1e8. */
     DEMILL_MATERIAL_YOUNGS_MODULUS = 201,
     /** Poisson ratio ν, in [0, 0.5). Default 0.3. */
     DEMILL_MATERIAL_POISSON_RATIO = 202,
-    /** Spring stiffness k in N/m, > 0, used by linear laws; a pair's normal
-     *  stiffness is the series value k_a k_b / (k_a + k_b). Default 1e5. */
+    /** Spring stiffness k in N/m, in [1e-100, 1e30], used by linear laws; a
+     *  pair's normal stiffness is the series value k_a k_b / (k_a + k_b).
+     *  Default 1e5. */
     DEMILL_MATERIAL_STIFFNESS = 203,
     /** Coefficient of restitution e, in [0, 1]. Default 0.5. e = 0 with
      *  the unclamped normal law (DEMILL_PAIR_CLAMP_NORMAL = 0) is critical

@@ -47,9 +47,9 @@ static const param_info params[] = {
      WHOLE | READ_ONLY},
 
     {DEMILL_MATERIAL_DENSITY, "material.density", "kg/m^3", 0, 1e30, 2500, OPEN_LO},
-    {DEMILL_MATERIAL_YOUNGS_MODULUS, "material.youngs_modulus", "Pa", 0, 1e30, 1e8, OPEN_LO},
+    {DEMILL_MATERIAL_YOUNGS_MODULUS, "material.youngs_modulus", "Pa", 1e-100, 1e30, 1e8, 0},
     {DEMILL_MATERIAL_POISSON_RATIO, "material.poisson_ratio", "1", 0, 0.5, 0.3, OPEN_HI},
-    {DEMILL_MATERIAL_STIFFNESS, "material.stiffness", "N/m", 0, 1e30, 1e5, OPEN_LO},
+    {DEMILL_MATERIAL_STIFFNESS, "material.stiffness", "N/m", 1e-100, 1e30, 1e5, 0},
     {DEMILL_MATERIAL_RESTITUTION, "material.restitution", "1", 0, 1, 0.5, 0},
     {DEMILL_MATERIAL_FRICTION, "material.friction", "1", 0, 1e6, 0.5, 0},
     {DEMILL_MATERIAL_ROLLING_FRICTION, "material.rolling_friction", "1", 0, 1e6, 0, 0},

@@ -13,6 +13,12 @@
  * (r = 1e-100 m: 2/5 m r² ~ 1e-497) are refused, as are a density and a
  * disc thickness that would give an existing particle such a mass.
  *
+ * A material stiffness or Young's modulus so small that a pair's series
+ * stiffness k_a k_b / (k_a + k_b) or E* underflows to 0 (4e-317, found by
+ * the API fuzzer: the pair's stiffness read 0, which demill_pair_set
+ * refuses, and the checkpoint did not reload) is refused; the smallest
+ * accepted, 1e-100, gives a pair 5e-101 and a checkpoint that reloads.
+ *
  * Ids (demill/common.h): no two live worlds accept each other's ids (the
  * world tag has 12 bits: 4096 worlds, the 4097th is refused while they all
  * live); a handle whose 16-bit generation would wrap round is retired, so
@@ -131,6 +137,31 @@ START_TEST(masses_not_finite_are_refused)
 }
 END_TEST
 
+START_TEST(pair_values_stay_positive)
+{
+    demill_id m;
+    demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_NONE, &m);
+    static const int32_t keys[] = {DEMILL_MATERIAL_STIFFNESS, DEMILL_MATERIAL_YOUNGS_MODULUS};
+    for (int k = 0; k < 2; k++) {
+        REFUSED(w, DEMILL_ERR_INVALID_VALUE, demill_material_set(w, m, keys[k], 4.1e-317),
+                k ? "material.youngs_modulus" : "material.stiffness");
+        DM_OK(w, demill_material_set(w, m, keys[k], 1e-100));
+    }
+    double kn;
+    DM_OK(w, demill_pair_get(w, m, m, DEMILL_PAIR_NORMAL_STIFFNESS, &kn));
+    ck_assert(kn == 5e-101);
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ));
+    size_t n;
+    DM_OK(w, demill_world_save_buffer(w, NULL, 0, &n));
+    void *buf = malloc(n);
+    ck_assert(buf);
+    DM_OK(w, demill_world_save_buffer(w, buf, n, &n));
+    DM_OK(w, demill_world_load_buffer(w, buf, n));
+    free(buf);
+    demill_world_destroy(w);
+}
+END_TEST
+
 START_TEST(live_worlds_never_share_ids)
 {
     enum { MOST = 4096 };
@@ -213,6 +244,7 @@ int main(void)
     tcase_add_test(tc, clock_that_cannot_advance);
     tcase_add_test(tc, fills_that_cannot_be_made);
     tcase_add_test(tc, masses_not_finite_are_refused);
+    tcase_add_test(tc, pair_values_stay_positive);
     tcase_add_test(tc, live_worlds_never_share_ids);
     tcase_add_test(tc, generations_never_wrap);
     tcase_add_test(tc, drums_are_counted);
