@@ -68,10 +68,13 @@ enum {
     /** Simulated time in s. Settable, e.g. to continue a run. */
     DEMILL_WORLD_TIME = 108,
     /** Threads that stepping uses, a whole number in [0, 1024]; 0 takes
-     *  OpenMP's default (OMP_NUM_THREADS, or one per core). Default 1.
-     *  Results are bitwise the same for every thread count. More than one
-     *  needs a library built with OpenMP (DEMILL_ERR_UNSUPPORTED otherwise);
-     *  getting the key gives the number in use. */
+     *  OMP_NUM_THREADS if set, else one per processor the process may run
+     *  on. Default 1. Results are bitwise the same for every thread count.
+     *  More than one needs a library built with threads (DEMILL_ERR_UNSUPPORTED
+     *  otherwise); getting the key gives the number in use. The library
+     *  starts its own worker threads; a waiting one sleeps after about
+     *  50 µs, and a world whose machine is too busy for the workers to help
+     *  runs its loops on the calling thread alone. */
     DEMILL_WORLD_THREADS = 109,
     /** Iterative refinement: ε_a, the relative change of every acceleration
      *  component (translational and angular) between two iterates below
@@ -179,7 +182,7 @@ DEMILL_API const char *demill_world_last_error(const demill_world *world);
  *          DEMILL_ERR_INVALID_VALUE (out of bounds, or not a whole number for
  *          a choice), DEMILL_ERR_DIMENSION (e.g. gravity z in 2D) or
  *          DEMILL_ERR_UNSUPPORTED (more than one thread in a library built
- *          without OpenMP). */
+ *          without threads). */
 DEMILL_API demill_status demill_world_set(demill_world *world, int32_t key, double value);
 
 /** Reads a world parameter.

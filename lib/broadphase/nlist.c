@@ -368,7 +368,7 @@ static void place_range(demill_world *w, void *arg, int t, uint32_t begin, uint3
 static int pair_search(demill_world *w, const int64_t nc[3])
 {
     dm_grid *g = &w->grid;
-    const int want = w->threads > 1 ? w->threads : 1;
+    const int want = dm_ranges(w, w->p.n);
     if (want > g->npb) {
         dm_pairbuf *pb = realloc(g->pb, (size_t)want * sizeof *pb);
         if (!pb)

@@ -65,13 +65,6 @@ typedef struct dm_laws {
 #define DM_VECTOR_CLONES
 #endif
 
-/* OpenMP directives, when built with OpenMP. */
-#ifdef _OPENMP
-#define DM_OMP(directive) _Pragma(directive)
-#else
-#define DM_OMP(directive)
-#endif
-
 #define DM_KERNELS (2 * 3 * 4 * 2)
 #define DM_MAX_HIST 7 /* history doubles per contact, at most (contact/law.h + event slot) */
 int dm_kernel_index(dm_laws laws);
@@ -356,6 +349,7 @@ struct demill_world {
     double disc_thickness;
     int energy_tracking;
     int threads;            /* threads the loops run on (world.threads) */
+    struct dm_pool *pool;   /* their workers, started by dm_parallel (threads.c) */
     double refine_tol;      /* iterative refinement: ε_a */
     int refine_max;         /* and force evaluations per step at most */
     uint32_t iterations_last;     /* force evaluations of the last step */
@@ -469,9 +463,11 @@ demill_id dm_material_id(const demill_world *w, uint32_t material);
 demill_id dm_drum_id(const demill_world *w);
 
 /* threads.c */
-#define DM_MAX_THREADS 1024
+#define DM_MAX_THREADS 1024 /* the most threads, and the most ranges of a loop */
+typedef struct dm_pool dm_pool;
 typedef void (*dm_range_fn)(demill_world *w, void *arg, int t, uint32_t begin, uint32_t end);
 int dm_threads_available(int requested);
+void dm_threads_free(demill_world *w);
 int dm_ranges(const demill_world *w, uint32_t n);
 int dm_parallel(demill_world *w, uint32_t n, dm_range_fn fn, void *arg);
 

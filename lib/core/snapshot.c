@@ -120,6 +120,7 @@ demill_status dm_state_copy(demill_world *dst, const demill_world *src)
     n.watch = dst->watch;
     const bool same_dim = dst->dim == src->dim;
     n.progress = dst->progress;
+    n.pool = dst->pool; /* the destination's own threads */
     *dst = n;
     if (!same_dim) { /* the scratch is laid out for a dimension: start it afresh */
         dm_results_free(dst);

@@ -51,6 +51,7 @@ DEMILL_API void demill_world_destroy(demill_world *w)
 {
     if (dm_check_world(w))
         return;
+    dm_threads_free(w);
     dm_particles_free(w);
     dm_nlist_free(w);
     dm_results_free(w);
@@ -71,14 +72,18 @@ double dm_gravity_magnitude(const demill_world *w)
     return sqrt(w->g[0] * w->g[0] + w->g[1] * w->g[1] + w->g[2] * w->g[2]);
 }
 
-/* The threads the loops run on: n, or OpenMP's default for 0. */
+/* The threads the loops run on: n, or for 0 OMP_NUM_THREADS or one per
+ * processor (threads.c). */
 static demill_status set_threads(demill_world *w, int n)
 {
-    const int t = dm_threads_available(n);
+    int t = dm_threads_available(n);
     if (!t)
         return dm_fail(w, DEMILL_ERR_UNSUPPORTED,
-                       "world.threads = %d: the library was built without OpenMP", n);
-    w->threads = t < DM_MAX_THREADS ? t : DM_MAX_THREADS;
+                       "world.threads = %d: the library was built without threads", n);
+    t = t < DM_MAX_THREADS ? t : DM_MAX_THREADS;
+    if (t != w->threads)
+        dm_threads_free(w); /* workers are started again for the new count */
+    w->threads = t;
     return DEMILL_OK;
 }
 

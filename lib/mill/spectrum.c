@@ -41,8 +41,7 @@ void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall_kind, 
     double x = (log10(energy) - sp->log_min) / sp->log_span * sp->nbins;
     uint32_t bin = x < 0.0 ? 0 : x >= sp->nbins ? sp->nbins - 1 : (uint32_t)x;
     uint64_t *count = &w->drum.spectrum.counts[(size_t)row * sp->nbins + bin];
-    DM_OMP("omp atomic") /* contacts end on every thread */
-    (*count)++;
+    __atomic_fetch_add(count, 1, __ATOMIC_RELAXED); /* contacts end on every thread */
 }
 
 /* The number of counters of a spectrum. */

@@ -634,7 +634,8 @@ static void bad_world_set(scene *sc)
         BAD(sc, DEMILL_ERR_DIMENSION, demill_world_set(w, DEMILL_WORLD_DISC_THICKNESS, 0.01),
             "world.disc_thickness");
     }
-    /* more than one thread needs OpenMP; the failed setting changes nothing */
+    /* more than one thread needs a library built with threads; the failed
+     * setting changes nothing */
     ctx(sc, "world.threads = 2");
     demill_status st = demill_world_set(w, DEMILL_WORLD_THREADS, 2);
     ck_assert_msg(st == DEMILL_OK || st == DEMILL_ERR_UNSUPPORTED, "world.threads = 2: %s",

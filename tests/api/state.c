@@ -3,7 +3,7 @@
  *
  * Restart: a run of 2n steps and a run of n steps, a checkpoint, a load in a
  * new process (this program run again, on 2 threads where the library has
- * OpenMP) and n more steps must end in bitwise the same state. "The same
+ * threads) and n more steps must end in bitwise the same state. "The same
  * state" is checked twice: the final checkpoints, which hold every field of
  * the state, are byte for byte equal, and so are the positions, velocities,
  * spins, forces and energy terms read through the API. The scenes exercise

@@ -284,7 +284,7 @@ START_TEST(pile_settles)
     demill_world *w;
     demill_id m, wall;
     ck_assert_int_eq(demill_world_create(2, &w), DEMILL_OK);
-    if (demill_world_set(w, DEMILL_WORLD_THREADS, 2) != DEMILL_OK) /* built without OpenMP */
+    if (demill_world_set(w, DEMILL_WORLD_THREADS, 2) != DEMILL_OK) /* built without threads */
         DM_OK(w, demill_world_set(w, DEMILL_WORLD_THREADS, 1));
     DM_OK(w, demill_material_create(w, &m));
     DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
