@@ -491,6 +491,12 @@ void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, 
  * finite and positive. */
 demill_status dm_particle_mass_checked(demill_world *w, uint32_t mat, double r, const char *who,
                                        double *m, double *inv_i);
+/* After a change of what masses depend on (a material's density, the disc
+ * thickness): the masses of the particles of material mat (DM_ALL_MATERIALS:
+ * of every particle) computed again, if every one passes
+ * dm_particle_mass_checked(); otherwise its error, and no mass changed. */
+#define DM_ALL_MATERIALS UINT32_MAX
+demill_status dm_masses_update(demill_world *w, uint32_t mat, const char *who);
 
 /* core/timestep.c: DEMILL_ERR_UNSTABLE, naming the pair, unless the time
  * step is within the stability limit of every pair of materials that can

@@ -55,6 +55,25 @@ demill_status dm_particle_mass_checked(demill_world *w, uint32_t mat, double r, 
                    who, r, w->mats[mat].density, *m, *inv_i);
 }
 
+demill_status dm_masses_update(demill_world *w, uint32_t mat, const char *who)
+{
+    dm_particles *p = &w->p;
+    demill_status s = DEMILL_OK;
+    for (uint32_t i = 0; i < p->n && !s; i++)
+        if (mat == DM_ALL_MATERIALS || p->mat[i] == mat) {
+            double m, inv_i;
+            s = dm_particle_mass_checked(w, p->mat[i], p->r[i], who, &m, &inv_i);
+        }
+    if (s)
+        return s;
+    for (uint32_t i = 0; i < p->n; i++)
+        if (mat == DM_ALL_MATERIALS || p->mat[i] == mat) {
+            dm_particle_mass(w, p->mat[i], p->r[i], &p->m[i], &p->iinv[i]);
+            p->im[i] = 1.0 / p->m[i];
+        }
+    return DEMILL_OK;
+}
+
 void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, double *inv_i)
 {
     double rho = w->mats[mat].density, mass, inertia;
@@ -84,22 +103,9 @@ DEMILL_API demill_status demill_material_set(demill_world *w, demill_id material
         return s;
     const double old = *field;
     *field = value;
-    if (key == DEMILL_MATERIAL_DENSITY) {
-        dm_particles *p = &w->p;
-        for (uint32_t i = 0; i < p->n && !s; i++)
-            if (p->mat[i] == mi) {
-                double m, inv_i;
-                s = dm_particle_mass_checked(w, mi, p->r[i], "material.density", &m, &inv_i);
-            }
-        if (s) {
-            *field = old;
-            return s;
-        }
-        for (uint32_t i = 0; i < p->n; i++)
-            if (p->mat[i] == mi) {
-                dm_particle_mass(w, mi, p->r[i], &p->m[i], &p->iinv[i]);
-                p->im[i] = 1.0 / p->m[i];
-            }
+    if (key == DEMILL_MATERIAL_DENSITY && (s = dm_masses_update(w, mi, "material.density"))) {
+        *field = old;
+        return s;
     }
     w->ptab_dirty = true;
     w->forces_valid = false;

@@ -116,18 +116,9 @@ DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double v
     {
         const double old = w->disc_thickness;
         w->disc_thickness = value;
-        for (uint32_t i = 0; i < w->p.n && !s; i++) {
-            double m, inv_i;
-            s = dm_particle_mass_checked(w, w->p.mat[i], w->p.r[i], "world.disc_thickness", &m,
-                                         &inv_i);
-        }
-        if (s) {
+        if ((s = dm_masses_update(w, DM_ALL_MATERIALS, "world.disc_thickness"))) {
             w->disc_thickness = old;
             return s;
-        }
-        for (uint32_t i = 0; i < w->p.n; i++) {
-            dm_particle_mass(w, w->p.mat[i], w->p.r[i], &w->p.m[i], &w->p.iinv[i]);
-            w->p.im[i] = 1.0 / w->p.m[i];
         }
         break;
     }
