@@ -14,7 +14,7 @@
  *
  * A world on several threads measures, as it steps, whether sharing its
  * loops out pays, and runs them on the calling thread alone (each loop one
- * range, as on one thread) when it does not (lib/core/threads.c). Its first
+ * range, as on one thread) when it does not (lib/base/threads.c). Its first
  * comparison is on a fixed schedule: the loops are shared for the first
  * 1,000 steps after the workers start, then for 200 steps more, and then
  * they run alone for 200 steps, whatever the machine's load. So each first

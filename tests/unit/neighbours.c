@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "world/world.h"
 #include "testutil.h"
 
 static double urand(void)

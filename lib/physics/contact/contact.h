@@ -1,0 +1,74 @@
+/* contact.h: contact laws and their kernels, the contact lists, the pair
+ * table they read, one force evaluation and the walk over contacts that
+ * queries use, and the collision spectrum the kernels count. Uses the base,
+ * the state and the geometry (the particle-wall candidates' geometry). */
+#ifndef DM_CONTACT_H
+#define DM_CONTACT_H
+
+#include "physics/state/state.h"
+
+/* ---- kernels (forces.c) ------------------------------------------------------- */
+/* The kernel of a combination of laws, and back; the history doubles and
+ * the tangential spring's doubles per contact of a kernel. */
+int dm_kernel_index(dm_laws laws);
+dm_laws dm_kernel_laws(int kernel);
+int dm_kernel_hist_size(int kernel, int dim);
+int dm_kernel_spring_size(int kernel, int dim);
+
+/* ---- the pair table (pairs.c) ----------------------------------------------------- */
+/* The user's choices for materials a and b, NULL for none. */
+const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b);
+/* The effective laws and the value of every DM_PK_* key of pair (a, b). */
+void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws,
+                    double v[DM_PK_COUNT]);
+/* The contact kernel of two materials' model, -1 for none. */
+int dm_pair_kernel(const demill_world *w, uint32_t a, uint32_t b);
+/* Rebuilds the resolved pair table if anything changed, and (if asked)
+ * checks that every pair of materials that may touch has a model. Leaves
+ * the world unchanged when it fails. */
+demill_status dm_resolve_pairs(demill_world *w, bool require_models);
+/* The damping ratio ξ that gives restitution e (restitution.c). */
+double dm_damping_ratio(double e, int clamp);
+
+/* ---- the contact lists (lists.c) ---------------------------------------------------- */
+/* Empties every list (a new layout of history, or new kernels). */
+void dm_clist_clear(demill_world *w);
+/* Drops the particle-wall pairs of one wall slot. */
+void dm_clist_drop_wall(demill_world *w, uint32_t wall_slot);
+/* Moves pair `from` of a bucket to slot `to` (to <= from) as pair (i, j). */
+void dm_bucket_move(dm_bucket *b, uint32_t to, uint32_t from, uint32_t i, uint32_t j);
+void dm_clists_free(demill_world *w);
+
+/* ---- a force evaluation (forces.c, results.c) ----------------------------------------- */
+int dm_results_reserve(demill_world *w);
+void dm_results_layout(demill_world *w);
+void dm_results_free(demill_world *w);
+/* Gravity and every contact's force at the current state, the dashpots
+ * seeing velocities vp, wp; dt_hist: the time over which springs grow. */
+void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
+               int tally);
+
+/* One contact as a query sees it: between particles i and j (storage
+ * slots), or particle i and wall slot j (wall = 1). */
+typedef struct dm_contact_eval {
+    double point[3], normal[3], delta, fn[3], ft[3], mr[3];
+    double e_normal, e_tangential;
+    uint32_t i, j;
+    int wall;
+} dm_contact_eval;
+typedef void (*dm_contact_visitor)(void *ctx, const dm_contact_eval *c);
+/* Calls fn for every contact (overlap > 0) at the current state, without
+ * changing the world's physical state; forces: with the contact's forces,
+ * point and normal. The pair table must be resolved and the wall geometry
+ * current (dm_wgeom_update). */
+void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void *ctx);
+
+/* ---- the collision spectrum (spectrum.c) ---------------------------------------------- */
+/* Counts one collision: particles i and j (storage slots), or particle i and
+ * a wall of the given DEMILL_SPECTRUM_* kind (j unused, kind >= 0). */
+void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall_kind, double energy);
+/* The number of counters of a spectrum. */
+size_t dm_spectrum_counters(const dm_spectrum *sp);
+void dm_spectrum_free(demill_world *w);
+
+#endif /* DM_CONTACT_H */

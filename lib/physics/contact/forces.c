@@ -1,0 +1,327 @@
+/* forces.c: one force evaluation (gravity, every contact bucket through its
+ * kernel) and the read-only walk over contacts that queries use. */
+#include <string.h>
+
+#include "base/threads.h"
+#include "physics/contact/kernels.h"
+
+int dm_kernel_index(dm_laws l)
+{
+    return (((l.normal - 1) * 3 + l.damping) * 4 + l.tangential) * 2 + l.rolling;
+}
+
+dm_laws dm_kernel_laws(int kernel)
+{
+    dm_laws l;
+    l.rolling = kernel % 2;
+    l.tangential = kernel / 2 % 4;
+    l.damping = kernel / 8 % 3;
+    l.normal = kernel / 24 + 1;
+    return l;
+}
+
+int dm_kernel_spring_size(int kernel, int dim)
+{
+    return dm_law_spring_size(dm_kernel_laws(kernel).tangential, dim);
+}
+
+int dm_kernel_hist_size(int kernel, int dim)
+{
+    dm_laws l = dm_kernel_laws(kernel);
+    return dm_law_hist_size(l.normal, l.damping, l.tangential, dim);
+}
+
+/* The forces and torques of particles p0 .. p1-1: gravity, then the
+ * results of their pairs in pair-id order, which is the order of a walk
+ * through the chunks' lists of pairs with results. The walk starts at the
+ * first pair that can reach p0 (j - i is at most the bucket's span). */
+DM_INLINE void init_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1)
+{
+    const int W = D == 3 ? 3 : 1;
+    dm_particles *P = &w->p;
+    const double *restrict m = P->m;
+    double *restrict f = P->f, *restrict tq = P->t;
+    const double g[3] = {w->g[0], w->g[1], w->g[2]};
+    for (uint32_t i = p0; i < p1; i++) {
+        for (int c = 0; c < D; c++)
+            f[D * i + c] = m[i] * g[c];
+        for (int c = 0; c < W; c++)
+            tq[W * i + c] = 0.0;
+    }
+}
+
+DM_INLINE void sum_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1)
+{
+    const int W = D == 3 ? 3 : 1, S = D + 2 * W;
+    dm_particles *P = &w->p;
+    const dm_results *q = &w->res;
+    const double *restrict out = q->out;
+    double *restrict f = P->f, *restrict tq = P->t;
+    init_forces(D, w, p0, p1);
+    for (int side = 0; side < 2; side++)
+        for (int k = 0; k < DM_KERNELS; k++) {
+            const dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
+            const uint32_t *restrict bi = b->i, *restrict bj = b->j;
+            const uint32_t lo = side || p0 < b->span ? (side ? p0 : 0) : p0 - b->span;
+            uint32_t first = 0, last = b->n; /* the first pair with i >= lo */
+            while (first < last) {
+                const uint32_t mid = first + (last - first) / 2;
+                if (bi[mid] < lo)
+                    first = mid + 1;
+                else
+                    last = mid;
+            }
+            /* the chunks from there, through their lists of pairs with results */
+            for (uint32_t k0 = first / DM_CHUNK * DM_CHUNK; k0 < b->n && bi[k0] < p1;
+                 k0 += DM_CHUNK) {
+                const uint32_t *list = q->list + b->base + k0;
+                const uint32_t listed = q->chunk_listed[b->chunk0 + k0 / DM_CHUNK];
+                for (uint32_t e = 0; e < listed; e++) {
+                    const uint32_t p = list[e], i = bi[p];
+                    const double *o = out + (size_t)S * (b->base + p);
+                    if (i >= p0 && i < p1) {
+                        for (int c = 0; c < D; c++)
+                            f[D * i + c] -= o[c];
+                        for (int c = 0; c < W; c++)
+                            tq[W * i + c] += o[D + c];
+                    }
+                    const uint32_t j = bj[p];
+                    if (!side && j >= p0 && j < p1) {
+                        for (int c = 0; c < D; c++)
+                            f[D * j + c] += o[c];
+                        for (int c = 0; c < W; c++)
+                            tq[W * j + c] += o[D + W + c];
+                    }
+                }
+            }
+        }
+}
+
+static void sum_forces2(demill_world *w, void *arg, int t, uint32_t p0, uint32_t p1)
+{
+    (void)arg, (void)t;
+    sum_forces(2, w, p0, p1);
+}
+
+static void sum_forces3(demill_world *w, void *arg, int t, uint32_t p0, uint32_t p1)
+{
+    (void)arg, (void)t;
+    sum_forces(3, w, p0, p1);
+}
+
+/* The walls' forces and torques (about their centres) from their contacts'
+ * results, in pair-id order; with tally, their dissipation and the work
+ * they deliver over dt. */
+DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_tally *t)
+{
+    const int W = D == 3 ? 3 : 1, S = D + 2 * W;
+    const dm_results *q = &w->res;
+    const dm_wgeom *g = &w->wg;
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        memset(w->walls[k].force, 0, sizeof w->walls[k].force);
+        memset(w->walls[k].torque, 0, sizeof w->walls[k].torque);
+    }
+    for (int k = 0; k < DM_KERNELS; k++) {
+        const dm_bucket *b = &w->pw.b[k];
+        for (uint32_t k0 = 0; k0 < b->n; k0 += DM_CHUNK) {
+            const uint32_t *list = q->list + b->base + k0;
+            const uint32_t listed = q->chunk_listed[b->chunk0 + k0 / DM_CHUNK];
+            for (uint32_t e = 0; e < listed; e++) {
+                const uint32_t p = list[e], pid = b->base + p, gk = pid - q->npp;
+                dm_wall *wall = &w->walls[b->j[p]];
+                const double *fw = q->out + (size_t)S * pid, *tw = fw + D + W;
+                double arm[3] = {0.0, 0.0, 0.0}, f3[3] = {0.0, 0.0, 0.0}, work = 0.0;
+                for (int c = 0; c < D; c++) {
+                    f3[c] = fw[c];
+                    wall->force[c] += fw[c];
+                    arm[c] = g->cp[D * gk + c] - wall->c[c];
+                    work -= fw[c] * g->vw[D * gk + c];
+                }
+                wall->torque[0] += arm[1] * f3[2] - arm[2] * f3[1];
+                wall->torque[1] += arm[2] * f3[0] - arm[0] * f3[2];
+                wall->torque[2] += arm[0] * f3[1] - arm[1] * f3[0];
+                for (int c = 0; c < W; c++) {
+                    const int z = D == 3 ? c : 2;
+                    wall->torque[z] += tw[c];
+                    work -= tw[c] * wall->omega[z];
+                }
+                if (tally) {
+                    wall->dissipated += g->lost[gk];
+                    t->wall_work += work * dt;
+                }
+            }
+        }
+    }
+}
+
+typedef struct chunk_args {
+    const double *vp, *wp;
+    double dt_hist, reach;
+    int tally, direct;
+} chunk_args;
+
+/* The chunks whose first pair belongs to a particle of [begin, end): the
+ * ranges that sum the particles' forces next find most of their pairs' results
+ * in their own core's cache. */
+static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca,
+                              uint32_t begin, uint32_t end)
+{
+    dm_results *q = &w->res;
+    const dm_kernel_fn *ppk = D == 3 ? dm_pp_kernels3 : dm_pp_kernels2;
+    const dm_kernel_fn *pwk = D == 3 ? dm_pw_kernels3 : dm_pw_kernels2;
+    if (ca->direct) /* the only range: the chunks add into the sums as they go */
+        init_forces(D, w, begin, end);
+    for (uint32_t c = 0; c < q->nchunks; c++) {
+        const dm_chunkref r = q->chunks[c];
+        if (r.i0 < begin || r.i0 >= end)
+            continue;
+        dm_bucket *b = r.walls ? &w->pw.b[r.kernel] : &w->pp.b[r.kernel];
+        dm_kernel_args a = {.w = w, .b = b, .k0 = r.k0, .geom_offset = b->base - q->npp,
+                            .vp = ca->vp, .wp = ca->wp, .dt_hist = ca->dt_hist,
+                            .reach = ca->reach, .tally = ca->tally, .direct = ca->direct};
+        (r.walls ? pwk : ppk)[r.kernel](&a);
+        q->chunk_tally[c] = a.t;
+        q->chunk_contacts[c] = a.contacts;
+        q->chunk_listed[c] = a.listed;
+    }
+}
+
+static void run_chunks2(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)
+{
+    (void)t;
+    run_chunks(2, w, a, begin, end);
+}
+
+static void run_chunks3(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)
+{
+    (void)t;
+    run_chunks(3, w, a, begin, end);
+}
+
+/* Evaluates all forces and torques at the current state. dt_hist > 0 advances
+ * the contact histories by that time (a real step); tally adds the step's
+ * dissipation and wall work to the world's energy account. vp, wp: the
+ * velocities dashpots and friction see; reach: how far past a sample its impulse
+ * reaches, in steps (see dm_law). The chunks of pairs, then the particles'
+ * sums, run on w->base.threads threads; every sum is taken in an order that does
+ * not depend on them. */
+void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
+               int tally)
+{
+    const int D = w->dim;
+    dm_results *q = &w->res;
+    if (!q->valid)
+        dm_results_layout(w);
+    const uint32_t n = w->p.n;
+    /* one range: each chunk adds its results to the particles while they
+     * are in cache; else the ranges sum their particles' forces afterwards */
+    chunk_args ca = {.vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach, .tally = tally,
+                     .direct = dm_ranges(w, n) == 1};
+    dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
+    const uint32_t nchunks = q->nchunks;
+    dm_tally t = {0};
+    w->ncontacts = w->nwall_contacts = 0;
+    for (uint32_t c = 0; c < nchunks; c++) {
+        if (q->chunks[c].walls)
+            w->nwall_contacts += q->chunk_contacts[c];
+        else
+            w->ncontacts += q->chunk_contacts[c];
+        if (tally)
+            dm_tally_add(&t, &q->chunk_tally[c]);
+    }
+    if (!ca.direct)
+        dm_parallel(w, n, D == 3 ? sum_forces3 : sum_forces2, NULL);
+    if (D == 3)
+        sum_walls(3, w, tally, dt_hist, &t);
+    else
+        sum_walls(2, w, tally, dt_hist, &t);
+    if (tally)
+        dm_tally_add(&w->tally, &t);
+    w->forces_valid = true;
+}
+
+/* Fills a contact record from the kinematics and the law's output, as seen
+ * from body a (forces on a); without forces, only the overlap and the
+ * stored energies. */
+static void contact_record(int dim, dm_laws l, const dm_pairparam *pp, const dm_kin *q,
+                           const double *xa, const double *hist, int forces, dm_contact_eval *e)
+{
+    e->delta = q->delta;
+    dm_law_stored(dim, l.normal, l.tangential, pp, q->delta, q->rstar, hist, &e->e_normal,
+                  &e->e_tangential);
+    if (!forces)
+        return;
+    double h[DM_MAX_HIST];
+    dm_law_out o;
+    dm_law(dim, l.normal, l.damping, l.tangential, l.rolling, pp, q->n, q->delta, q->vc, q->dc,
+           q->wrel, q->rstar, q->mstar, 0.0, 0.0, 0, hist, h, &o);
+    memset(e->point, 0, sizeof e->point);
+    memset(e->normal, 0, sizeof e->normal);
+    memset(e->fn, 0, sizeof e->fn);
+    memset(e->ft, 0, sizeof e->ft);
+    memset(e->mr, 0, sizeof e->mr);
+    for (int c = 0; c < dim; c++) {
+        e->point[c] = xa[c] + q->ai * q->n[c];
+        e->normal[c] = q->n[c];
+        e->fn[c] = -o.fn * q->n[c];
+        e->ft[c] = -o.ft[c];
+    }
+    if (dim == 3)
+        memcpy(e->mr, o.mr, sizeof e->mr);
+    else
+        e->mr[2] = o.mr[0];
+}
+
+/* Calls fn for every contact (overlap > 0) at the current state, without
+ * changing the world's physical state; forces: with the contact's forces,
+ * point and normal (otherwise only its bodies, overlap and stored energies
+ * are given). The pair table must be resolved and the wall geometry current
+ * (dm_wgeom_update). */
+void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void *ctx)
+{
+    const int D = w->dim;
+    const dm_particles *P = &w->p;
+    dm_contact_eval e;
+    for (int k = 0; k < DM_KERNELS; k++) {
+        const dm_bucket *b = &w->pp.b[k];
+        dm_laws l = dm_kernel_laws(k);
+        for (uint32_t p = 0; p < b->n; p++) {
+            uint32_t i = b->i[p], j = b->j[p];
+            double d[3], r2;
+            if (!dm_pp_touch(D, P, i, j, d, &r2))
+                continue;
+            dm_kin q = {.delta = P->r[i] + P->r[j] - sqrt(r2),
+                        .rstar = P->r[i] * P->r[j] / (P->r[i] + P->r[j])};
+            if (forces)
+                dm_pp_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, i, j, d, r2, &q);
+            const dm_pairparam *pp = &w->ptab[P->mat[i] * w->nmat_tab + P->mat[j]];
+            contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, forces, &e);
+            e.i = i;
+            e.j = j;
+            e.wall = 0;
+            fn(ctx, &e);
+        }
+    }
+    uint32_t g0 = 0;
+    for (int k = 0; k < DM_KERNELS; k++) {
+        const dm_bucket *b = &w->pw.b[k];
+        dm_laws l = dm_kernel_laws(k);
+        for (uint32_t p = 0; p < b->n; p++) {
+            uint32_t i = b->i[p];
+            const dm_wall *wall = &w->walls[b->j[p]];
+            if (!(w->wg.delta[g0 + p] > 0.0))
+                continue;
+            dm_kin q = {.delta = w->wg.delta[g0 + p], .rstar = P->r[i]};
+            if (forces)
+                dm_pw_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, &w->wg, g0 + p, i, wall,
+                          &q);
+            const dm_pairparam *pp = &w->ptab[P->mat[i] * w->nmat_tab + wall->material];
+            contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, forces, &e);
+            e.i = i;
+            e.j = b->j[p];
+            e.wall = 1;
+            fn(ctx, &e);
+        }
+        g0 += b->n;
+    }
+}

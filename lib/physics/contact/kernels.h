@@ -1,0 +1,527 @@
+/* kernels.h: the contact loops, specialised per dimension and contact model.
+ *
+ * A kernel works through one chunk of a bucket of candidate pairs that share
+ * a combination of laws. kernels2.c and kernels3.c instantiate every
+ * combination for their dimension through DM_FOR_EACH_KERNEL; forces.c picks
+ * the kernel of each chunk, so the loops contain no branch on options and
+ * no indirect call.
+ */
+#ifndef DM_KERNELS_H
+#define DM_KERNELS_H
+
+#include "physics/contact/contact.h"
+#include "physics/contact/law.h"
+#include "physics/geometry/geometry.h"
+
+typedef struct dm_kernel_args {
+    demill_world *w;
+    dm_bucket *b;
+    uint32_t k0;           /* the chunk: candidates k0 .. k0 + DM_CHUNK - 1 of b */
+    uint32_t geom_offset;  /* walls: index of the bucket's first pair in w->wg */
+    const double *vp, *wp; /* velocities the dashpots see (see dm_law) */
+    double dt_hist, reach;
+    int tally;
+    int direct;            /* 1: also add the results to the particles' sums */
+    dm_tally t;            /* out: the chunk's dissipation */
+    uint32_t contacts;     /* out: pairs in contact */
+    uint32_t listed;       /* out: pairs with a result, listed in w->res.list */
+} dm_kernel_args;
+
+typedef void (*dm_kernel_fn)(dm_kernel_args *a);
+
+/* Kernel order: normal (linear, Hertz) outermost, then damping (3),
+ * tangential (4), rolling (2); see dm_kernel_index(). */
+#define DM_FOR_RL(X, D, NL, DL, TL) X(D, NL, DL, TL, 0) X(D, NL, DL, TL, 1)
+#define DM_FOR_TL(X, D, NL, DL)                                                                   \
+    DM_FOR_RL(X, D, NL, DL, 0) DM_FOR_RL(X, D, NL, DL, 1) DM_FOR_RL(X, D, NL, DL, 2)             \
+        DM_FOR_RL(X, D, NL, DL, 3)
+#define DM_FOR_DL(X, D, NL) DM_FOR_TL(X, D, NL, 0) DM_FOR_TL(X, D, NL, 1) DM_FOR_TL(X, D, NL, 2)
+#define DM_FOR_EACH_KERNEL(X, D) DM_FOR_DL(X, D, 1) DM_FOR_DL(X, D, 2)
+
+/* 2D: the z component of a × b, and ω ẑ × n. */
+DM_INLINE void dm_spin_cross_n(const int D, const double *om, const double *n, double *out)
+{
+    if (D == 3) {
+        out[0] = om[1] * n[2] - om[2] * n[1];
+        out[1] = om[2] * n[0] - om[0] * n[2];
+        out[2] = om[0] * n[1] - om[1] * n[0];
+    } else {
+        out[0] = -om[0] * n[1];
+        out[1] = om[0] * n[0];
+    }
+}
+
+/* n × f: 3 components in 3D, the z component in 2D. */
+DM_INLINE void dm_n_cross(const int D, const double *n, const double *f, double *out)
+{
+    if (D == 3) {
+        out[0] = n[1] * f[2] - n[2] * f[1];
+        out[1] = n[2] * f[0] - n[0] * f[2];
+        out[2] = n[0] * f[1] - n[1] * f[0];
+    } else {
+        out[0] = n[0] * f[1] - n[1] * f[0];
+    }
+}
+
+/* Kinematics of one contact: normal, overlap, lever arms and the relative
+ * motion at the contact point. */
+typedef struct dm_kin {
+    double n[3], delta, ai, aj, vc[3], dc[3], wrel[3], rstar, mstar;
+} dm_kin;
+
+/* Relative velocity of b with respect to a at the contact point, from linear
+ * velocities va, vb and the lever-arm-weighted spin sum s = a_a ω_a + a_b ω_b. */
+DM_INLINE void dm_contact_velocity(const int D, const int SPIN, const double *va,
+                                   const double *vb, const double *s, const double *n,
+                                   double *out)
+{
+    for (int c = 0; c < D; c++)
+        out[c] = vb[c] - va[c];
+    if (SPIN) {
+        double sw[3];
+        dm_spin_cross_n(D, s, n, sw);
+        for (int c = 0; c < D; c++)
+            out[c] -= sw[c];
+    }
+}
+
+/* Whether particles i and j touch; d receives x_j - x_i, *r2 its square. */
+DM_INLINE int dm_pp_touch(const int D, const dm_particles *P, uint32_t i, uint32_t j, double *d,
+                          double *r2)
+{
+    const double *x = P->x;
+    double s = 0.0;
+    for (int c = 0; c < D; c++) {
+        d[c] = x[D * j + c] - x[D * i + c];
+        s += d[c] * d[c];
+    }
+    const double sum = P->r[i] + P->r[j];
+    *r2 = s;
+    return s < sum * sum;
+}
+
+/* Particle-particle kinematics of a touching pair, from d = x_j - x_i and
+ * its square r2. SPIN: include rotation in the contact velocities; ROLL:
+ * compute wrel. vp, wp: the velocities the dashpots see. */
+DM_INLINE void dm_pp_kin(const int D, const int SPIN, const int ROLL, const dm_particles *P,
+                         const double *vp, const double *wp, uint32_t i, uint32_t j,
+                         const double *d, double r2, dm_kin *k)
+{
+    const int W = D == 3 ? 3 : 1;
+    const double *v = P->v, *om = P->w, *rad = P->r;
+    const double dist = sqrt(r2), inv = 1.0 / dist;
+    for (int c = 0; c < D; c++) /* coincident centres: any normal will do */
+        k->n[c] = dist > 0.0 ? d[c] * inv : c == 0;
+    const double sum = rad[i] + rad[j];
+    k->delta = sum - dist;
+    k->ai = rad[i] - 0.5 * k->delta;
+    k->aj = rad[j] - 0.5 * k->delta;
+    double s[3] = {0.0, 0.0, 0.0}, sp[3] = {0.0, 0.0, 0.0};
+    if (SPIN)
+        for (int c = 0; c < W; c++) {
+            s[c] = k->ai * om[W * i + c] + k->aj * om[W * j + c];
+            sp[c] = k->ai * wp[W * i + c] + k->aj * wp[W * j + c];
+        }
+    dm_contact_velocity(D, SPIN, v + D * i, v + D * j, s, k->n, k->dc);
+    dm_contact_velocity(D, SPIN, vp + D * i, vp + D * j, sp, k->n, k->vc);
+    for (int c = 0; c < 3; c++)
+        k->wrel[c] = 0.0;
+    if (ROLL)
+        for (int c = 0; c < W; c++)
+            k->wrel[c] = wp[W * i + c] - wp[W * j + c];
+    k->rstar = rad[i] * rad[j] / sum;
+    k->mstar = P->m[i] * P->m[j] / (P->m[i] + P->m[j]);
+}
+
+/* Particle-wall kinematics of a touching candidate, from its geometry gk. */
+DM_INLINE void dm_pw_kin(const int D, const int SPIN, const int ROLL, const dm_particles *P,
+                         const double *vp, const double *wp, const dm_wgeom *g, uint32_t gk,
+                         uint32_t i, const dm_wall *wall, dm_kin *k)
+{
+    const int W = D == 3 ? 3 : 1;
+    const double *om = P->w;
+    k->delta = g->delta[gk];
+    for (int c = 0; c < D; c++)
+        k->n[c] = g->nrm[D * gk + c];
+    k->ai = P->r[i] - 0.5 * k->delta;
+    k->aj = 0.0;
+    double s[3] = {0.0, 0.0, 0.0}, sp[3] = {0.0, 0.0, 0.0};
+    if (SPIN)
+        for (int c = 0; c < W; c++) {
+            s[c] = k->ai * om[W * i + c];
+            sp[c] = k->ai * wp[W * i + c];
+        }
+    dm_contact_velocity(D, SPIN, P->v + D * i, g->vw + D * gk, s, k->n, k->dc);
+    dm_contact_velocity(D, SPIN, vp + D * i, g->vw + D * gk, sp, k->n, k->vc);
+    for (int c = 0; c < 3; c++)
+        k->wrel[c] = 0.0;
+    if (ROLL)
+        for (int c = 0; c < W; c++)
+            k->wrel[c] = wp[W * i + c] - wall->omega[D == 3 ? c : 2];
+    k->rstar = P->r[i];
+    k->mstar = P->m[i];
+}
+
+/* A contact with the exit correction found apart (dm_law_exit): returns the
+ * force along n on b that applies the impulse its last sample in contact
+ * missed or added, the exit time found by interpolating the overlap. hb:
+ * the two boundary slots of its history. */
+DM_INLINE double dm_exit_force(const double *hb, double delta_now, double reach,
+                               const dm_pairparam *pp)
+{
+    const double d_last = hb[1];
+    /* what jumps to zero where δ reaches 0: the dashpot part of the last
+     * force, never pulling when the normal force is clamped */
+    double jump = hb[0] - pp->kn * d_last;
+    if (pp->clamp && jump < 0.0)
+        jump = 0.0;
+    return jump * (d_last / (d_last - delta_now) - reach);
+}
+
+/* A kernel works through a chunk of DM_CHUNK candidates in three passes:
+ * the narrow phase finds the pairs that touch (and ends the contacts that
+ * came apart); the law, the same arithmetic for every touching pair with no
+ * branch on the pair, runs as a vectorised loop; the results, each pair's
+ * force and torques, are then stored by pair id (dm_results) with the new
+ * histories, and summed per particle afterwards. */
+#define DM_CHUNK 128
+#define DM_LANES 8 /* the law's loop runs over a multiple of this many pairs */
+
+typedef struct dm_chunk {
+    uint32_t touch[DM_CHUNK];          /* whether each candidate touches */
+    uint32_t k[DM_CHUNK];              /* the touching pairs, indices in the bucket */
+    uint32_t pp[DM_CHUNK];             /* and their entries in the pair table */
+    uint32_t first[DM_CHUNK];          /* 1 if the pair was apart at the last step */
+    double f[3][DM_CHUNK];             /* force on b */
+    double ta[3][DM_CHUNK], tb[3][DM_CHUNK]; /* torques on a and b (W components) */
+    double diss[4][DM_CHUNK];          /* normal, tangential, friction, rolling */
+    double h[DM_MAX_HIST][DM_CHUNK];   /* histories, then their new values */
+} dm_chunk;
+
+/* Copies the histories of the chunk's m touching pairs into it, whether
+ * each is a new contact (its touch flag off), and their entries in the pair
+ * table (WALLS: the pairs of bucket b are particle-wall pairs); pads the
+ * list with copies of its last pair to a whole number of vector lanes, which
+ * the law's loop then needs no scalar remainder for. Returns the padded
+ * length. */
+DM_INLINE uint32_t dm_chunk_load(const int HSL, const int WALLS, const demill_world *w,
+                                 const dm_bucket *b, dm_chunk *ch, uint32_t m)
+{
+    const uint16_t *mat = w->p.mat;
+    for (uint32_t s = 0; s < m; s++) {
+        const uint32_t k = ch->k[s], j = b->j[k];
+        for (int c = 0; c < HSL; c++)
+            ch->h[c][s] = b->hist[(size_t)b->hs * k + c];
+        ch->first[s] = !b->on[k];
+        ch->pp[s] = mat[b->i[k]] * w->nmat_tab + (WALLS ? w->walls[j].material : mat[j]);
+    }
+    const uint32_t padded = m ? (m + DM_LANES - 1) / DM_LANES * DM_LANES : 0;
+    for (uint32_t s = m; s < padded; s++) {
+        ch->k[s] = ch->k[m - 1];
+        ch->pp[s] = ch->pp[m - 1];
+        ch->first[s] = ch->first[m - 1];
+        for (int c = 0; c < HSL; c++)
+            ch->h[c][s] = ch->h[c][m - 1];
+    }
+    return padded;
+}
+
+/* The law for pair s of a chunk with kinematics q, from the history and
+ * new-contact flag loaded into the chunk; stores the force on b, the torques
+ * on a (lever arm ai) and b (aj), the dissipation and the new history. */
+DM_INLINE void dm_chunk_law(const int D, const int NL, const int DL, const int TL, const int RL,
+                            const int HSL, dm_chunk *ch, uint32_t s, const dm_pairparam *pp,
+                            const dm_kin *q, double dt_hist, double reach)
+{
+    const int W = D == 3 ? 3 : 1;
+    double hin[DM_MAX_HIST], hout[DM_MAX_HIST];
+    for (int c = 0; c < HSL; c++)
+        hin[c] = ch->h[c][s];
+    dm_law_out o;
+    dm_law(D, NL, DL, TL, RL, pp, q->n, q->delta, q->vc, q->dc, q->wrel, q->rstar, q->mstar,
+           dt_hist, reach, (int)ch->first[s], hin, hout, &o);
+    double nf[3];
+    dm_n_cross(D, q->n, o.ft, nf);
+    for (int c = 0; c < D; c++)
+        ch->f[c][s] = o.fn * q->n[c] + o.ft[c];
+    for (int c = 0; c < W; c++) {
+        ch->ta[c][s] = o.mr[c] - q->ai * nf[c];
+        ch->tb[c][s] = -o.mr[c] - q->aj * nf[c];
+    }
+    ch->diss[0][s] = o.diss_normal;
+    ch->diss[1][s] = o.diss_tangential;
+    ch->diss[2][s] = o.diss_friction;
+    ch->diss[3][s] = o.diss_rolling;
+    for (int c = 0; c < HSL; c++)
+        ch->h[c][s] = hout[c];
+}
+
+/* Touching pair s of a chunk's result row o (see dm_result_add). */
+DM_INLINE void dm_chunk_result(const int D, const dm_chunk *ch, uint32_t s, double *o)
+{
+    const int W = D == 3 ? 3 : 1;
+    for (int c = 0; c < D; c++)
+        o[c] = ch->f[c][s];
+    for (int c = 0; c < W; c++) {
+        o[D + c] = ch->ta[c][s];
+        o[D + W + c] = ch->tb[c][s];
+    }
+}
+
+/* Commits touching pair s of a chunk: its new history, the contact on (for
+ * a step), its dissipation into the tally and the event slot. Returns the
+ * energy it dissipated over the step. */
+DM_INLINE double dm_chunk_commit(const int HSL, const int EV, const dm_chunk *ch,
+                                 uint32_t s, double *h, uint8_t *on, int advance, int tally,
+                                 dm_tally *t)
+{
+    double lost = 0.0;
+    if (advance) {
+        for (int c = 0; c < HSL; c++)
+            h[c] = ch->h[c][s];
+        *on = 1;
+    }
+    if (tally) {
+        lost = ch->diss[0][s] + ch->diss[1][s] + ch->diss[2][s] + ch->diss[3][s];
+        t->diss_normal += ch->diss[0][s];
+        t->diss_tangential += ch->diss[1][s];
+        t->diss_friction += ch->diss[2][s];
+        t->diss_rolling += ch->diss[3][s];
+        if (EV)
+            h[HSL] += lost;
+    }
+    return lost;
+}
+
+/* A force fc n on b (and -fc n on a) with no torques, into out. */
+DM_INLINE void dm_out_normal(const int D, double *out, double fc, const double *n)
+{
+    const int W = D == 3 ? 3 : 1;
+    for (int c = 0; c < D; c++)
+        out[c] = fc * n[c];
+    for (int c = 0; c < 2 * W; c++)
+        out[D + c] = 0.0;
+}
+
+/* A pair's result row o (S = D + 2W doubles: force on b, torques on a and on
+ * b) added to its particles' forces and torques, in the order and with the
+ * operations of forces.c's sums: chunk after chunk in pair-id order on one
+ * thread, this gives them bit for bit. */
+DM_INLINE void dm_result_add(const int D, const int WALLS, double *restrict f, double *restrict tq,
+                             uint32_t i, uint32_t j, const double *o)
+{
+    const int W = D == 3 ? 3 : 1;
+    for (int c = 0; c < D; c++)
+        f[D * i + c] -= o[c];
+    for (int c = 0; c < W; c++)
+        tq[W * i + c] += o[D + c];
+    if (!WALLS) {
+        for (int c = 0; c < D; c++)
+            f[D * j + c] += o[c];
+        for (int c = 0; c < W; c++)
+            tq[W * j + c] += o[D + W + c];
+    }
+}
+
+/* Particle-particle chunk. */
+DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
+                           dm_kernel_args *a)
+{
+    const int S = D + 2 * (D == 3 ? 3 : 1);
+    const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
+    const int EXIT = dm_law_exit(NL, DL);
+    const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
+    demill_world *w = a->w;
+    const dm_particles *P = &w->p;
+    const dm_bucket *b = a->b;
+    const int EV = w->events, HS = b->hs; /* HS = HSL + EV: the event slot is last */
+    const double *vp = a->vp, *wp = a->wp;
+    const uint16_t *restrict mat = w->p.mat;
+    const dm_pairparam *tab = w->ptab;
+    const uint32_t nm = w->nmat_tab, k0 = a->k0;
+    const uint32_t k1 = b->n - k0 < DM_CHUNK ? b->n : k0 + DM_CHUNK;
+    const uint32_t *restrict bi = b->i, *restrict bj = b->j;
+    double *restrict hist = b->hist, *restrict out = w->res.out + (size_t)S * b->base;
+    uint8_t *restrict on = b->on;
+    const double dt_hist = a->dt_hist, reach = a->reach;
+    const int tally = a->tally, advance = dt_hist > 0.0, direct = a->direct;
+    double *restrict f = w->p.f, *restrict tq = w->p.t;
+    dm_tally t = {0};
+    dm_chunk ch;
+
+    for (uint32_t k = k0; k < k1; k++) {
+        double d[3], r2;
+        ch.touch[k - k0] = (uint32_t)dm_pp_touch(D, P, bi[k], bj[k], d, &r2);
+    }
+    uint32_t m = 0, listed = 0;
+    uint32_t *restrict list = w->res.list + b->base + k0;
+    for (uint32_t k = k0; k < k1; k++) {
+        const uint32_t touch = ch.touch[k - k0];
+        ch.k[m] = k;
+        m += touch;
+        if (touch | !on[k] | !advance)
+            continue;
+        /* the contact came apart during the step */
+        const uint32_t i = bi[k], j = bj[k];
+        double *h = hist + (size_t)HS * k;
+        if (EXIT) {
+            double d[3], r2, n[3];
+            dm_pp_touch(D, P, i, j, d, &r2);
+            const double dist = sqrt(r2);
+            const double fc = dm_exit_force(h + HSP, P->r[i] + P->r[j] - dist, reach,
+                                            &tab[mat[i] * nm + mat[j]]);
+            double vn = 0.0;
+            for (int c = 0; c < D; c++) {
+                n[c] = d[c] / dist;
+                vn += (vp[D * j + c] - vp[D * i + c]) * n[c];
+            }
+            dm_out_normal(D, out + (size_t)S * k, fc, n);
+            if (direct)
+                dm_result_add(D, 0, f, tq, i, j, out + (size_t)S * k);
+            else
+                list[listed++] = k;
+            if (tally) {
+                t.diss_normal -= fc * vn * dt_hist;
+                if (EV)
+                    h[HSL] -= fc * vn * dt_hist;
+            }
+        }
+        if (EV && h[HSL] > 0.0)
+            dm_spectrum_record(w, i, j, -1, h[HSL]);
+        for (int c = 0; c < HS; c++)
+            h[c] = 0.0;
+        on[k] = 0;
+    }
+    const uint32_t lanes = dm_chunk_load(HSL, 0, w, b, &ch, m);
+    for (uint32_t s = 0; s < lanes; s++) {
+        const uint32_t k = ch.k[s], i = bi[k], j = bj[k];
+        double d[3], r2;
+        dm_pp_touch(D, P, i, j, d, &r2);
+        dm_kin q;
+        dm_pp_kin(D, SPIN, RL, P, vp, wp, i, j, d, r2, &q);
+        dm_chunk_law(D, NL, DL, TL, RL, HSL, &ch, s, &tab[ch.pp[s]], &q, dt_hist, reach);
+    }
+    for (uint32_t s = 0; s < m; s++) {
+        const uint32_t k = ch.k[s];
+        dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
+        if (direct) {
+            double o[9];
+            dm_chunk_result(D, &ch, s, o);
+            dm_result_add(D, 0, f, tq, bi[k], bj[k], o);
+        } else {
+            dm_chunk_result(D, &ch, s, out + (size_t)S * k);
+            list[listed++] = k;
+        }
+    }
+    a->t = t;
+    a->contacts = m;
+    a->listed = listed;
+}
+
+/* Particle-wall chunk: the contact geometry of its candidates (into w->wg),
+ * then the law. The walls' forces, torques and energies are summed afterwards
+ * (forces.c), from out and the geometry's lost. */
+DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
+                           dm_kernel_args *a)
+{
+    const int S = D + 2 * (D == 3 ? 3 : 1);
+    const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
+    const int EXIT = dm_law_exit(NL, DL);
+    const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
+    demill_world *w = a->w;
+    const dm_particles *P = &w->p;
+    const dm_bucket *b = a->b;
+    const int EV = w->events, HS = b->hs; /* HS = HSL + EV: the event slot is last */
+    const double *vp = a->vp, *wp = a->wp;
+    const uint16_t *restrict mat = w->p.mat;
+    const dm_pairparam *tab = w->ptab;
+    const uint32_t nm = w->nmat_tab, g0 = a->geom_offset, k0 = a->k0;
+    const uint32_t k1 = b->n - k0 < DM_CHUNK ? b->n : k0 + DM_CHUNK;
+    dm_wgeom *g = &w->wg;
+    double *restrict hist = b->hist, *restrict out = w->res.out + (size_t)S * b->base;
+    uint8_t *restrict on = b->on;
+    const double dt_hist = a->dt_hist, reach = a->reach;
+    const int tally = a->tally, advance = dt_hist > 0.0, direct = a->direct;
+    double *restrict f = w->p.f, *restrict tq = w->p.t;
+    dm_tally t = {0};
+    dm_chunk ch;
+
+    dm_wgeom_range(w, b, g0, k0, k1);
+    uint32_t m = 0, listed = 0;
+    uint32_t *restrict list = w->res.list + b->base + k0;
+    for (uint32_t k = k0; k < k1; k++) {
+        const uint32_t gk = g0 + k;
+        const uint32_t touch = g->delta[gk] > 0.0;
+        ch.k[m] = k;
+        m += touch;
+        if (touch | !on[k] | !advance)
+            continue;
+        /* the contact came apart during the step */
+        const uint32_t i = b->i[k];
+        const dm_wall *wall = &w->walls[b->j[k]];
+        double *h = hist + (size_t)HS * k;
+        if (EXIT) {
+            const double *n = g->nrm + D * gk;
+            const double fc = dm_exit_force(h + HSP, g->delta[gk], reach,
+                                            &tab[mat[i] * nm + wall->material]);
+            double absorbed = 0.0;
+            for (int c = 0; c < D; c++)
+                absorbed += fc * n[c] * (vp[D * i + c] - g->vw[D * gk + c]);
+            dm_out_normal(D, out + (size_t)S * k, fc, n);
+            if (direct)
+                dm_result_add(D, 1, f, tq, i, 0, out + (size_t)S * k);
+            list[listed++] = k;
+            g->lost[gk] = absorbed * dt_hist;
+            if (tally) {
+                t.diss_normal += absorbed * dt_hist;
+                if (EV)
+                    h[HSL] += absorbed * dt_hist;
+            }
+        }
+        if (EV && h[HSL] > 0.0 && wall->drum_part)
+            dm_spectrum_record(w, i, 0,
+                               wall->drum_part == DM_PART_LIFTER ? DEMILL_SPECTRUM_LIFTER
+                                                                 : DEMILL_SPECTRUM_SHELL,
+                               h[HSL]);
+        for (int c = 0; c < HS; c++)
+            h[c] = 0.0;
+        on[k] = 0;
+    }
+    const uint32_t lanes = dm_chunk_load(HSL, 1, w, b, &ch, m);
+    for (uint32_t s = 0; s < lanes; s++) {
+        const uint32_t k = ch.k[s], i = b->i[k];
+        const dm_wall *wall = &w->walls[b->j[k]];
+        dm_kin q;
+        dm_pw_kin(D, SPIN, RL, P, vp, wp, g, g0 + k, i, wall, &q);
+        dm_chunk_law(D, NL, DL, TL, RL, HSL, &ch, s, &tab[ch.pp[s]], &q, dt_hist, reach);
+    }
+    for (uint32_t s = 0; s < m; s++) {
+        const uint32_t k = ch.k[s];
+        g->lost[g0 + k] =
+            dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
+        dm_chunk_result(D, &ch, s, out + (size_t)S * k);
+        if (direct)
+            dm_result_add(D, 1, f, tq, b->i[k], 0, out + (size_t)S * k);
+        list[listed++] = k;
+    }
+    a->t = t;
+    a->contacts = m;
+    a->listed = listed;
+}
+
+#define DM_DEFINE_KERNELS(D, NL, DL, TL, RL)                                                     \
+    DM_VECTOR_CLONES static void dm_pp_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
+    {                                                                                             \
+        dm_pp_chunk(D, NL, DL, TL, RL, a);                                                        \
+    }                                                                                             \
+    DM_VECTOR_CLONES static void dm_pw_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
+    {                                                                                             \
+        dm_pw_chunk(D, NL, DL, TL, RL, a);                                                        \
+    }
+#define DM_PP_ENTRY(D, NL, DL, TL, RL) dm_pp_##D##_##NL##_##DL##_##TL##_##RL,
+#define DM_PW_ENTRY(D, NL, DL, TL, RL) dm_pw_##D##_##NL##_##DL##_##TL##_##RL,
+
+extern const dm_kernel_fn dm_pp_kernels2[DM_KERNELS], dm_pw_kernels2[DM_KERNELS];
+extern const dm_kernel_fn dm_pp_kernels3[DM_KERNELS], dm_pw_kernels3[DM_KERNELS];
+
+#endif /* DM_KERNELS_H */

@@ -1,0 +1,147 @@
+/* pairs.c: the resolution of materials and the user's per-pair choices into
+ * the constants the contact kernels read (docs/physics.md §2-5). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/status.h"
+#include "physics/contact/contact.h"
+
+const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b)
+{
+    if (a > b) {
+        uint32_t t = a;
+        a = b;
+        b = t;
+    }
+    for (uint32_t k = 0; k < w->npairs; k++)
+        if (w->pairs[k].a == a && w->pairs[k].b == b)
+            return &w->pairs[k];
+    return NULL;
+}
+
+/* The effective values of every derived key of pair (a, b). */
+void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws,
+                        double v[DM_PK_COUNT])
+{
+    const dm_material *ma = &w->mats[a], *mb = &w->mats[b];
+    const dm_pair_user *u = dm_pair_find(w, a, b);
+    v[DM_PK_RESTITUTION] = 0.5 * (ma->restitution + mb->restitution);
+    v[DM_PK_FRICTION] = 0.5 * (ma->friction + mb->friction);
+    v[DM_PK_ROLLING_FRICTION] = 0.5 * (ma->rolling_friction + mb->rolling_friction);
+    v[DM_PK_NORMAL_STIFFNESS] = ma->stiffness * mb->stiffness / (ma->stiffness + mb->stiffness);
+    v[DM_PK_VISCOUS] = 0;
+    v[DM_PK_KT_RATIO] = 2.0 / 7.0;
+    v[DM_PK_CT_FACTOR] = 1;
+    v[DM_PK_COULOMB_REG] = 1;
+    v[DM_PK_ROLLING_REG] = 1;
+    v[DM_PK_CLAMP] = 1;
+    *laws = (dm_laws){0, 0, 0, 0};
+    if (!u)
+        return;
+    *laws = (dm_laws){u->normal, u->damping, u->tangential, u->rolling};
+    for (int k = 0; k < DM_PK_COUNT; k++)
+        if (u->set & (1u << k))
+            v[k] = u->value[k];
+}
+
+/* E* and G* (docs/physics.md, notation). */
+static void elastic_moduli(const dm_material *ma, const dm_material *mb, double *e_star,
+                           double *g_star)
+{
+    *e_star = 1.0 / ((1 - ma->poisson * ma->poisson) / ma->youngs +
+                     (1 - mb->poisson * mb->poisson) / mb->youngs);
+    *g_star = 1.0 / (2 * (2 - ma->poisson) * (1 + ma->poisson) / ma->youngs +
+                     2 * (2 - mb->poisson) * (1 + mb->poisson) / mb->youngs);
+}
+
+static int laws_kernel(dm_laws laws)
+{
+    return laws.normal == DEMILL_NORMAL_NONE ? -1 : dm_kernel_index(laws);
+}
+
+int dm_pair_kernel(const demill_world *w, uint32_t a, uint32_t b)
+{
+    dm_laws laws;
+    double v[DM_PK_COUNT];
+    dm_pair_values(w, a, b, &laws, v);
+    return laws_kernel(laws);
+}
+
+static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairparam *pp)
+{
+    dm_laws laws;
+    double v[DM_PK_COUNT], g_star;
+    dm_pair_values(w, a, b, &laws, v);
+    memset(pp, 0, sizeof *pp);
+    pp->kernel = laws_kernel(laws);
+    pp->clamp = v[DM_PK_CLAMP] != 0;
+    pp->kn = v[DM_PK_NORMAL_STIFFNESS];
+    elastic_moduli(&w->mats[a], &w->mats[b], &pp->e_star, &g_star);
+    pp->g8 = 8.0 * g_star;
+    pp->cn = v[DM_PK_VISCOUS];
+    pp->restitution = v[DM_PK_RESTITUTION];
+    pp->xi = dm_damping_ratio(pp->restitution, pp->clamp);
+    pp->dcoef = (laws.normal == DEMILL_NORMAL_HERTZ ? 2.0 * sqrt(5.0 / 6.0) : 2.0) * pp->xi;
+    pp->kt = v[DM_PK_KT_RATIO] * pp->kn;
+    pp->ct_factor = v[DM_PK_CT_FACTOR];
+    pp->mu = v[DM_PK_FRICTION];
+    pp->mu_r = v[DM_PK_ROLLING_FRICTION];
+    pp->coul_reg = v[DM_PK_COULOMB_REG];
+    pp->roll_reg = v[DM_PK_ROLLING_REG];
+}
+
+/* Rebuilds the resolved pair table if anything changed, and (if asked)
+ * checks that every pair of materials that may touch has a model. Leaves
+ * the world unchanged when it fails. */
+demill_status dm_resolve_pairs(demill_world *w, bool require_models)
+{
+    if (require_models) {
+        for (uint32_t a = 0; a < w->nmat; a++) {
+            if (!w->mat_particles[a])
+                continue;
+            for (uint32_t b = 0; b < w->nmat; b++) {
+                if (!w->mat_particles[b] && !w->mat_walls[b])
+                    continue;
+                const dm_pair_user *u = dm_pair_find(w, a, b);
+                if (!u || u->normal == DEMILL_NORMAL_NONE)
+                    return dm_fail(w, DEMILL_ERR_NO_CONTACT_MODEL,
+                                   "no contact model for materials %u and %u (%s): set "
+                                   "DEMILL_PAIR_NORMAL with demill_pair_set()",
+                                   a, b,
+                                   w->mat_walls[b] && !w->mat_particles[b] ? "particle-wall"
+                                                                            : "particle-particle");
+            }
+        }
+    }
+    if (!w->ptab_dirty && w->nmat_tab == w->nmat)
+        return DEMILL_OK;
+    uint32_t nm = w->nmat;
+    dm_pairparam *tab = malloc((size_t)(nm ? nm : 1) * (nm ? nm : 1) * sizeof *tab);
+    if (!tab)
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory resolving contact models");
+    bool rotation = false, kernels_changed = false;
+    for (uint32_t a = 0; a < nm; a++)
+        for (uint32_t b = 0; b < nm; b++) {
+            dm_pairparam *pp = &tab[a * nm + b];
+            pair_resolve(w, a, b, pp);
+            if (pp->kernel >= 0 && w->mat_particles[a] && (w->mat_particles[b] || w->mat_walls[b])) {
+                dm_laws l = dm_kernel_laws(pp->kernel);
+                rotation |= l.tangential != DEMILL_TANGENTIAL_NONE || l.rolling != DEMILL_ROLLING_NONE;
+            }
+            if (a < w->nmat_tab && b < w->nmat_tab &&
+                w->ptab[a * w->nmat_tab + b].kernel != pp->kernel)
+                kernels_changed = true;
+        }
+    free(w->ptab);
+    w->ptab = tab;
+    w->nmat_tab = nm;
+    w->ptab_dirty = false;
+    w->rotation = rotation;
+    if (kernels_changed || !w->nlist_valid) {
+        /* contact lists are grouped by kernel: start them afresh */
+        dm_clist_clear(w);
+        w->nlist_valid = false;
+    }
+    return DEMILL_OK;
+}

@@ -1,0 +1,345 @@
+/* walls.c: walls with prescribed rigid motion (docs/physics.md §7): their
+ * exact kinematics and the contact geometry of each particle-wall candidate.
+ * Kinds: planes (free walls, and the drum's end caps), the inside of the
+ * drum's cylindrical shell, and prisms with a convex polygonal cross-section
+ * (the lifters). Each kind contributes one closest-point function
+ * (dm_wall_closest), so triangle meshes can join as a new kind. Free walls
+ * move by their own rigid motion; the drum's walls turn with the drum. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/alloc.h"
+#include "physics/geometry/geometry.h"
+
+/* Rotation matrix for angle |om| t about om (Rodrigues). */
+static void rotation(const double om[3], double t, double R[9])
+{
+    double a = sqrt(om[0] * om[0] + om[1] * om[1] + om[2] * om[2]);
+    double th = a * t;
+    memset(R, 0, 9 * sizeof *R);
+    R[0] = R[4] = R[8] = 1.0;
+    if (a == 0.0 || th == 0.0)
+        return;
+    double k[3] = {om[0] / a, om[1] / a, om[2] / a}, s = sin(th), c = 1.0 - cos(th);
+    R[0] = 1 - c * (k[1] * k[1] + k[2] * k[2]);
+    R[4] = 1 - c * (k[0] * k[0] + k[2] * k[2]);
+    R[8] = 1 - c * (k[0] * k[0] + k[1] * k[1]);
+    R[1] = -s * k[2] + c * k[0] * k[1];
+    R[3] = s * k[2] + c * k[0] * k[1];
+    R[2] = s * k[1] + c * k[0] * k[2];
+    R[6] = -s * k[1] + c * k[0] * k[2];
+    R[5] = -s * k[0] + c * k[1] * k[2];
+    R[7] = s * k[0] + c * k[1] * k[2];
+}
+
+static void mat_vec(const double R[9], const double v[3], double out[3])
+{
+    for (int r = 0; r < 3; r++)
+        out[r] = R[3 * r] * v[0] + R[3 * r + 1] * v[1] + R[3 * r + 2] * v[2];
+}
+
+void dm_wall_at(dm_wall *wall, double time)
+{
+    double tau = time - wall->t0, d[3], rd[3];
+    rotation(wall->omega, tau, wall->rot);
+    for (int c = 0; c < 3; c++) {
+        wall->c[c] = wall->c0[c] + wall->vel[c] * tau;
+        d[c] = wall->p0[c] - wall->c0[c];
+    }
+    mat_vec(wall->rot, d, rd);
+    mat_vec(wall->rot, wall->n0, wall->n);
+    for (int c = 0; c < 3; c++)
+        wall->p[c] = wall->c[c] + rd[c];
+}
+
+/* Makes the wall's current geometry its reference at time t0 (motion
+ * unchanged), keeping the skin bound relative to the last build. */
+void dm_wall_rebase(dm_wall *wall, double now, double t0)
+{
+    dm_wall_at(wall, now);
+    double rb[9];
+    memcpy(rb, wall->rot_build, sizeof rb);
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++) {
+            /* rot_build := rot_build · rot^T, as rot restarts from identity */
+            double sum = 0.0;
+            for (int k = 0; k < 3; k++)
+                sum += rb[3 * r + k] * wall->rot[3 * c + k];
+            wall->rot_build[3 * r + c] = sum;
+        }
+    memcpy(wall->p0, wall->p, sizeof wall->p);
+    memcpy(wall->n0, wall->n, sizeof wall->n);
+    memcpy(wall->c0, wall->c, sizeof wall->c);
+    wall->t0 = t0;
+    dm_wall_at(wall, t0);
+}
+
+/* Moves the world's clock to `time` without moving the walls. */
+void dm_walls_retime(demill_world *w, double time)
+{
+    for (uint32_t k = 0; k < w->nwalls; k++)
+        if (w->walls[k].kind && !w->walls[k].drum_part)
+            dm_wall_rebase(&w->walls[k], w->time, time);
+}
+
+/* A drum wall at drum angle theta, turning at omega about the z axis. */
+static void wall_at_drum(dm_wall *wall, double theta, double omega)
+{
+    const double c = cos(theta), s = sin(theta);
+    const double R[9] = {c, -s, 0, s, c, 0, 0, 0, 1};
+    memcpy(wall->rot, R, sizeof R);
+    memset(wall->c, 0, sizeof wall->c);
+    memset(wall->vel, 0, sizeof wall->vel);
+    wall->omega[0] = wall->omega[1] = 0.0;
+    wall->omega[2] = omega;
+    mat_vec(R, wall->p0, wall->p);
+    mat_vec(R, wall->n0, wall->n);
+    const int n = wall->npoly;
+    for (int k = 0; k < n; k++) {
+        const double x = wall->poly[2 * k], y = wall->poly[2 * k + 1];
+        wall->cpoly[2 * k] = c * x - s * y;
+        wall->cpoly[2 * k + 1] = s * x + c * y;
+    }
+    for (int k = 0; k < n; k++) {
+        const double *a = wall->cpoly + 2 * k, *b = wall->cpoly + 2 * ((k + 1) % n);
+        const double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey;
+        const double len = sqrt(l2);
+        double *e = wall->cedge + 4 * k;
+        e[0] = ey / len;
+        e[1] = -ex / len;
+        e[2] = ex / l2;
+        e[3] = ey / l2;
+    }
+    wall->bc[0] = c * wall->bc0[0] - s * wall->bc0[1];
+    wall->bc[1] = s * wall->bc0[0] + c * wall->bc0[1];
+}
+
+/* Moves every wall to `time`; the drum's walls to the drum's angle and speed,
+ * which the drum has been moved to (dm_drum_advance). */
+void dm_walls_advance(demill_world *w, double time)
+{
+    const double theta = w->drum.theta, omega = w->drum.omega;
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        dm_wall *wall = &w->walls[k];
+        if (!wall->kind)
+            continue;
+        if (wall->drum_part)
+            wall_at_drum(wall, theta, omega);
+        else
+            dm_wall_at(wall, time);
+    }
+}
+
+/* Signed distance of x from the wall's surface, positive on the particle
+ * side (negative inside the solid), and the unit normal from x towards the
+ * closest point of the surface (into the wall). For a prism and the shell
+ * only x and y matter: they extend along z. */
+double dm_wall_closest(const dm_wall *wall, const double *x, int dim, double *normal)
+{
+    normal[0] = normal[1] = normal[2] = 0.0;
+    switch (wall->kind) {
+    case DM_WALL_SHELL: {
+        const double r = sqrt(x[0] * x[0] + x[1] * x[1]);
+        if (r > 0.0) {
+            normal[0] = x[0] / r;
+            normal[1] = x[1] / r;
+        } else {
+            normal[0] = 1.0;
+        }
+        return wall->radius - r;
+    }
+    case DM_WALL_PRISM: {
+        /* convex polygon, counter-clockwise: outside if beyond some edge */
+        const int n = wall->npoly;
+        const double *v = wall->cpoly;
+        double best_sep = -HUGE_VAL, best_n[2] = {0.0, 0.0}, best_d2 = HUGE_VAL;
+        double best_c[2] = {0.0, 0.0};
+        for (int k = 0; k < n; k++) {
+            const double *e = wall->cedge + 4 * k;
+            const double ax = v[2 * k], ay = v[2 * k + 1];
+            const double bx = v[2 * ((k + 1) % n)], by = v[2 * ((k + 1) % n) + 1];
+            const double rx = x[0] - ax, ry = x[1] - ay;
+            const double sep = rx * e[0] + ry * e[1];
+            if (sep > best_sep) {
+                best_sep = sep;
+                best_n[0] = e[0];
+                best_n[1] = e[1];
+            }
+            /* closest point of the edge segment */
+            double t = rx * e[2] + ry * e[3];
+            t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+            const double cx = ax + t * (bx - ax), cy = ay + t * (by - ay);
+            const double d2 = (x[0] - cx) * (x[0] - cx) + (x[1] - cy) * (x[1] - cy);
+            if (d2 < best_d2) {
+                best_d2 = d2;
+                best_c[0] = cx;
+                best_c[1] = cy;
+            }
+        }
+        if (best_sep <= 0.0) { /* inside: out through the nearest face */
+            normal[0] = -best_n[0];
+            normal[1] = -best_n[1];
+            return best_sep;
+        }
+        const double d = sqrt(best_d2);
+        normal[0] = (best_c[0] - x[0]) / d;
+        normal[1] = (best_c[1] - x[1]) / d;
+        return d;
+    }
+    default: {
+        double d = 0.0;
+        for (int c = 0; c < dim; c++) {
+            d += (x[c] - wall->p[c]) * wall->n[c];
+            normal[c] = -wall->n[c];
+        }
+        return d;
+    }
+    }
+}
+
+/* Signed distance only (see dm_wall_closest). */
+double dm_wall_distance(const dm_wall *wall, const double *x, int dim)
+{
+    double n[3];
+    return dm_wall_closest(wall, x, dim, n);
+}
+
+/* A lower bound of the signed distance of x from the wall's surface (see
+ * dm_wall_closest), cheaper than the distance for a prism. */
+double dm_wall_distance_bound(const dm_wall *wall, const double *x, int dim)
+{
+    if (wall->kind != DM_WALL_PRISM)
+        return dm_wall_distance(wall, x, dim);
+    const double dx = x[0] - wall->bc[0], dy = x[1] - wall->bc[1];
+    return sqrt(dx * dx + dy * dy) - wall->brad;
+}
+
+void dm_walls_mark_built(demill_world *w)
+{
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        memcpy(w->walls[k].c_build, w->walls[k].c, sizeof w->walls[k].c);
+        memcpy(w->walls[k].rot_build, w->walls[k].rot, sizeof w->walls[k].rot);
+    }
+}
+
+/* The most any wall's surface can have moved, near the particles, since the
+ * last neighbour build: |Δc| + θ × reach, the reach of a free plane being the
+ * distance from its centre to the far corner of the particles' box (widened
+ * by the skin), of a lifter its outermost vertex, and zero for the shell and
+ * end caps, which the drum's rotation does not move. */
+double dm_walls_max_shift(const demill_world *w)
+{
+    double worst = 0.0;
+    const dm_grid *g = &w->grid;
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        const dm_wall *wall = &w->walls[k];
+        if (!wall->kind)
+            continue;
+        double dc2 = 0.0, reach = wall->reach;
+        for (int c = 0; c < 3; c++) {
+            double d = wall->c[c] - wall->c_build[c];
+            dc2 += d * d;
+        }
+        if (wall->kind == DM_WALL_PLANE && !wall->drum_part) {
+            double reach2 = 0.0;
+            for (int c = 0; c < 3; c++) {
+                double far =
+                    fmax(fabs(g->lo[c] - wall->c[c]), fabs(g->hi[c] - wall->c[c])) + w->skin;
+                reach2 += far * far;
+            }
+            reach = sqrt(reach2);
+        }
+        /* angle of rot · rot_build^T from its trace */
+        double tr = 0.0;
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                tr += wall->rot[3 * r + c] * wall->rot_build[3 * r + c];
+        double cosang = fmin(1.0, fmax(-1.0, 0.5 * (tr - 1.0)));
+        double shift = sqrt(dc2) + (reach > 0.0 ? acos(cosang) * reach : 0.0);
+        if (shift > worst)
+            worst = shift;
+    }
+    return worst;
+}
+
+/* Makes room for the geometry of every particle-wall candidate. */
+int dm_wgeom_reserve(demill_world *w)
+{
+    dm_wgeom *g = &w->wg;
+    uint32_t total = 0;
+    for (int k = 0; k < DM_KERNELS; k++)
+        total += w->pw.b[k].n;
+    if (total <= g->cap)
+        return 0;
+    size_t cap = dm_grown_capacity(g->cap, total);
+    void **const arrays[] = {(void **)&g->nrm, (void **)&g->vw, (void **)&g->cp,
+                             (void **)&g->delta, (void **)&g->lost};
+    const size_t sizes[] = {3 * sizeof(double), 3 * sizeof(double), 3 * sizeof(double),
+                            sizeof(double), sizeof(double)};
+    if (dm_grow_arrays(arrays, sizes, 5, cap))
+        return -1;
+    g->cap = (uint32_t)cap;
+    return 0;
+}
+
+/* Contact geometry of candidates p0 .. p1-1 of a particle-wall bucket whose
+ * first candidate has index g0 in w->wg (room reserved by the neighbour build). */
+void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p0, uint32_t p1)
+{
+    dm_wgeom *g = &w->wg;
+    const int D = w->dim;
+    const dm_particles *P = &w->p;
+    for (uint32_t p = p0; p < p1; p++) {
+        const uint32_t i = b->i[p], q = g0 + p;
+        const dm_wall *wall = &w->walls[b->j[p]];
+        const double *x = P->x + D * i;
+        double n[3];
+        const double delta = P->r[i] - dm_wall_closest(wall, x, D, n);
+        double *nrm = g->nrm + D * q, *cp = g->cp + D * q, *vw = g->vw + D * q;
+        g->delta[q] = delta;
+        double arm = P->r[i] - 0.5 * delta, rel[3] = {0.0, 0.0, 0.0};
+        for (int c = 0; c < D; c++) {
+            nrm[c] = n[c];
+            cp[c] = x[c] + arm * nrm[c];
+            rel[c] = cp[c] - wall->c[c];
+        }
+        const double *om = wall->omega;
+        double spin[3] = {om[1] * rel[2] - om[2] * rel[1], om[2] * rel[0] - om[0] * rel[2],
+                          om[0] * rel[1] - om[1] * rel[0]};
+        for (int c = 0; c < D; c++)
+            vw[c] = wall->vel[c] + spin[c];
+    }
+}
+
+/* Contact geometry of every particle-wall candidate, in bucket order. */
+void dm_wgeom_update(demill_world *w)
+{
+    uint32_t g0 = 0;
+    for (int k = 0; k < DM_KERNELS; k++) {
+        const dm_bucket *b = &w->pw.b[k];
+        dm_wgeom_range(w, b, g0, 0, b->n);
+        g0 += b->n;
+    }
+}
+
+/* A free wall slot (cleared), growing the array if needed; DM_FREE when out
+ * of memory. */
+uint32_t dm_wall_slot_alloc(demill_world *w)
+{
+    uint32_t slot = 0;
+    while (slot < w->nwalls && w->walls[slot].kind)
+        slot++;
+    if (slot == w->cap_walls) {
+        uint32_t cap = w->cap_walls ? 2 * w->cap_walls : 16;
+        dm_wall *nw = realloc(w->walls, cap * sizeof *nw);
+        if (!nw)
+            return DM_FREE;
+        w->walls = nw;
+        w->cap_walls = cap;
+    }
+    memset(&w->walls[slot], 0, sizeof w->walls[slot]);
+    if (slot == w->nwalls)
+        w->nwalls++;
+    return slot;
+}

@@ -1,0 +1,106 @@
+/* particles.c: the particle store: its arrays (structure of arrays) grown,
+ * reordered by the neighbour sort and freed, and the masses of particles. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/alloc.h"
+#include "physics/state/state.h"
+
+/* Grows every particle array to hold `need` particles. On failure the arrays
+ * keep their contents (some may be larger, which is harmless). */
+int dm_particles_reserve(demill_world *w, uint32_t need)
+{
+    dm_particles *P = &w->p;
+    if (need <= P->cap)
+        return 0;
+    size_t cap = dm_grown_capacity(P->cap, need);
+    if (cap > UINT32_MAX)
+        cap = need;
+    const size_t D = (size_t)w->dim * sizeof(double), W = (size_t)dm_wdim(w) * sizeof(double);
+    void **const arrays[] = {(void **)&P->x,  (void **)&P->v,     (void **)&P->f,
+                             (void **)&P->x0, (void **)&P->vp,    (void **)&P->wp,
+                             (void **)&P->w,  (void **)&P->t,     (void **)&P->theta,
+                             (void **)&P->r,  (void **)&P->m,     (void **)&P->im,
+                             (void **)&P->iinv, (void **)&P->mat, (void **)&P->hid};
+    const size_t sizes[] = {D, D, D, D, D, W, W, W, sizeof(double), sizeof(double),
+                            sizeof(double), sizeof(double), sizeof(double), sizeof(uint16_t),
+                            sizeof(uint32_t)};
+    if (dm_grow_arrays(arrays, sizes, sizeof sizes / sizeof sizes[0], cap))
+        return -1;
+    P->cap = (uint32_t)cap;
+    return 0;
+}
+
+void dm_particles_free(demill_world *w)
+{
+    dm_particles *P = &w->p;
+    free(P->x);
+    free(P->v);
+    free(P->f);
+    free(P->x0);
+    free(P->vp);
+    free(P->wp);
+    free(P->w);
+    free(P->t);
+    free(P->theta);
+    free(P->r);
+    free(P->m);
+    free(P->im);
+    free(P->iinv);
+    free(P->mat);
+    free(P->hid);
+    dm_handles_free(&w->ph);
+}
+
+/* Reorders storage so that new slot k holds old slot order[k]. */
+void dm_particles_permute(demill_world *w, const uint32_t *order)
+{
+    dm_particles *P = &w->p;
+    const uint32_t n = P->n;
+    const int D = w->dim, W = dm_wdim(w);
+    if (n == 0) /* nothing to move, and a world that never had particles has no arrays */
+        return;
+    double *s = w->grid.scratch;
+    double *vec[] = {P->x, P->v, P->f, P->vp};
+    for (size_t a = 0; a < 4; a++) {
+        for (uint32_t k = 0; k < n; k++)
+            memcpy(s + (size_t)D * k, vec[a] + (size_t)D * order[k], (size_t)D * sizeof *s);
+        memcpy(vec[a], s, (size_t)D * n * sizeof *s);
+    }
+    double *ang[] = {P->w, P->t, P->wp};
+    for (size_t a = 0; a < 3; a++) {
+        for (uint32_t k = 0; k < n; k++)
+            memcpy(s + (size_t)W * k, ang[a] + (size_t)W * order[k], (size_t)W * sizeof *s);
+        memcpy(ang[a], s, (size_t)W * n * sizeof *s);
+    }
+    double *sc[] = {P->theta, P->r, P->m, P->im, P->iinv};
+    for (size_t a = 0; a < 5; a++) {
+        for (uint32_t k = 0; k < n; k++)
+            s[k] = sc[a][order[k]];
+        memcpy(sc[a], s, n * sizeof *s);
+    }
+    uint16_t *m16 = (uint16_t *)s;
+    for (uint32_t k = 0; k < n; k++)
+        m16[k] = P->mat[order[k]];
+    memcpy(P->mat, m16, n * sizeof *m16);
+    uint32_t *h32 = (uint32_t *)s;
+    for (uint32_t k = 0; k < n; k++)
+        h32[k] = P->hid[order[k]];
+    memcpy(P->hid, h32, n * sizeof *h32);
+    for (uint32_t k = 0; k < n; k++)
+        w->ph.slot[P->hid[k]] = k;
+}
+
+void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, double *inv_i)
+{
+    double rho = w->mats[mat].density, mass, inertia;
+    if (w->dim == 2 && w->disc_thickness > 0) {
+        mass = DM_PI * r * r * w->disc_thickness * rho;
+        inertia = 0.5 * mass * r * r;
+    } else {
+        mass = 4.0 / 3.0 * DM_PI * r * r * r * rho;
+        inertia = 0.4 * mass * r * r;
+    }
+    *m = mass;
+    *inv_i = 1.0 / inertia;
+}

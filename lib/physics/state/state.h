@@ -1,0 +1,393 @@
+/* state.h: the world's state, the data every module above the base reads
+ * and writes: struct demill_world and the structs it is made of, each
+ * marked with the module that owns it. Types only, and the functions of the
+ * state module itself (the particle store, lib/physics/state/particles.c);
+ * each module's functions are declared in its own header. Nothing here is
+ * visible to users; internal symbols are prefixed dm_. */
+#ifndef DM_STATE_H
+#define DM_STATE_H
+
+#include "base/base.h"
+#include <math.h>
+
+#include "base/handles.h"
+
+#define DM_MAX_MATERIALS 256
+
+/* ---- materials and pairs (the world's API; resolved by contact/pairs.c) ---- */
+typedef struct dm_material {
+    double density, youngs, poisson, stiffness, restitution, friction, rolling_friction;
+} dm_material;
+
+/* Derived pair keys the user may override; bit i of dm_pair_user.set. */
+enum {
+    DM_PK_RESTITUTION, DM_PK_FRICTION, DM_PK_ROLLING_FRICTION, DM_PK_NORMAL_STIFFNESS,
+    DM_PK_VISCOUS, DM_PK_KT_RATIO, DM_PK_CT_FACTOR, DM_PK_COULOMB_REG, DM_PK_ROLLING_REG,
+    DM_PK_CLAMP, DM_PK_COUNT
+};
+
+/* What the user chose for one material pair (a <= b). */
+typedef struct dm_pair_user {
+    uint32_t a, b;
+    int32_t normal, damping, tangential, rolling;
+    double value[DM_PK_COUNT];
+    uint32_t set; /* bit mask of DM_PK_* overridden */
+} dm_pair_user;
+
+/* The four laws of a contact model, and the kernel they compile to. */
+typedef struct dm_laws {
+    int normal, damping, tangential, rolling;
+} dm_laws;
+
+#define DM_KERNELS (2 * 3 * 4 * 2)
+#define DM_MAX_HIST 7 /* history doubles per contact, at most (contact/law.h + event slot) */
+/* Resolved constants of one material pair, read by the contact kernels. */
+typedef struct dm_pairparam {
+    int kernel;          /* -1: no model */
+    int clamp;           /* 1: F_n >= 0 */
+    double kn;           /* linear normal stiffness */
+    double e_star;       /* E* (Hertz), 4/3 E* √R* δ^{3/2} */
+    double g8;           /* 8 G* (Mindlin) */
+    double cn;           /* viscous damping coefficient */
+    double dcoef;        /* restitution damping: 2ξ (linear) or 2√(5/6)ξ (Hertz) */
+    double kt;           /* linear tangential stiffness */
+    double ct_factor;
+    double mu, mu_r;
+    double coul_reg, roll_reg; /* regularisation factors */
+    double restitution, xi;
+} dm_pairparam;
+
+/* ---- walls (geometry/walls.c) ------------------------------------------- */
+#define DM_MAX_POLY 8 /* vertices of a lifter's cross-section, at most */
+
+typedef struct dm_wall {
+    uint32_t handle;       /* handle index (DM_FREE for the drum's walls) */
+    uint32_t material;     /* material slot */
+    int kind;              /* DM_WALL_*, 0 for a free slot */
+    int drum_part;         /* DM_PART_*: which part of the drum, or DM_PART_NONE */
+    int lifter;            /* lifter index for DM_PART_LIFTER */
+    double radius;         /* DM_WALL_SHELL: inner radius */
+    int npoly;             /* DM_WALL_PRISM: convex cross-section, counter-clockwise, */
+    double poly[2 * DM_MAX_POLY];  /* in the drum frame (at drum angle 0) */
+    double cpoly[2 * DM_MAX_POLY]; /* and at the current angle, with per edge k (from */
+    double cedge[4 * DM_MAX_POLY]; /* vertex k to k + 1) its outward unit normal and */
+                                   /* its vector over its squared length */
+    double bc0[2], bc[2], brad;    /* circle about the section: centre in the drum
+                                      frame, at the current angle, radius */
+    double reach;          /* largest distance of the wall's surface from its centre of
+                              rotation that can move (0: the rotation does not move it) */
+    /* reference geometry at time t0 and motion */
+    double p0[3], n0[3], c0[3];
+    double vel[3], omega[3];
+    double t0;
+    /* current geometry (at world time) */
+    double p[3], n[3], c[3];
+    double rot[9];         /* rotation since t0 */
+    /* geometry at the last neighbour build, for the skin criterion */
+    double c_build[3], rot_build[9];
+    /* results of the last force evaluation */
+    double force[3], torque[3];
+    double dissipated;     /* energy dissipated in contacts with the wall (tally) */
+} dm_wall;
+
+/* Wall kinds: a plane (half-space), the inside of a cylindrical shell about
+ * the z axis, a prism along z with a convex polygonal cross-section. */
+enum { DM_WALL_PLANE = 1, DM_WALL_SHELL = 2, DM_WALL_PRISM = 3 };
+enum { DM_PART_NONE = 0, DM_PART_SHELL = 1, DM_PART_CAP = 2, DM_PART_LIFTER = 3 };
+
+/* ---- particles (state/particles.c) ------------------------------------- */
+/* Structure of arrays in storage order (sorted by cell at each neighbour
+ * build). Vectors have D = dim components, angular ones W = 1 (2D) or 3. */
+typedef struct dm_particles {
+    uint32_t n, cap;
+    double *x, *v, *f, *x0;  /* D per particle; x0: position at the last build */
+    double *vp;              /* D: predicted end-of-step velocity (velocity Verlet) */
+    double *w, *t, *wp;      /* W per particle: angular velocity, torque, predicted ω */
+    double *theta;           /* 2D rotation angle */
+    double *r, *m, *im, *iinv; /* radius, mass, 1/m, 1/I */
+    uint16_t *mat;           /* material slot */
+    uint32_t *hid;           /* handle index */
+} dm_particles;
+
+/* ---- contact lists (contact/lists.c; filled by broadphase/nlist.c) ------ */
+/* Pairs (i < j in storage order) within the skin, grouped by kernel. */
+typedef struct dm_bucket {
+    int kernel;
+    int hs;                  /* history doubles per pair */
+    uint32_t n, cap;
+    uint32_t *i, *j;         /* for walls: i = particle, j = wall slot */
+    double *hist;            /* zeros unless on */
+    uint8_t *on;             /* 1: touching at the last step */
+    uint32_t base;           /* pair id of the first pair (see dm_results) */
+    uint32_t chunk0;         /* index of its first chunk */
+    uint32_t span;           /* largest j - i of its particle pairs */
+} dm_bucket;
+
+typedef struct dm_clist {
+    dm_bucket b[DM_KERNELS];
+} dm_clist;
+
+/* Scratch of the neighbour build, kept between builds so that a build
+ * allocates only when the world has grown. */
+/* The pairs one range of the neighbour search found, in the order found;
+ * k is the kernel, plus DM_KERNELS for particle-wall pairs. */
+typedef struct dm_pairbuf {
+    uint32_t *i, *j;
+    uint8_t *k;
+    uint32_t n, cap;
+    bool failed;                       /* out of memory */
+    uint32_t next[2 * DM_KERNELS];     /* count per kernel, then where the next goes */
+} dm_pairbuf;
+
+typedef struct dm_grid {
+    uint32_t *cell_start;     /* ncells + 1 */
+    size_t cap_cells;
+    uint32_t *cell_of, *order, *inv, *row; /* per particle (row: n + 1) */
+    uint32_t cap;
+    double *scratch;          /* 3 doubles per particle */
+    /* contacts whose history is carried over a build */
+    uint32_t *ci, *cj;
+    uint16_t *ck;             /* kernel (pp) or kernel + DM_KERNELS (pw) */
+    double *ch;               /* DM_MAX_HIST doubles each */
+    uint32_t nc, ccap;
+    double lo[3], hi[3];      /* particle bounding box at the last build */
+    struct dm_pairbuf *pb;    /* pairs found by each range of the search */
+    int npb;
+} dm_grid;
+
+/* Geometry of the particle-wall candidates for the law kernels. */
+typedef struct dm_wgeom {
+    uint32_t cap;
+    double *nrm;   /* D: unit normal from particle into the wall */
+    double *delta; /* overlap (<= 0: no contact) */
+    double *vw;    /* D: wall velocity at the contact point */
+    double *cp;    /* D: contact point */
+    double *lost;  /* energy dissipated in the contact over the step (tally) */
+} dm_wgeom;
+
+/* Energy tallies: dissipation by mechanism and work done by walls. */
+typedef struct dm_tally {
+    double diss_normal, diss_tangential, diss_friction, diss_rolling, wall_work;
+} dm_tally;
+
+/* A chunk of candidates that one kernel call works through (forces.c). */
+typedef struct dm_chunkref {
+    uint32_t k0;     /* first candidate */
+    uint16_t kernel; /* bucket */
+    uint16_t walls;  /* 1: of the particle-wall lists */
+    uint32_t i0;     /* particle of the first candidate: the range that runs it */
+} dm_chunkref;
+
+/* The results of a force evaluation per pair, and what sums them. Pair ids
+ * number the particle-particle buckets in kernel order, then the
+ * particle-wall ones. The kernels store each pair's force and torques by
+ * pair id; then the particles' sums are taken in pair-id order, each thread
+ * summing for its own range of particles, so that no sum depends on how the
+ * work was shared among threads (forces.c). */
+typedef struct dm_results {
+    uint32_t n, npp, cap;   /* pairs, of them particle-particle, room */
+    double *out;            /* S = D + 2W per pair: force on b, torques on a and on b */
+    uint32_t *list;         /* per chunk, from its first pair's id: its pairs with a
+                               result in out (indices in the bucket): those that came
+                               apart, then those touching, each in bucket order */
+    dm_chunkref *chunks;    /* in pair-id order */
+    dm_tally *chunk_tally;  /* per chunk: dissipation, */
+    uint32_t *chunk_contacts; /* pairs in contact, */
+    uint32_t *chunk_listed;   /* and pairs in its list */
+    uint32_t nchunks, cap_chunks;
+    bool valid;             /* matches the lists */
+} dm_results;
+
+/* ---- the mill (mill/drum.c; its spectrum counted by contact/spectrum.c) --- */
+#define DM_MAX_LIFTERS 64
+#define DM_SHAPE_BINS 72 /* 5° bins of the charge-shape analysis */
+
+typedef struct dm_lifter_spec {
+    double angle, height, width, face;
+} dm_lifter_spec;
+
+/* Per-revolution accumulators; when a revolution completes they become the
+ * reported means. */
+typedef struct dm_drum_rev {
+    double t0, energy_in, power_cm_sum, dissipated0;
+    uint32_t power_cm_count;
+    double shape_sum[3];
+    uint32_t shape_count[3];
+    double lifter_impulse[DM_MAX_LIFTERS][3];
+} dm_drum_rev;
+
+typedef struct dm_spectrum {
+    uint32_t nclasses, nbins;
+    double *edges;          /* nclasses - 1 increasing diameters */
+    double log_min, log_span;
+    uint64_t *counts;       /* rows × nbins */
+} dm_spectrum;
+
+typedef struct dm_drum {
+    bool alive;
+    uint32_t material;
+    double diameter, length, porosity;
+    /* the evenly spaced lifters, and the lifters in use */
+    uint32_t even_count;
+    double lifter_h, lifter_w, lifter_face, lifter_phase;
+    uint32_t nlifters;
+    dm_lifter_spec lifters[DM_MAX_LIFTERS];
+    /* walls: shell, caps (3D), lifters, in wall slots */
+    uint32_t wall_slot[DM_MAX_LIFTERS + 3];
+    uint32_t nwall;
+    /* speed: a target given as rad/s, rpm or fraction of critical, reached
+     * linearly over ramp from the speed at t_set */
+    int speed_key;
+    double speed_value, ramp, crit_diameter;
+    double t_set, theta_set, omega_from, omega_to;
+    double theta, omega;    /* at world time */
+    double theta_start;     /* angle when it first turned; NaN before */
+    uint32_t sample_interval;
+    uint64_t samples_due;   /* step count at the next charge-shape sample */
+    /* measurements of the last force evaluation and running totals */
+    double torque, power, energy_in, energy_dissipated;
+    double lifter_peak[DM_MAX_LIFTERS], lifter_energy[DM_MAX_LIFTERS];
+    /* the last completed revolution */
+    uint64_t revolutions;
+    double mean_power, mean_power_cm, mean_dissipation, mean_shape[3];
+    double lifter_force_mean[DM_MAX_LIFTERS][3];
+    dm_drum_rev rev;
+    dm_spectrum spectrum;
+} dm_drum;
+
+/* ---- iterative refinement (integrate/refine.c) ---------------------------- */
+/* The state at the start of a step, which every iterate predicts from, and
+ * the contact state that each further iterate starts from again. The
+ * particle arrays trade places with the world's (no copies): during a step
+ * xn, vn, fn, wn, tn, thn hold the start of the step and fprev, tprev the
+ * previous iterate's forces and torques. */
+typedef struct dm_refine {
+    uint32_t cap;                  /* particles the arrays hold */
+    double *xn, *vn, *fn, *fprev;  /* D per particle */
+    double *wn, *tn, *tprev;       /* W per particle */
+    double *thn;                   /* 2D angle */
+    double *hist;                  /* every bucket's history, bucket after bucket */
+    uint8_t *on;                   /* and touch flags */
+    size_t cap_hist, cap_on;
+    double *wall_diss;             /* walls' dissipation tallies */
+    uint32_t cap_walls;
+    uint64_t *spectrum;            /* collision-spectrum counters */
+    size_t cap_spectrum;
+    dm_tally tally;
+} dm_refine;
+
+/* ---- the watchdog (the world layer's: world/watchdog.c) ---------------------- */
+/* Energies of a state: kinetic, potential, elastic, dissipated (tallied) and
+ * the work walls did so far (tallied, or the drum's measured). */
+typedef struct dm_watch_energy {
+    double kinetic, potential, elastic, dissipated, work;
+} dm_watch_energy;
+
+typedef struct dm_watch {
+    struct demill_world *good; /* the last state that passed, NULL until taken */
+    uint64_t edits;            /* the world's edits when it was taken */
+    uint64_t call_start;       /* the step count when the current call started */
+    uint64_t stepped;          /* the world's edits + 1 when the time step was last found
+                                  within every pair's stability limit (0: never) */
+    uint32_t countdown;        /* steps to the next check */
+    dm_watch_energy start, last; /* at the start of the run and at the last check */
+    double peak, pmin, pmax;     /* since the start: largest kinetic + elastic energy,
+                                    smallest and largest potential energy */
+} dm_watch;
+
+/* ---- progress reporting (the world layer's: world/progress.c) ---------------- */
+/* The host's callback (demill_world_set_progress). Not part of the simulated
+ * state: a copy of the state (dm_state_copy) leaves the destination's. */
+typedef struct dm_progress {
+    demill_progress_fn fn;  /* NULL: none */
+    void *user;
+    uint64_t every;         /* steps between reports */
+} dm_progress;
+
+/* ---- the world ------------------------------------------------------------- */
+struct demill_world {
+    dm_base base;           /* first: the base layer's part (lib/base/base.h) */
+    uint16_t tag;
+    int dim;
+    double dt, time, g[3];
+    uint64_t rebuilds;
+    int integrator;
+    double skin_fraction;
+    double disc_thickness;
+    int energy_tracking;
+    double refine_tol;      /* iterative refinement: ε_a */
+    int refine_max;         /* and force evaluations per step at most */
+    uint32_t iterations_last;     /* force evaluations of the last step */
+    uint64_t force_evals, unconverged;
+    dm_refine refine;
+    int watchdog;           /* world.watchdog, and its limits */
+    double watch_overlap;
+    uint32_t watch_interval;
+    dm_watch watch;
+    dm_progress progress;
+
+    /* materials */
+    dm_material mats[DM_MAX_MATERIALS];
+    uint32_t nmat;
+    uint32_t mat_particles[DM_MAX_MATERIALS]; /* particles per material */
+    uint32_t mat_walls[DM_MAX_MATERIALS];     /* walls per material */
+    dm_pair_user *pairs;
+    uint32_t npairs, cap_pairs;
+    dm_pairparam *ptab;      /* nmat_tab × nmat_tab, resolved */
+    uint32_t nmat_tab;
+    bool ptab_dirty;
+    bool rotation;           /* some law in use needs rotational DOF */
+
+    /* particles */
+    dm_particles p;
+    dm_handles ph;
+
+    /* walls */
+    dm_wall *walls;
+    uint32_t nwalls, cap_walls;
+    dm_handles wh;
+
+    /* the mill drum (at most one) */
+    dm_drum drum;
+    uint16_t drum_gen;      /* generation of the drum id: drums removed so far
+                               (DM_GEN_LAST: no further drum can be made) */
+
+    /* contacts */
+    dm_clist pp, pw;
+    dm_results res;
+    dm_wgeom wg;
+    dm_grid grid;
+    bool nlist_valid;        /* pair lists match the particles and walls */
+    bool forces_valid;       /* f, t hold the forces of the current state */
+    double skin;             /* absolute skin of the current lists */
+    uint32_t ncontacts, nwall_contacts;
+
+    dm_tally tally;
+    bool events;            /* contacts keep their dissipated energy (spectrum) */
+};
+
+/* |g| */
+static inline double dm_gravity_magnitude(const demill_world *w)
+{
+    return sqrt(w->g[0] * w->g[0] + w->g[1] * w->g[1] + w->g[2] * w->g[2]);
+}
+
+/* Components of an angular quantity: 1 in 2D, 3 in 3D. */
+static inline int dm_wdim(const demill_world *w)
+{
+    return w->dim == 3 ? 3 : 1;
+}
+
+/* ---- the particle store (particles.c) ----------------------------------------- */
+/* Grows every particle array to hold `need` particles (0; -1 when out of
+ * memory, the arrays keeping their contents). */
+int dm_particles_reserve(demill_world *w, uint32_t need);
+/* Reorders every per-particle array by order (new index k holds old order[k])
+ * and updates the handles. */
+void dm_particles_permute(demill_world *w, const uint32_t *order);
+void dm_particles_free(demill_world *w);
+/* The mass and the inverse moment of inertia of a particle of material mat
+ * and radius r (a sphere, or in 2D a disc of the world's thickness). */
+void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, double *inv_i);
+
+#endif /* DM_STATE_H */

@@ -1,0 +1,986 @@
+/* checkpoint.c: snapshots, checkpoints and the listing of a world's ids
+ * (demill/state.h).
+ *
+ * A snapshot is a deep copy of the world made by dm_state_copy() (snapshot.c).
+ * A checkpoint is the same state as bytes: a 32-byte header (magic
+ * "DEMILLCK", format version, a byte-order mark, the payload's size and its
+ * CRC-32, the writing library's version), then the payload, field after field
+ * in fixed widths and the writer's byte order, in tagged sections. One
+ * function, transfer(), walks the fields both to write and to read them, so
+ * that the two can never disagree. A load reads into a scratch world, checks
+ * every size while reading and every index and parameter afterwards, and
+ * only then copies the result into the caller's world. */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "world/world.h"
+
+/* ---- snapshots -------------------------------------------------------------- */
+
+#define DM_SNAPSHOT_MAGIC 0x736e617073686f74u /* "snapshot" */
+
+struct demill_snapshot {
+    uint64_t magic;
+    demill_world state;
+};
+
+DEMILL_API demill_status demill_snapshot_take(demill_world *w, demill_snapshot **out)
+{
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (!out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "snapshot_take: out is NULL");
+    *out = NULL;
+    demill_snapshot *snap = calloc(1, sizeof *snap);
+    if (!snap || dm_state_copy(&snap->state, w)) {
+        free(snap);
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "snapshot_take: out of memory");
+    }
+    snap->magic = DM_SNAPSHOT_MAGIC;
+    *out = snap;
+    dm_clear_error(w);
+    return DEMILL_OK;
+}
+
+/* Makes w's state a copy of src's, keeping what belongs to the host and the
+ * world's identity (demill/state.h). */
+static demill_status restore(demill_world *w, const demill_world *src)
+{
+    const uint64_t edits = w->base.edits;
+    const int threads = w->base.threads;
+    if (dm_state_restore(w, src))
+        return DEMILL_ERR_OUT_OF_MEMORY;
+    w->base.edits = edits;
+    w->base.threads = threads;
+    dm_clear_error(w);
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_snapshot_restore(demill_world *w, const demill_snapshot *snap)
+{
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (!snap)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "snapshot_restore: snapshot is NULL");
+    if (snap->magic != DM_SNAPSHOT_MAGIC)
+        return dm_fail(w, DEMILL_ERR_INVALID_HANDLE,
+                       "snapshot_restore: snapshot is not a live snapshot");
+    if (restore(w, &snap->state))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "snapshot_restore: out of memory");
+    return DEMILL_OK;
+}
+
+DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
+{
+    if (!snap || snap->magic != DM_SNAPSHOT_MAGIC)
+        return;
+    dm_state_free(&snap->state);
+    snap->magic = 0;
+    free(snap);
+}
+
+/* ---- the bytes of a state --------------------------------------------------- */
+
+#define CK_MAGIC "DEMILLCK"
+#define CK_FORMAT 1u          /* the format this library writes and the newest it reads */
+#define CK_BYTE_ORDER 0x01020304u
+#define CK_HEADER 32u
+
+/* The walk over a state's fields, writing them out or reading them in. */
+typedef struct io {
+    bool reading;
+    uint8_t *buf;      /* writing: the bytes so far */
+    size_t n, cap;
+    const uint8_t *in; /* reading: the bytes still to read */
+    size_t left;
+    const char *section;  /* the section being walked */
+    demill_status status; /* the first failure: OUT_OF_MEMORY, FORMAT or (writing a
+                             state that is not finite) UNSTABLE */
+    char why[200];        /* and what it was */
+} io;
+
+static void io_fail(io *s, demill_status code, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+static void io_fail(io *s, demill_status code, const char *fmt, ...)
+{
+    if (s->status)
+        return;
+    s->status = code;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(s->why, sizeof s->why, fmt, ap);
+    va_end(ap);
+}
+
+static void io_bytes(io *s, void *v, size_t bytes)
+{
+    if (s->status || !bytes)
+        return;
+    if (s->reading) {
+        if (bytes > s->left) {
+            io_fail(s, DEMILL_ERR_FORMAT, "truncated: %zu bytes short", bytes - s->left);
+            return;
+        }
+        memcpy(v, s->in, bytes);
+        s->in += bytes;
+        s->left -= bytes;
+        return;
+    }
+    if (bytes > s->cap - s->n) {
+        size_t cap = dm_grown_capacity(s->cap, s->n + bytes);
+        uint8_t *b = cap < s->n + bytes ? NULL : realloc(s->buf, cap);
+        if (!b) {
+            io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory");
+            return;
+        }
+        s->buf = b;
+        s->cap = cap;
+    }
+    memcpy(s->buf + s->n, v, bytes);
+    s->n += bytes;
+}
+
+/* Checks that n doubles are finite, or NaN where nan_ok (the drum's "not
+ * measured yet"): what is read must be, and what is written too, so that the
+ * library never writes a checkpoint it would refuse to read. */
+static void io_finite(io *s, const double *v, size_t n, bool nan_ok)
+{
+    for (size_t k = 0; k < n && !s->status; k++)
+        if (!isfinite(v[k]) && !(nan_ok && isnan(v[k]))) {
+            if (s->reading)
+                io_fail(s, DEMILL_ERR_FORMAT, "section %s: a stored value is %g, not finite",
+                        s->section, v[k]);
+            else
+                io_fail(s, DEMILL_ERR_UNSTABLE,
+                        "section %s: a value is %g: the state is not finite (it diverged), "
+                        "and a diverged state is not saved",
+                        s->section, v[k]);
+        }
+}
+
+static void io_f64(io *s, double *v, size_t n)
+{
+    io_bytes(s, v, n * sizeof *v);
+    io_finite(s, v, n, false);
+}
+
+/* A double that may also be NaN, the drum's "not measured yet". */
+static void io_f64_or_nan(io *s, double *v)
+{
+    io_bytes(s, v, sizeof *v);
+    io_finite(s, v, 1, true);
+}
+static void io_u64(io *s, uint64_t *v) { io_bytes(s, v, sizeof *v); }
+static void io_u32(io *s, uint32_t *v, size_t n) { io_bytes(s, v, n * sizeof *v); }
+
+static void io_u16(io *s, uint16_t *v) { io_bytes(s, v, sizeof *v); }
+
+static void io_int(io *s, int *v)
+{
+    int32_t t = (int32_t)*v;
+    io_bytes(s, &t, sizeof t);
+    *v = t;
+}
+
+static void io_bool(io *s, bool *v)
+{
+    uint8_t t = *v;
+    io_bytes(s, &t, 1);
+    if (s->reading && t > 1)
+        io_fail(s, DEMILL_ERR_FORMAT, "a flag is %u, not 0 or 1", t);
+    *v = t == 1;
+}
+
+/* A count read from the file may not exceed `most`; after a failure it is
+ * 0, so that no loop runs over it. */
+static void io_count(io *s, uint32_t *n, uint64_t most, const char *what)
+{
+    io_u32(s, n, 1);
+    if (s->reading && !s->status && *n > most)
+        io_fail(s, DEMILL_ERR_FORMAT, "%s: %u, at most %llu allowed", what, *n,
+                (unsigned long long)most);
+    if (s->status)
+        *n = 0;
+}
+
+/* An array of count items of `size` bytes; reading allocates it (room for
+ * `room` >= count items) after checking that the bytes are there. */
+static void io_array(io *s, void *field, size_t count, size_t room, size_t size)
+{
+    void **p = field;
+    if (s->reading) {
+        if (s->status)
+            return;
+        if (count > s->left / size) {
+            io_fail(s, DEMILL_ERR_FORMAT, "truncated: an array of %zu items does not fit", count);
+            return;
+        }
+        *p = malloc(room ? room * size : 1);
+        if (!*p) {
+            io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory");
+            return;
+        }
+    }
+    io_bytes(s, *p, count * size);
+}
+
+/* An array of count doubles, each finite (room as io_array's). */
+static void io_f64_array(io *s, double **field, size_t count, size_t room)
+{
+    io_array(s, field, count, room, sizeof **field);
+    if (!s->status)
+        io_finite(s, *field, count, false);
+}
+
+/* Before room for `count` structures read field by field is allocated: each
+ * takes at least `least` bytes of the file. */
+static void io_room(io *s, uint32_t count, size_t least, const char *what)
+{
+    if (s->reading && !s->status && count > s->left / least)
+        io_fail(s, DEMILL_ERR_FORMAT, "truncated: %u %s cannot fit in %zu bytes", count, what,
+                s->left);
+}
+
+/* A section starts with its four-letter name. */
+static void io_section(io *s, const char *name)
+{
+    s->section = name;
+    char got[4];
+    memcpy(got, name, 4);
+    io_bytes(s, got, 4);
+    if (s->reading && !s->status && memcmp(got, name, 4))
+        io_fail(s, DEMILL_ERR_FORMAT, "section %.4s expected, found other bytes", name);
+}
+
+static void transfer_handles(io *s, dm_handles *h, const char *what)
+{
+    io_count(s, &h->n, UINT32_MAX - 1, what);
+    io_count(s, &h->nfree, h->n, what);
+    if (s->reading)
+        h->cap = h->n;
+    io_array(s, &h->slot, h->n, h->n, sizeof *h->slot);
+    io_array(s, &h->gen, h->n, h->n, sizeof *h->gen);
+    io_array(s, &h->free, h->nfree, h->n, sizeof *h->free);
+}
+
+static void transfer_wall(io *s, dm_wall *wl)
+{
+    io_u32(s, &wl->handle, 1);
+    io_u32(s, &wl->material, 1);
+    io_int(s, &wl->kind);
+    io_int(s, &wl->drum_part);
+    io_int(s, &wl->lifter);
+    io_f64(s, &wl->radius, 1);
+    io_int(s, &wl->npoly);
+    double *const f[] = {wl->poly, wl->cpoly, wl->cedge, wl->bc0, wl->bc, &wl->brad, &wl->reach,
+                         wl->p0, wl->n0, wl->c0, wl->vel, wl->omega, &wl->t0, wl->p, wl->n,
+                         wl->c, wl->rot, wl->c_build, wl->rot_build, wl->force, wl->torque,
+                         &wl->dissipated};
+    const size_t len[] = {2 * DM_MAX_POLY, 2 * DM_MAX_POLY, 4 * DM_MAX_POLY, 2, 2, 1, 1, 3, 3, 3,
+                          3, 3, 1, 3, 3, 3, 9, 3, 9, 3, 3, 1};
+    for (size_t k = 0; k < sizeof len / sizeof *len; k++)
+        io_f64(s, f[k], len[k]);
+}
+
+static void transfer_drum(io *s, dm_drum *d, int dim)
+{
+    io_bool(s, &d->alive);
+    io_u32(s, &d->material, 1);
+    io_f64(s, &d->diameter, 1);
+    io_f64(s, &d->length, 1);
+    io_f64(s, &d->porosity, 1);
+    io_u32(s, &d->even_count, 1);
+    io_f64(s, &d->lifter_h, 1);
+    io_f64(s, &d->lifter_w, 1);
+    io_f64(s, &d->lifter_face, 1);
+    io_f64(s, &d->lifter_phase, 1);
+    io_count(s, &d->nlifters, DM_MAX_LIFTERS, "drum lifters");
+    for (uint32_t k = 0; k < d->nlifters && !s->status; k++) {
+        dm_lifter_spec *l = &d->lifters[k];
+        double *const f[] = {&l->angle, &l->height, &l->width, &l->face};
+        for (int q = 0; q < 4; q++)
+            io_f64(s, f[q], 1);
+    }
+    io_count(s, &d->nwall, d->nlifters + (dim == 3 ? 3 : 1), "drum walls");
+    io_u32(s, d->wall_slot, d->nwall);
+    io_int(s, &d->speed_key);
+    /* (NULL: a value that is NaN until measured, next in `unknown`) */
+    double *const f[] = {&d->speed_value, &d->ramp, &d->crit_diameter, &d->t_set,
+                         &d->theta_set, &d->omega_from, &d->omega_to, &d->theta, &d->omega,
+                         NULL, &d->torque, &d->power, &d->energy_in,
+                         &d->energy_dissipated, d->lifter_peak, d->lifter_energy, NULL,
+                         NULL, NULL, NULL, &d->lifter_force_mean[0][0], &d->rev.t0,
+                         &d->rev.energy_in, &d->rev.power_cm_sum, &d->rev.dissipated0,
+                         d->rev.shape_sum, &d->rev.lifter_impulse[0][0]};
+    const size_t len[] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, DM_MAX_LIFTERS,
+                          DM_MAX_LIFTERS, 1, 1, 1, 3, 3 * DM_MAX_LIFTERS, 1, 1, 1, 1, 3,
+                          3 * DM_MAX_LIFTERS};
+    double *const unknown[] = {&d->theta_start, &d->mean_power, &d->mean_power_cm,
+                               &d->mean_dissipation, d->mean_shape};
+    for (size_t k = 0, u = 0; k < sizeof len / sizeof *len; k++) {
+        if (f[k]) {
+            io_f64(s, f[k], len[k]);
+            continue;
+        }
+        for (size_t q = 0; q < len[k]; q++)
+            io_f64_or_nan(s, unknown[u] + q);
+        u++;
+    }
+    io_u32(s, &d->sample_interval, 1);
+    io_u64(s, &d->samples_due);
+    io_u64(s, &d->revolutions);
+    io_u32(s, &d->rev.power_cm_count, 1);
+    io_u32(s, d->rev.shape_count, 3);
+
+    dm_spectrum *sp = &d->spectrum;
+    bool on = sp->counts != NULL;
+    io_bool(s, &on);
+    if (!on)
+        return;
+    io_count(s, &sp->nclasses, 64, "spectrum size classes");
+    io_count(s, &sp->nbins, 10000, "spectrum energy bins");
+    if (s->reading && !s->status && (!sp->nclasses || !sp->nbins))
+        io_fail(s, DEMILL_ERR_FORMAT, "a spectrum without classes or bins");
+    if (s->status)
+        return;
+    io_f64(s, &sp->log_min, 1);
+    io_f64(s, &sp->log_span, 1);
+    io_f64_array(s, &sp->edges, sp->nclasses - 1, sp->nclasses - 1);
+    const size_t counters = dm_spectrum_counters(sp);
+    io_array(s, &sp->counts, counters, counters, sizeof *sp->counts);
+}
+
+/* A contact list: its kernel's history slots, and one more for the
+ * collision spectrum while one is recorded (events); after the spectrum was
+ * started or stopped the lists keep their old layout until they are rebuilt
+ * (valid false). */
+static void transfer_bucket(io *s, dm_bucket *b, int kernel, int dim, bool events, bool valid)
+{
+    io_count(s, &b->n, UINT32_MAX, "contact list length");
+    uint32_t hs = (uint32_t)b->hs;
+    io_u32(s, &hs, 1);
+    const uint32_t base = (uint32_t)dm_kernel_hist_size(kernel, dim);
+    if (s->reading && !s->status && (valid ? hs != base + events : hs < base || hs > base + 1))
+        io_fail(s, DEMILL_ERR_FORMAT, "contact list %d keeps %u history values, not %u", kernel,
+                hs, base + events);
+    if (s->reading) {
+        b->hs = (int)hs;
+        b->kernel = kernel;
+        b->cap = b->n;
+    }
+    io_array(s, &b->i, b->n, b->n, sizeof *b->i);
+    io_array(s, &b->j, b->n, b->n, sizeof *b->j);
+    io_array(s, &b->on, b->n, b->n, sizeof *b->on);
+    io_f64_array(s, &b->hist, (size_t)b->n * hs, (size_t)b->n * hs);
+}
+
+/* Walks every field of state w. Reading, w starts zeroed (with its pointers
+ * NULL) and the arrays are allocated as they are read. */
+static void transfer(io *s, demill_world *w)
+{
+    io_section(s, "WRLD");
+    uint32_t dim = (uint32_t)w->dim;
+    io_u32(s, &dim, 1);
+    if (s->reading && !s->status && dim != 2 && dim != 3)
+        io_fail(s, DEMILL_ERR_FORMAT, "dimension %u, not 2 or 3", dim);
+    if (s->status)
+        return;
+    if (s->reading)
+        w->dim = (int)dim;
+    const size_t D = dim, W = dim == 3 ? 3 : 1;
+    io_f64(s, &w->dt, 1);
+    io_f64(s, &w->time, 1);
+    io_f64(s, w->g, 3);
+    io_u64(s, &w->base.steps);
+    io_u64(s, &w->rebuilds);
+    io_int(s, &w->integrator);
+    io_f64(s, &w->skin_fraction, 1);
+    io_f64(s, &w->disc_thickness, 1);
+    io_int(s, &w->energy_tracking);
+    io_f64(s, &w->refine_tol, 1);
+    io_int(s, &w->refine_max);
+    io_u32(s, &w->iterations_last, 1);
+    io_u64(s, &w->force_evals);
+    io_u64(s, &w->unconverged);
+    io_int(s, &w->watchdog);
+    io_f64(s, &w->watch_overlap, 1);
+    io_u32(s, &w->watch_interval, 1);
+    io_bool(s, &w->nlist_valid);
+    io_bool(s, &w->forces_valid);
+    io_bool(s, &w->events);
+    io_f64(s, &w->skin, 1);
+    io_u32(s, &w->ncontacts, 1);
+    io_u32(s, &w->nwall_contacts, 1);
+    io_f64(s, w->grid.lo, 3);
+    io_f64(s, w->grid.hi, 3);
+    dm_tally *ty = &w->tally;
+    double *const tally[] = {&ty->diss_normal, &ty->diss_tangential, &ty->diss_friction,
+                             &ty->diss_rolling, &ty->wall_work};
+    for (int k = 0; k < 5; k++)
+        io_f64(s, tally[k], 1);
+
+    io_section(s, "MATS");
+    io_count(s, &w->nmat, DM_MAX_MATERIALS, "materials");
+    for (uint32_t k = 0; k < w->nmat && !s->status; k++) {
+        dm_material *m = &w->mats[k];
+        double *const f[] = {&m->density, &m->youngs, &m->poisson, &m->stiffness,
+                             &m->restitution, &m->friction, &m->rolling_friction};
+        for (int q = 0; q < 7; q++)
+            io_f64(s, f[q], 1);
+    }
+    io_count(s, &w->npairs, (uint64_t)w->nmat * (w->nmat + 1) / 2, "material pairs");
+    if (s->reading)
+        w->cap_pairs = w->npairs;
+    io_room(s, w->npairs, 100, "material pairs");
+    io_array(s, &w->pairs, 0, w->npairs, sizeof *w->pairs);
+    for (uint32_t k = 0; k < w->npairs && !s->status; k++) {
+        dm_pair_user *u = &w->pairs[k];
+        io_u32(s, &u->a, 1);
+        io_u32(s, &u->b, 1);
+        int *const law[] = {&u->normal, &u->damping, &u->tangential, &u->rolling};
+        for (int l = 0; l < 4; l++)
+            io_int(s, law[l]);
+        io_f64(s, u->value, DM_PK_COUNT);
+        io_u32(s, &u->set, 1);
+    }
+
+    io_section(s, "PART");
+    dm_particles *P = &w->p;
+    io_count(s, &P->n, UINT32_MAX - 1, "particles");
+    if (s->reading)
+        P->cap = P->n;
+    const size_t n = P->n;
+    double **const vec[] = {&P->x, &P->v, &P->f, &P->x0, &P->vp, &P->w, &P->t, &P->wp,
+                            &P->theta, &P->r, &P->m, &P->im, &P->iinv};
+    const size_t per[] = {D, D, D, D, D, W, W, W, 1, 1, 1, 1, 1};
+    for (size_t k = 0; k < sizeof per / sizeof *per; k++)
+        io_f64_array(s, vec[k], n * per[k], n * per[k]);
+    io_array(s, &P->mat, n, n, sizeof *P->mat);
+    io_array(s, &P->hid, n, n, sizeof *P->hid);
+    transfer_handles(s, &w->ph, "particle handles");
+
+    io_section(s, "WALL");
+    io_count(s, &w->nwalls, UINT32_MAX - 1, "wall slots");
+    io_room(s, w->nwalls, 1000, "walls");
+    io_array(s, &w->walls, 0, w->nwalls, sizeof *w->walls);
+    if (s->reading && !s->status) {
+        w->cap_walls = w->nwalls;
+        memset(w->walls, 0, w->nwalls * sizeof *w->walls);
+    }
+    for (uint32_t k = 0; k < w->nwalls && !s->status; k++)
+        transfer_wall(s, &w->walls[k]);
+    transfer_handles(s, &w->wh, "wall handles");
+
+    io_section(s, "DRUM");
+    io_u16(s, &w->drum_gen);
+    transfer_drum(s, &w->drum, w->dim);
+
+    io_section(s, "CONT");
+    for (int side = 0; side < 2; side++)
+        for (int k = 0; k < DM_KERNELS; k++)
+            transfer_bucket(s, side ? &w->pw.b[k] : &w->pp.b[k], k, w->dim, w->events,
+                            w->nlist_valid);
+    io_section(s, "END.");
+}
+
+/* ---- checking what was read ------------------------------------------------- */
+
+/* Checks a value against the bounds demill_*_set() would check; read-only
+ * keys pass. */
+static demill_status check_param(demill_world *t, int32_t key, double value)
+{
+    demill_status s = dm_check_value(t, key, value);
+    return s == DEMILL_ERR_READ_ONLY ? DEMILL_OK : s;
+}
+
+static demill_status check_params(demill_world *t)
+{
+    demill_status s;
+    double v;
+    for (int32_t key = 100; key < 150; key++)
+        if (key != DEMILL_WORLD_THREADS && demill_param_name(key) &&
+            demill_world_get(t, key, &v) == DEMILL_OK && (s = check_param(t, key, v)))
+            return s;
+    if (t->dim == 2 && t->g[2] != 0.0)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "a 2D world with gravity z = %g", t->g[2]);
+    if (t->dim == 3 && t->disc_thickness != 0.0)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "a 3D world with a disc thickness");
+    for (uint32_t m = 0; m < t->nmat; m++)
+        for (int32_t key = 200; key < 300; key++)
+            if (demill_param_name(key) &&
+                (demill_material_get(t, dm_material_id(t, m), key, &v) == DEMILL_OK) &&
+                (s = check_param(t, key, v)))
+                return s;
+    for (uint32_t k = 0; k < t->npairs; k++) {
+        const dm_pair_user *u = &t->pairs[k];
+        if (u->a > u->b || u->b >= t->nmat || dm_pair_find(t, u->a, u->b) != u)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "pair %u names materials %u and %u", k, u->a,
+                           u->b);
+        if (u->set >> DM_PK_COUNT)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "pair %u overrides unknown keys", k);
+        const int law[] = {u->normal, u->damping, u->tangential, u->rolling};
+        for (int l = 0; l < 4; l++)
+            if (law[l] && (s = check_param(t, DEMILL_PAIR_NORMAL + l, law[l])))
+                return s;
+        for (int32_t key = 300; key < 400; key++)
+            if (demill_param_name(key) &&
+                demill_pair_get(t, dm_material_id(t, u->a), dm_material_id(t, u->b), key, &v) ==
+                    DEMILL_OK &&
+                (s = check_param(t, key, v)))
+                return s;
+    }
+    return DEMILL_OK;
+}
+
+/* Handles map one to one onto `live` objects; the free ones are listed once
+ * each, and the others are retired (at their last generation). */
+static demill_status check_handles(demill_world *t, const dm_handles *h, uint32_t live,
+                                   const char *what)
+{
+    uint32_t used = 0;
+    for (uint32_t k = 0; k < h->n; k++)
+        used += h->slot[k] != DM_FREE;
+    if (used != live || used + h->nfree > h->n)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "%s: %u in use and %u free of %u, for %u objects",
+                       what, used, h->nfree, h->n, live);
+    uint8_t *seen = calloc(h->n ? h->n : 1, 1);
+    if (!seen)
+        return dm_fail(t, DEMILL_ERR_OUT_OF_MEMORY, "out of memory checking %s", what);
+    demill_status s = DEMILL_OK;
+    for (uint32_t k = 0; k < h->nfree && !s; k++) {
+        const uint32_t f = h->free[k];
+        if (f >= h->n || h->slot[f] != DM_FREE || h->gen[f] == DM_GEN_LAST || seen[f]++)
+            s = dm_fail(t, DEMILL_ERR_FORMAT, "%s: free list entry %u is %u", what, k, f);
+    }
+    for (uint32_t k = 0; k < h->n && !s; k++)
+        if (h->slot[k] == DM_FREE && !seen[k] && h->gen[k] != DM_GEN_LAST)
+            s = dm_fail(t, DEMILL_ERR_FORMAT, "%s: %u is neither in use, free nor retired", what,
+                        k);
+    free(seen);
+    return s;
+}
+
+static bool all_finite(const double *v, size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        if (!isfinite(v[k]))
+            return false;
+    return true;
+}
+
+static demill_status check_particles(demill_world *t)
+{
+    const dm_particles *P = &t->p;
+    const size_t D = (size_t)t->dim, W = t->dim == 3 ? 3 : 1;
+    demill_status s = check_handles(t, &t->ph, P->n, "particle handles");
+    if (s)
+        return s;
+    for (uint32_t i = 0; i < P->n; i++) {
+        if (P->mat[i] >= t->nmat || P->hid[i] >= t->ph.n || t->ph.slot[P->hid[i]] != i)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "particle %u: material %u, handle %u", i,
+                           P->mat[i], P->hid[i]);
+        const double scalars[] = {P->r[i], P->m[i], P->im[i], P->iinv[i]};
+        if (!all_finite(P->x + D * i, D) || !all_finite(P->v + D * i, D) ||
+            !all_finite(P->w + W * i, W) || !all_finite(scalars, 4) || !(P->r[i] > 0) ||
+            !(P->m[i] > 0) || !(P->im[i] > 0) || !(P->iinv[i] > 0))
+            return dm_fail(t, DEMILL_ERR_FORMAT,
+                           "particle %u: a position, velocity, radius or mass that is not "
+                           "finite and positive",
+                           i);
+    }
+    return DEMILL_OK;
+}
+
+static demill_status check_walls(demill_world *t)
+{
+    const dm_drum *d = &t->drum;
+    uint32_t user = 0, drum = 0;
+    for (uint32_t k = 0; k < t->nwalls; k++) {
+        const dm_wall *wl = &t->walls[k];
+        if (!wl->kind)
+            continue;
+        bool ok = wl->kind >= DM_WALL_PLANE && wl->kind <= DM_WALL_PRISM &&
+                  wl->material < t->nmat && wl->npoly >= 0 && wl->npoly <= DM_MAX_POLY;
+        if (wl->drum_part) {
+            drum++;
+            bool listed = false;
+            for (uint32_t q = 0; q < d->nwall; q++)
+                listed |= d->wall_slot[q] == k;
+            ok &= listed && wl->handle == DM_FREE && wl->drum_part <= DM_PART_LIFTER &&
+                  wl->lifter >= (wl->drum_part == DM_PART_LIFTER ? 0 : -1) &&
+                  wl->lifter < (int)d->nlifters;
+        } else {
+            user++;
+            ok &= wl->handle < t->wh.n && t->wh.slot[wl->handle] == k;
+        }
+        if (!ok)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "wall slot %u is inconsistent", k);
+    }
+    if (drum != d->nwall || (d->nwall && (!d->alive || d->material >= t->nmat)))
+        return dm_fail(t, DEMILL_ERR_FORMAT, "the drum lists %u walls, %u found", d->nwall, drum);
+    /* a drum's walls are its shell, its end caps (3D) and its lifters in order */
+    const uint32_t caps = t->dim == 3 ? 2 : 0;
+    if (d->alive && d->nwall != 1 + caps + d->nlifters)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "a drum of %u lifters with %u walls", d->nlifters,
+                       d->nwall);
+    for (uint32_t q = 0; q < d->nwall; q++) {
+        const dm_wall *wl = &t->walls[d->wall_slot[q]];
+        const bool ok = q == 0      ? wl->drum_part == DM_PART_SHELL && wl->kind == DM_WALL_SHELL
+                        : q <= caps ? wl->drum_part == DM_PART_CAP && wl->kind == DM_WALL_PLANE
+                                    : wl->drum_part == DM_PART_LIFTER &&
+                                          wl->kind == DM_WALL_PRISM &&
+                                          wl->lifter == (int)(q - 1 - caps);
+        if (!ok)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "drum wall %u is not the part it should be", q);
+    }
+    for (uint32_t k = 0; k < t->wh.n; k++)
+        if (t->wh.slot[k] != DM_FREE && t->wh.slot[k] >= t->nwalls)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "wall handle %u names slot %u", k,
+                           t->wh.slot[k]);
+    return check_handles(t, &t->wh, user, "wall handles");
+}
+
+static demill_status check_drum(demill_world *t)
+{
+    const dm_drum *d = &t->drum;
+    if (d->alive) {
+        demill_status s;
+        double v;
+        /* the speed as it was set; its other forms are derived, and may lie
+         * outside their keys' bounds (or be NaN where the critical speed is
+         * undefined) */
+        const bool speed_key = d->speed_key == DEMILL_DRUM_SPEED ||
+                               d->speed_key == DEMILL_DRUM_SPEED_RPM ||
+                               d->speed_key == DEMILL_DRUM_SPEED_FRACTION;
+        if (!speed_key || t->drum_gen == DM_GEN_LAST)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "drum: speed key %d, generation %u",
+                           d->speed_key, (unsigned)t->drum_gen);
+        if ((s = check_param(t, d->speed_key, d->speed_value)))
+            return s;
+        for (int32_t key = 400; key < 450; key++)
+            if (key != DEMILL_DRUM_SPEED && key != DEMILL_DRUM_SPEED_RPM &&
+                key != DEMILL_DRUM_SPEED_FRACTION && demill_param_name(key) &&
+                demill_drum_get(t, dm_drum_id(t), key, &v) == DEMILL_OK &&
+                (s = check_param(t, key, v)))
+                return s;
+        for (uint32_t k = 0; k < d->nlifters; k++)
+            if ((s = dm_drum_check_lifter(t, &d->lifters[k], d->diameter)))
+                return s;
+    }
+    const dm_spectrum *sp = &d->spectrum;
+    if (t->events != (sp->counts != NULL))
+        return dm_fail(t, DEMILL_ERR_FORMAT, "the collision spectrum is half there");
+    if (!sp->counts)
+        return DEMILL_OK;
+    bool ok = isfinite(sp->log_min) && isfinite(sp->log_span) && sp->log_span > 0;
+    for (uint32_t k = 0; k + 1 < sp->nclasses; k++)
+        ok &= isfinite(sp->edges[k]) && sp->edges[k] > 0 && (!k || sp->edges[k] > sp->edges[k - 1]);
+    return ok ? DEMILL_OK : dm_fail(t, DEMILL_ERR_FORMAT, "the collision spectrum's classes");
+}
+
+/* Every listed pair joins live objects, in the list of its contact model,
+ * sorted by first particle. */
+static demill_status check_contacts(demill_world *t)
+{
+    const dm_particles *P = &t->p;
+    for (int side = 0; side < 2; side++)
+        for (int k = 0; k < DM_KERNELS; k++) {
+            const dm_bucket *b = side ? &t->pw.b[k] : &t->pp.b[k];
+            for (uint32_t q = 0; q < b->n; q++) {
+                const uint32_t i = b->i[q], j = b->j[q];
+                bool ok = i < P->n && (!q || b->i[q - 1] <= i) && b->on[q] <= 1;
+                if (ok && !side)
+                    ok = j < P->n && i < j && dm_pair_kernel(t, P->mat[i], P->mat[j]) == k;
+                else if (ok)
+                    ok = j < t->nwalls && t->walls[j].kind &&
+                         dm_pair_kernel(t, P->mat[i], t->walls[j].material) == k;
+                if (!ok)
+                    return dm_fail(t, DEMILL_ERR_FORMAT, "%s contact %u of list %d joins %u and %u",
+                                   side ? "particle-wall" : "particle-particle", q, k, i, j);
+            }
+        }
+    return DEMILL_OK;
+}
+
+/* ---- checkpoints ------------------------------------------------------------ */
+
+/* The CRC-32 of ISO 3309 / zlib (reflected polynomial 0xEDB88320). */
+static uint32_t crc32_of(const uint8_t *p, size_t n)
+{
+    uint32_t table[256];
+    for (uint32_t k = 0; k < 256; k++) {
+        uint32_t c = k;
+        for (int b = 0; b < 8; b++)
+            c = c & 1 ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+        table[k] = c;
+    }
+    uint32_t c = 0xFFFFFFFFu;
+    for (size_t k = 0; k < n; k++)
+        c = table[(c ^ p[k]) & 0xFF] ^ (c >> 8);
+    return c ^ 0xFFFFFFFFu;
+}
+
+/* The checkpoint of w, in a new buffer (*bytes of it). */
+static demill_status encode(demill_world *w, uint8_t **out, size_t *bytes)
+{
+    io s = {.reading = false};
+    uint8_t header[CK_HEADER] = {0};
+    io_bytes(&s, header, sizeof header);
+    transfer(&s, w);
+    if (s.status) {
+        free(s.buf);
+        return dm_fail(w, s.status, "checkpoint: %s", s.why);
+    }
+    const uint32_t format = CK_FORMAT, order = CK_BYTE_ORDER, version = demill_version_number();
+    const uint64_t payload = s.n - CK_HEADER;
+    const uint32_t crc = crc32_of(s.buf + CK_HEADER, payload);
+    memcpy(s.buf, CK_MAGIC, 8);
+    memcpy(s.buf + 8, &format, 4);
+    memcpy(s.buf + 12, &order, 4);
+    memcpy(s.buf + 16, &payload, 8);
+    memcpy(s.buf + 24, &crc, 4);
+    memcpy(s.buf + 28, &version, 4);
+    *out = s.buf;
+    *bytes = s.n;
+    return DEMILL_OK;
+}
+
+/* Reads a checkpoint into the new state t, checking everything. */
+static demill_status decode(demill_world *t, const uint8_t *b, size_t size)
+{
+    if (size < CK_HEADER || memcmp(b, CK_MAGIC, 8)) {
+        char start[9] = {0};
+        for (size_t k = 0; k < 8 && k < size; k++)
+            start[k] = b[k] >= 32 && b[k] < 127 ? (char)b[k] : '.';
+        return dm_fail(t, DEMILL_ERR_FORMAT,
+                       "not a libdemill checkpoint (%zu bytes, starting \"%s\")", size, start);
+    }
+    uint32_t format, order, crc, version;
+    uint64_t payload;
+    memcpy(&format, b + 8, 4);
+    memcpy(&order, b + 12, 4);
+    memcpy(&payload, b + 16, 8);
+    memcpy(&crc, b + 24, 4);
+    memcpy(&version, b + 28, 4);
+    if (order != CK_BYTE_ORDER)
+        return dm_fail(t, DEMILL_ERR_FORMAT,
+                       "written on a machine of another byte order (mark 0x%08x)", order);
+    if (format == 0 || format > CK_FORMAT)
+        return dm_fail(t, DEMILL_ERR_FORMAT,
+                       "format version %u (written by libdemill %u.%u.%u); this library reads "
+                       "versions 1 to %u",
+                       format, version / 10000, version / 100 % 100, version % 100, CK_FORMAT);
+    if (payload != size - CK_HEADER)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "%s: the header says %llu bytes of data, there are %zu",
+                       payload > size - CK_HEADER ? "truncated" : "trailing bytes",
+                       (unsigned long long)payload, size - CK_HEADER);
+    const uint32_t sum = crc32_of(b + CK_HEADER, payload);
+    if (sum != crc)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "corrupt: checksum 0x%08x, the header says 0x%08x",
+                       sum, crc);
+    io s = {.reading = true, .in = b + CK_HEADER, .left = payload};
+    transfer(&s, t);
+    if (!s.status && s.left)
+        io_fail(&s, DEMILL_ERR_FORMAT, "%zu bytes after the end", s.left);
+    if (s.status)
+        return dm_fail(t, s.status, "%s", s.why);
+    demill_status st;
+    if ((st = check_params(t)) || (st = check_particles(t)) || (st = check_walls(t)) ||
+        (st = check_drum(t)) || (st = check_contacts(t)))
+        return st == DEMILL_ERR_OUT_OF_MEMORY ? st : DEMILL_ERR_FORMAT;
+    for (uint32_t i = 0; i < t->p.n; i++)
+        t->mat_particles[t->p.mat[i]]++;
+    for (uint32_t k = 0; k < t->nwalls; k++)
+        if (t->walls[k].kind)
+            t->mat_walls[t->walls[k].material]++;
+    t->ptab_dirty = true;
+    return DEMILL_OK;
+}
+
+static demill_status load(demill_world *w, const uint8_t *b, size_t size, const char *source)
+{
+    demill_world *t = calloc(1, sizeof *t);
+    if (!t)
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "%s: out of memory", source);
+    t->base.magic = DM_WORLD_MAGIC; /* for the checks, which report through it */
+    demill_status s = decode(t, b, size);
+    if (s == DEMILL_OK && restore(w, t))
+        s = dm_fail(t, DEMILL_ERR_OUT_OF_MEMORY, "out of memory");
+    if (s)
+        dm_fail(w, s, "%s: %s", source, t->base.error);
+    dm_state_free(t);
+    free(t);
+    return s;
+}
+
+DEMILL_API demill_status demill_world_save_buffer(demill_world *w, void *buffer,
+                                                  size_t capacity, size_t *size)
+{
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (!buffer && !size)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_save_buffer: buffer and size are NULL");
+    uint8_t *bytes;
+    size_t n;
+    if ((s = encode(w, &bytes, &n)))
+        return s;
+    if (size)
+        *size = n;
+    if (buffer && capacity < n)
+        s = dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL,
+                    "world_save_buffer: the checkpoint takes %zu bytes, the buffer %zu", n,
+                    capacity);
+    else if (buffer)
+        memcpy(buffer, bytes, n);
+    free(bytes);
+    if (!s)
+        dm_clear_error(w);
+    return s;
+}
+
+DEMILL_API demill_status demill_world_load_buffer(demill_world *w, const void *buffer,
+                                                  size_t size)
+{
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (!buffer)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_load_buffer: buffer is NULL");
+    return load(w, buffer, size, "checkpoint buffer");
+}
+
+DEMILL_API demill_status demill_world_save(demill_world *w, const char *path)
+{
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (!path)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_save: path is NULL");
+    uint8_t *bytes;
+    size_t n;
+    if ((s = encode(w, &bytes, &n)))
+        return s;
+    const size_t len = strlen(path);
+    char *part = malloc(len + 6);
+    if (!part) {
+        free(bytes);
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "world_save: out of memory");
+    }
+    memcpy(part, path, len);
+    memcpy(part + len, ".part", 6);
+    errno = 0;
+    FILE *f = fopen(part, "wb");
+    bool ok = f && fwrite(bytes, 1, n, f) == n;
+    if (f)
+        ok &= !fclose(f);
+    ok = ok && !rename(part, path);
+    if (!ok) {
+        const int e = errno;
+        remove(part);
+        s = dm_fail(w, DEMILL_ERR_IO, "world_save: %s: %s", path,
+                    e ? strerror(e) : "write failed");
+    } else {
+        dm_clear_error(w);
+    }
+    free(part);
+    free(bytes);
+    return s;
+}
+
+DEMILL_API demill_status demill_world_load(demill_world *w, const char *path)
+{
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (!path)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_load: path is NULL");
+    errno = 0;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return dm_fail(w, DEMILL_ERR_IO, "world_load: %s: %s", path,
+                       errno ? strerror(errno) : "cannot open");
+    uint8_t *b = NULL;
+    size_t n = 0, cap = 0;
+    bool ok = true;
+    for (;;) {
+        if (n == cap) {
+            cap = dm_grown_capacity(cap, cap + 65536);
+            uint8_t *nb = realloc(b, cap);
+            if (!nb) {
+                free(b);
+                fclose(f);
+                return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "world_load: %s: out of memory", path);
+            }
+            b = nb;
+        }
+        const size_t got = fread(b + n, 1, cap - n, f);
+        n += got;
+        if (got == 0) {
+            ok = !ferror(f);
+            break;
+        }
+    }
+    const int e = errno;
+    fclose(f);
+    if (!ok)
+        s = dm_fail(w, DEMILL_ERR_IO, "world_load: %s: %s", path, e ? strerror(e) : "read failed");
+    else
+        s = load(w, b, n, path);
+    free(b);
+    return s;
+}
+
+/* ---- listing ids ------------------------------------------------------------ */
+
+DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, demill_id *out,
+                                          size_t capacity, size_t *count)
+{
+    demill_world *w = (demill_world *)cw;
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (kind == DEMILL_KIND_PARTICLE)
+        return demill_particles_read_ids(w, DEMILL_PARTICLE_ID, out, capacity, count);
+    if (kind != DEMILL_KIND_MATERIAL && kind != DEMILL_KIND_WALL && kind != DEMILL_KIND_DRUM)
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_ids: %d is not a kind of object",
+                       (int)kind);
+    if (!out && !count)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_ids: out and count are both NULL");
+    size_t n = 0;
+    if (kind == DEMILL_KIND_MATERIAL)
+        n = w->nmat;
+    else if (kind == DEMILL_KIND_DRUM)
+        n = w->drum.alive;
+    else
+        for (uint32_t k = 0; k < w->nwalls; k++)
+            n += w->walls[k].kind && !w->walls[k].drum_part;
+    if (count)
+        *count = n;
+    if (!out)
+        return DEMILL_OK;
+    if (capacity < n)
+        return dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL, "world_ids: capacity %zu, %zu objects",
+                       capacity, n);
+    if (kind == DEMILL_KIND_MATERIAL) {
+        for (uint32_t m = 0; m < w->nmat; m++)
+            out[m] = dm_material_id(w, m);
+    } else if (kind == DEMILL_KIND_WALL) {
+        for (uint32_t k = 0, q = 0; k < w->nwalls; k++)
+            if (w->walls[k].kind && !w->walls[k].drum_part)
+                out[q++] = dm_wall_id(w, k);
+    } else if (n) { /* the drum */
+        out[0] = dm_drum_id(w);
+    }
+    return DEMILL_OK;
+}

@@ -1,0 +1,248 @@
+/* drum.c: the mill drum's API: making, changing and removing a drum and
+ * reading what mill engineers read from it (lib/physics/mill/drum.c does the
+ * work; docs/physics.md §7). */
+#include <math.h>
+#include <string.h>
+
+#include "world/world.h"
+
+#define TWO_PI (2.0 * DM_PI)
+
+static double param_default(int32_t key)
+{
+    double v = 0.0;
+    demill_param_bounds(key, NULL, NULL, &v);
+    return v;
+}
+
+DEMILL_API demill_status demill_drum_create(demill_world *w, demill_id material, demill_id *out)
+{
+    uint32_t mat;
+    demill_status s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mat);
+    if (s)
+        return s;
+    if (!out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_create: out is NULL");
+    if (w->drum.alive)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_create: the world has a drum already");
+    if (w->drum_gen == DM_GEN_LAST)
+        return dm_fail(w, DEMILL_ERR_LIMIT,
+                       "drum_create: this world has made %u drums, the most a world can (each "
+                       "needs an id of its own)",
+                       (unsigned)DM_GEN_LAST);
+    dm_drum saved = w->drum;
+    dm_drum *d = &w->drum;
+    memset(d, 0, sizeof *d);
+    d->material = mat;
+    d->diameter = param_default(DEMILL_DRUM_DIAMETER);
+    d->length = param_default(DEMILL_DRUM_LENGTH);
+    d->lifter_h = param_default(DEMILL_DRUM_LIFTER_HEIGHT);
+    d->lifter_w = param_default(DEMILL_DRUM_LIFTER_WIDTH);
+    d->lifter_face = param_default(DEMILL_DRUM_LIFTER_FACE_ANGLE);
+    d->lifter_phase = param_default(DEMILL_DRUM_LIFTER_PHASE);
+    d->porosity = param_default(DEMILL_DRUM_FILL_POROSITY);
+    d->sample_interval = (uint32_t)param_default(DEMILL_DRUM_SAMPLE_INTERVAL);
+    d->speed_key = DEMILL_DRUM_SPEED;
+    d->t_set = w->time;
+    d->theta_start = NAN;
+    d->mean_power = d->mean_power_cm = d->mean_dissipation = NAN;
+    for (int k = 0; k < 3; k++)
+        d->mean_shape[k] = NAN;
+    d->alive = true;
+    if ((s = dm_drum_walls_build(w))) {
+        w->drum = saved;
+        return s;
+    }
+    *out = dm_drum_id(w);
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_remove(demill_world *w, demill_id drum)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s)
+        return s;
+    dm_drum_walls_remove(w);
+    dm_spectrum_free(w);
+    w->drum.alive = false;
+    w->drum_gen++;
+    w->events = false;
+    w->ptab_dirty = true;
+    w->nlist_valid = false;
+    w->forces_valid = false;
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_t key,
+                                         double value)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s)
+        return s;
+    if (key < 400 || key > 499)
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "drum_set: %d is not a drum key", (int)key);
+    if ((s = dm_check_value(w, key, value)))
+        return s;
+    dm_drum *d = &w->drum, saved = *d;
+    bool rebuild = false;
+    switch (key) {
+    case DEMILL_DRUM_DIAMETER: d->diameter = value; rebuild = true; break;
+    case DEMILL_DRUM_LENGTH: d->length = value; rebuild = true; break;
+    case DEMILL_DRUM_LIFTERS: dm_drum_even_lifters(d, (uint32_t)value); rebuild = true; break;
+    case DEMILL_DRUM_LIFTER_HEIGHT: d->lifter_h = value; rebuild = true; break;
+    case DEMILL_DRUM_LIFTER_WIDTH: d->lifter_w = value; rebuild = true; break;
+    case DEMILL_DRUM_LIFTER_FACE_ANGLE: d->lifter_face = value; rebuild = true; break;
+    case DEMILL_DRUM_LIFTER_PHASE: d->lifter_phase = value; rebuild = true; break;
+    case DEMILL_DRUM_SPEED:
+    case DEMILL_DRUM_SPEED_RPM:
+    case DEMILL_DRUM_SPEED_FRACTION: {
+        d->speed_key = key;
+        d->speed_value = value;
+        const double target = dm_drum_target_speed(w);
+        if (!isfinite(target)) {
+            *d = saved;
+            return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                           "drum: a speed as a fraction of critical needs gravity and a drum "
+                           "wider than its largest particle");
+        }
+        dm_drum_retarget(w, target);
+        break;
+    }
+    case DEMILL_DRUM_RAMP_TIME:
+        dm_drum_retarget(w, d->omega_to); /* the ramp applies to the next change */
+        d->ramp = value;
+        break;
+    case DEMILL_DRUM_CRITICAL_DIAMETER: d->crit_diameter = value; break;
+    case DEMILL_DRUM_FILL_POROSITY: d->porosity = value; break;
+    case DEMILL_DRUM_SAMPLE_INTERVAL: d->sample_interval = (uint32_t)value; break;
+    }
+    if (rebuild) {
+        if (key != DEMILL_DRUM_DIAMETER && key != DEMILL_DRUM_LENGTH && key != DEMILL_DRUM_LIFTERS &&
+            d->even_count)
+            dm_drum_even_lifters(d, d->even_count);
+        for (uint32_t k = 0; k < d->nlifters && !s; k++)
+            s = dm_drum_check_lifter(w, &d->lifters[k], d->diameter);
+        if (s || (s = dm_drum_walls_build(w))) {
+            *d = saved;
+            return s;
+        }
+    }
+    w->forces_valid = false;
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_add_lifter(demill_world *w, demill_id drum, double angle,
+                                                double height, double width, double face_angle)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s)
+        return s;
+    dm_drum *d = &w->drum, saved = *d;
+    const dm_lifter_spec l = {angle, height, width, face_angle};
+    if ((s = dm_drum_check_lifter(w, &l, d->diameter)))
+        return s;
+    if (d->nlifters == DM_MAX_LIFTERS)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_add_lifter: at most %d lifters",
+                       DM_MAX_LIFTERS);
+    d->lifters[d->nlifters++] = l;
+    d->even_count = 0;
+    if ((s = dm_drum_walls_build(w))) {
+        *d = saved;
+        return s;
+    }
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_t key,
+                                         double *value)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s)
+        return s;
+    if (!value)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_get: value is NULL");
+    const dm_drum *d = &w->drum;
+    double shape[3];
+    switch (key) {
+    case DEMILL_DRUM_DIAMETER: *value = d->diameter; break;
+    case DEMILL_DRUM_LENGTH: *value = d->length; break;
+    case DEMILL_DRUM_LIFTERS:
+    case DEMILL_DRUM_LIFTER_COUNT: *value = d->nlifters; break;
+    case DEMILL_DRUM_LIFTER_HEIGHT: *value = d->lifter_h; break;
+    case DEMILL_DRUM_LIFTER_WIDTH: *value = d->lifter_w; break;
+    case DEMILL_DRUM_LIFTER_FACE_ANGLE: *value = d->lifter_face; break;
+    case DEMILL_DRUM_LIFTER_PHASE: *value = d->lifter_phase; break;
+    case DEMILL_DRUM_SPEED: *value = d->omega_to; break;
+    case DEMILL_DRUM_SPEED_RPM: *value = d->omega_to * 60.0 / TWO_PI; break;
+    case DEMILL_DRUM_SPEED_FRACTION: *value = d->omega_to / dm_drum_critical_speed(w); break;
+    case DEMILL_DRUM_RAMP_TIME: *value = d->ramp; break;
+    case DEMILL_DRUM_CRITICAL_DIAMETER: *value = d->crit_diameter; break;
+    case DEMILL_DRUM_FILL_POROSITY: *value = d->porosity; break;
+    case DEMILL_DRUM_SAMPLE_INTERVAL: *value = d->sample_interval; break;
+    case DEMILL_DRUM_CRITICAL_SPEED: *value = dm_drum_critical_speed(w); break;
+    case DEMILL_DRUM_CURRENT_SPEED: *value = d->omega; break;
+    case DEMILL_DRUM_ANGLE: *value = d->theta; break;
+    case DEMILL_DRUM_REVOLUTIONS: *value = (double)d->revolutions; break;
+    case DEMILL_DRUM_TORQUE: *value = dm_drum_torque(w); break;
+    case DEMILL_DRUM_POWER: *value = -dm_drum_torque(w) * d->omega; break;
+    case DEMILL_DRUM_POWER_MEAN: *value = d->mean_power; break;
+    case DEMILL_DRUM_POWER_CM: *value = dm_drum_power_cm(w, d->omega); break;
+    case DEMILL_DRUM_POWER_CM_MEAN: *value = d->mean_power_cm; break;
+    case DEMILL_DRUM_TOE_ANGLE:
+    case DEMILL_DRUM_SHOULDER_ANGLE:
+    case DEMILL_DRUM_COM_ANGLE:
+        dm_charge_shape(w, shape);
+        *value = shape[key - DEMILL_DRUM_TOE_ANGLE];
+        break;
+    case DEMILL_DRUM_TOE_ANGLE_MEAN:
+    case DEMILL_DRUM_SHOULDER_ANGLE_MEAN:
+    case DEMILL_DRUM_COM_ANGLE_MEAN: *value = d->mean_shape[key - DEMILL_DRUM_TOE_ANGLE_MEAN]; break;
+    case DEMILL_DRUM_ENERGY_IN: *value = d->energy_in; break;
+    case DEMILL_DRUM_ENERGY_DISSIPATED: *value = d->energy_dissipated; break;
+    case DEMILL_DRUM_DISSIPATION_MEAN: *value = d->mean_dissipation; break;
+    default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "drum_get: %d is not a drum key", (int)key);
+    }
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_lifter_get(demill_world *w, demill_id drum, uint32_t index,
+                                                int32_t field, double *out)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s)
+        return s;
+    if (!out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_lifter_get: out is NULL");
+    const dm_drum *d = &w->drum;
+    if (index >= d->nlifters)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_lifter_get: lifter %u of %u", index,
+                       d->nlifters);
+    const dm_wall *wall = NULL;
+    for (uint32_t k = 0; k < d->nwall; k++)
+        if (w->walls[d->wall_slot[k]].lifter == (int)index)
+            wall = &w->walls[d->wall_slot[k]];
+    double theta;
+    switch (field) {
+    case DEMILL_LIFTER_FORCE: memcpy(out, wall->force, 3 * sizeof *out); break;
+    case DEMILL_LIFTER_FORCE_MEAN: memcpy(out, d->lifter_force_mean[index], 3 * sizeof *out); break;
+    case DEMILL_LIFTER_FORCE_PEAK: out[0] = d->lifter_peak[index]; break;
+    case DEMILL_LIFTER_ENERGY: out[0] = d->lifter_energy[index]; break;
+    case DEMILL_LIFTER_ANGLE:
+        dm_drum_omega_at(d, w->time, &theta);
+        out[0] = d->lifters[index].angle + theta;
+        break;
+    default:
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "drum_lifter_get: %d is not a lifter field",
+                       (int)field);
+    }
+    return DEMILL_OK;
+}

@@ -1,0 +1,89 @@
+/* world.h: the world layer, on top: the public entry points and the
+ * orchestration of a step, of queries and of saving and loading. It may use
+ * every module below (all included here); nothing below uses it. These are
+ * the functions the world's own files share. */
+#ifndef DM_WORLD_H
+#define DM_WORLD_H
+
+#include "base/alloc.h"
+#include "base/handles.h"
+#include "base/params.h"
+#include "base/random.h"
+#include "base/status.h"
+#include "base/threads.h"
+#include "physics/broadphase/broadphase.h"
+#include "physics/contact/contact.h"
+#include "physics/geometry/geometry.h"
+#include "physics/integrate/integrate.h"
+#include "physics/mill/mill.h"
+#include "physics/state/state.h"
+
+/* ---- ids (ids.c) --------------------------------------------------------------- */
+/* Checks that `id` names a live object of `kind` in world w and returns its
+ * storage slot (particles: storage index; walls: wall slot; materials:
+ * index). `what` names the argument in the error message. */
+demill_status dm_resolve(const demill_world *w, demill_id id, int kind, const char *what,
+                         uint32_t *slot);
+/* The entry check of an API function that names an object: the world is a
+ * live world and id names a live object of `kind` in it. */
+demill_status dm_enter(const demill_world *w, demill_id id, int kind, const char *what,
+                       uint32_t *slot);
+demill_id dm_particle_id(const demill_world *w, uint32_t storage);
+/* The id of a wall slot: the wall's own id, or the drum's for its walls. */
+demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
+demill_id dm_material_id(const demill_world *w, uint32_t material);
+demill_id dm_drum_id(const demill_world *w);
+
+/* ---- particles (particles.c, material.c) ------------------------------------------ */
+demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const double *positions,
+                                  const double *radii, const double *velocities, demill_id *ids);
+/* As dm_particle_mass(), and DEMILL_ERR_INVALID_VALUE with a message naming
+ * `who` unless the mass, the moment of inertia and their inverses are all
+ * finite and positive. */
+demill_status dm_particle_mass_checked(demill_world *w, uint32_t mat, double r, const char *who,
+                                       double *m, double *inv_i);
+/* After a change of what masses depend on (a material's density, the disc
+ * thickness): the masses of the particles of material mat (DM_ALL_MATERIALS:
+ * of every particle) computed again, if every one passes
+ * dm_particle_mass_checked(); otherwise its error, and no mass changed. */
+#define DM_ALL_MATERIALS UINT32_MAX
+demill_status dm_masses_update(demill_world *w, uint32_t mat, const char *who);
+
+/* ---- overlaps of new particles (overlap.c) ----------------------------------------- */
+typedef struct dm_sphere_entry {
+    uint64_t key;
+    uint32_t index;
+} dm_sphere_entry;
+typedef struct dm_sphere_index {
+    int dim;
+    size_t n;
+    double h, *x, *r;
+    dm_sphere_entry *e;
+} dm_sphere_index;
+int dm_spheres_build(dm_sphere_index *ix, const demill_world *w, size_t nextra,
+                     const double *xextra, const double *rextra, double rquery);
+void dm_spheres_free(dm_sphere_index *ix);
+int64_t dm_spheres_find(const dm_sphere_index *ix, const double *x, double r, uint32_t limit,
+                        double *depth);
+uint32_t dm_wall_overlap(const demill_world *w, const double *x, double r, double *depth);
+
+/* ---- running (step.c, progress.c, watchdog.c, timestep.c) ------------------------------ */
+/* Steps a prepared world, under the watchdog when it is on. */
+demill_status dm_run_steps(demill_world *w, uint64_t steps);
+/* Runs `steps` steps of a prepared world, reporting to its callback. */
+demill_status dm_progress_steps(demill_world *w, uint64_t steps);
+demill_status dm_watched_steps(demill_world *w, uint64_t steps);
+/* DEMILL_ERR_UNSTABLE unless every position, velocity and spin is finite. */
+demill_status dm_check_finite(demill_world *w);
+void dm_watch_free(demill_world *w);
+/* DEMILL_ERR_UNSTABLE, naming the pair, unless the time step is within the
+ * stability limit of every pair of materials that can meet. */
+demill_status dm_check_time_step(demill_world *w);
+
+/* ---- the state kept aside (snapshot.c) and the energies (energy.c) ------------------- */
+demill_status dm_state_copy(demill_world *dst, const demill_world *src);
+demill_status dm_state_restore(demill_world *w, const demill_world *src);
+void dm_state_free(demill_world *s);
+demill_status dm_energies(demill_world *w, int stored, double e[5]);
+
+#endif /* DM_WORLD_H */
