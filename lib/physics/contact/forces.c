@@ -167,8 +167,6 @@ static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca
                               uint32_t begin, uint32_t end)
 {
     dm_results *q = &w->res;
-    const dm_kernel_fn *ppk = D == 3 ? dm_pp_kernels3 : dm_pp_kernels2;
-    const dm_kernel_fn *pwk = D == 3 ? dm_pw_kernels3 : dm_pw_kernels2;
     if (ca->direct) /* the only range: the chunks add into the sums as they go */
         init_forces(D, w, begin, end);
     for (uint32_t c = 0; c < q->nchunks; c++) {
@@ -179,7 +177,7 @@ static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca
         dm_kernel_args a = {.w = w, .b = b, .k0 = r.k0, .geom_offset = b->base - q->npp,
                             .vp = ca->vp, .wp = ca->wp, .dt_hist = ca->dt_hist,
                             .reach = ca->reach, .tally = ca->tally, .direct = ca->direct};
-        (r.walls ? pwk : ppk)[r.kernel](&a);
+        dm_kernel(D, r.walls, r.kernel)(&a);
         q->chunk_tally[c] = a.t;
         q->chunk_contacts[c] = a.contacts;
         q->chunk_listed[c] = a.listed;

@@ -1,9 +1,11 @@
 /* kernels.h: the contact loops, specialised per dimension and contact model.
  *
  * A kernel works through one chunk of a bucket of candidate pairs that share
- * a combination of laws. kernels2.c and kernels3.c instantiate every
- * combination for their dimension through DM_FOR_EACH_KERNEL; forces.c picks
- * the kernel of each chunk, so the loops contain no branch on options and
+ * a combination of laws. The files of kernels/ instantiate them, a slice of
+ * 8 combinations each (DM_KERNEL_SLICE: one dimension, normal law and
+ * damping law), so that the slices compile in parallel; kernels.c gathers
+ * the slices into the tables through which forces.c picks the kernel of
+ * each chunk (dm_kernel()), so the loops contain no branch on options and
  * no indirect call.
  */
 #ifndef DM_KERNELS_H
@@ -29,14 +31,18 @@ typedef struct dm_kernel_args {
 
 typedef void (*dm_kernel_fn)(dm_kernel_args *a);
 
-/* Kernel order: normal (linear, Hertz) outermost, then damping (3),
- * tangential (4), rolling (2); see dm_kernel_index(). */
+/* Kernel order (dm_kernel_index()): normal (linear, Hertz) outermost, then
+ * damping (3), tangential (4), rolling (2). A slice is the 8 kernels of one
+ * dimension, normal law and damping law, listed by DM_FOR_TL; a dimension's
+ * 6 slices are listed by DM_FOR_EACH_SLICE. */
 #define DM_FOR_RL(X, D, NL, DL, TL) X(D, NL, DL, TL, 0) X(D, NL, DL, TL, 1)
 #define DM_FOR_TL(X, D, NL, DL)                                                                   \
     DM_FOR_RL(X, D, NL, DL, 0) DM_FOR_RL(X, D, NL, DL, 1) DM_FOR_RL(X, D, NL, DL, 2)             \
         DM_FOR_RL(X, D, NL, DL, 3)
-#define DM_FOR_DL(X, D, NL) DM_FOR_TL(X, D, NL, 0) DM_FOR_TL(X, D, NL, 1) DM_FOR_TL(X, D, NL, 2)
-#define DM_FOR_EACH_KERNEL(X, D) DM_FOR_DL(X, D, 1) DM_FOR_DL(X, D, 2)
+#define DM_FOR_DL(X, D, NL) X(D, NL, 0) X(D, NL, 1) X(D, NL, 2)
+#define DM_FOR_EACH_SLICE(X, D) DM_FOR_DL(X, D, 1) DM_FOR_DL(X, D, 2)
+#define DM_SLICE_KERNELS 8
+#define DM_SLICES (DM_KERNELS / DM_SLICE_KERNELS)
 
 /* 2D: the z component of a × b, and ω ẑ × n. */
 DM_INLINE void dm_spin_cross_n(const int D, const double *om, const double *n, double *out)
@@ -509,6 +515,12 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
     a->listed = listed;
 }
 
+/* The kernels of a slice, in kernel order, for particle-particle and
+ * particle-wall pairs. */
+typedef struct dm_kernel_slice {
+    dm_kernel_fn pp[DM_SLICE_KERNELS], pw[DM_SLICE_KERNELS];
+} dm_kernel_slice;
+
 #define DM_DEFINE_KERNELS(D, NL, DL, TL, RL)                                                     \
     DM_VECTOR_CLONES static void dm_pp_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
@@ -521,7 +533,29 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
 #define DM_PP_ENTRY(D, NL, DL, TL, RL) dm_pp_##D##_##NL##_##DL##_##TL##_##RL,
 #define DM_PW_ENTRY(D, NL, DL, TL, RL) dm_pw_##D##_##NL##_##DL##_##TL##_##RL,
 
-extern const dm_kernel_fn dm_pp_kernels2[DM_KERNELS], dm_pw_kernels2[DM_KERNELS];
-extern const dm_kernel_fn dm_pp_kernels3[DM_KERNELS], dm_pw_kernels3[DM_KERNELS];
+/* The kernels of dimension D, normal law NL and damping law DL, for every
+ * tangential and rolling law, and their table dm_kernels_D_NL_DL. Each of
+ * the 12 slices is defined in a file of kernels/ of its own, named after
+ * them (3d_hertz_restitution.c: D = 3, NL = DEMILL_NORMAL_HERTZ,
+ * DL = DEMILL_DAMPING_RESTITUTION), so that they compile in parallel;
+ * kernels.c gathers the tables, and a slice missing or defined twice fails
+ * the link. The kernels are static: GCC 12 gives a function with
+ * target_clones that is not static a resolver of default visibility, which
+ * the shared library would export. */
+#define DM_KERNEL_SLICE(D, NL, DL)                                                               \
+    DM_FOR_TL(DM_DEFINE_KERNELS, D, NL, DL)                                                       \
+    const dm_kernel_slice dm_kernels_##D##_##NL##_##DL = {                                        \
+        {DM_FOR_TL(DM_PP_ENTRY, D, NL, DL)}, {DM_FOR_TL(DM_PW_ENTRY, D, NL, DL)}};
+
+/* Every slice of a dimension, in kernel order (kernels.c). */
+extern const dm_kernel_slice *const dm_kernels2[DM_SLICES], *const dm_kernels3[DM_SLICES];
+
+/* The kernel of a chunk of dimension D: a particle-wall one if walls, else
+ * a particle-particle one, of the combination kernel (dm_kernel_index()). */
+DM_INLINE dm_kernel_fn dm_kernel(const int D, int walls, int kernel)
+{
+    const dm_kernel_slice *s = (D == 3 ? dm_kernels3 : dm_kernels2)[kernel / DM_SLICE_KERNELS];
+    return (walls ? s->pw : s->pp)[kernel % DM_SLICE_KERNELS];
+}
 
 #endif /* DM_KERNELS_H */
