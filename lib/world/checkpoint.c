@@ -581,7 +581,7 @@ static bool all_finite(const double *v, size_t n)
 static demill_status check_particles(demill_world *t)
 {
     const dm_particles *P = &t->p;
-    const size_t D = (size_t)t->dim, W = t->dim == 3 ? 3 : 1;
+    const size_t D = (size_t)t->dim, W = (size_t)dm_wdim(t);
     demill_status s = check_handles(t, &t->ph, P->n, "particle handles");
     if (s)
         return s;

@@ -28,7 +28,7 @@ typedef struct buffer {
 /* The buffers of state s (its pointers and sizes), into b; returns how many. */
 static size_t buffers_of(demill_world *s, buffer *b)
 {
-    const size_t D = (size_t)s->dim, W = s->dim == 3 ? 3 : 1, n = s->p.cap;
+    const size_t D = (size_t)s->dim, W = (size_t)dm_wdim(s), n = s->p.cap;
     const size_t nm = s->nmat_tab ? s->nmat_tab : 1;
     dm_particles *P = &s->p;
     size_t k = 0;

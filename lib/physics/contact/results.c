@@ -19,7 +19,7 @@ static uint32_t count_chunks(const demill_world *w)
 int dm_results_reserve(demill_world *w)
 {
     dm_results *q = &w->res;
-    const int S = w->dim + 2 * (w->dim == 3 ? 3 : 1);
+    const int S = w->dim + 2 * dm_wdim(w);
     size_t n = 0;
     for (int k = 0; k < DM_KERNELS; k++)
         n += (size_t)w->pp.b[k].n + w->pw.b[k].n;

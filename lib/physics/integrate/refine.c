@@ -80,7 +80,7 @@ static int reserve(demill_world *w)
     const uint32_t cap = w->p.cap;
     if (R->cap == cap)
         return 0;
-    const size_t D = (size_t)w->dim * sizeof(double), W = (w->dim == 3 ? 3 : 1) * sizeof(double);
+    const size_t D = (size_t)w->dim * sizeof(double), W = (size_t)dm_wdim(w) * sizeof(double);
     void **const arrays[] = {(void **)&R->xn, (void **)&R->vn, (void **)&R->fn,
                              (void **)&R->fprev, (void **)&R->wn, (void **)&R->tn,
                              (void **)&R->tprev, (void **)&R->thn};
