@@ -6,7 +6,8 @@
  * damping law), so that the slices compile in parallel; kernels.c gathers
  * the slices into the tables through which forces.c picks the kernel of
  * each chunk (dm_kernel()), so the loops contain no branch on options and
- * no indirect call.
+ * no indirect call. The kinematics loops, which depend on few of the
+ * choices, are compiled once for all kernels, in kinematics.c.
  */
 #ifndef DM_KERNELS_H
 #define DM_KERNELS_H
@@ -184,12 +185,15 @@ DM_INLINE double dm_exit_force(const double *hb, double delta_now, double reach,
     return jump * (d_last / (d_last - delta_now) - reach);
 }
 
-/* A kernel works through a chunk of DM_CHUNK candidates in three passes:
+/* A kernel works through a chunk of DM_CHUNK candidates in four passes:
  * the narrow phase finds the pairs that touch (and ends the contacts that
- * came apart); the law, the same arithmetic for every touching pair with no
- * branch on the pair, runs as a vectorised loop; the results, each pair's
- * force and torques, are then stored by pair id (dm_results) with the new
- * histories, and summed per particle afterwards. */
+ * came apart); the kinematics of the touching pairs are gathered into the
+ * chunk; the law, the same arithmetic for every touching pair with no
+ * branch on the pair, runs as a vectorised loop, the same loop for
+ * particle-particle and particle-wall pairs (which halves the code the
+ * kernels compile to); the results, each pair's force and torques, are then
+ * stored by pair id (dm_results) with the new histories, and summed per
+ * particle afterwards. */
 #define DM_CHUNK 128
 #define DM_LANES 8 /* the law's loop runs over a multiple of this many pairs */
 
@@ -202,7 +206,45 @@ typedef struct dm_chunk {
     double ta[3][DM_CHUNK], tb[3][DM_CHUNK]; /* torques on a and b (W components) */
     double diss[4][DM_CHUNK];          /* normal, tangential, friction, rolling */
     double h[DM_MAX_HIST][DM_CHUNK];   /* histories, then their new values */
+    /* the kinematics of the touching pairs (dm_kin, by component) */
+    double n[3][DM_CHUNK], delta[DM_CHUNK], ai[DM_CHUNK], aj[DM_CHUNK];
+    double vc[3][DM_CHUNK], dc[3][DM_CHUNK], wrel[3][DM_CHUNK], rstar[DM_CHUNK], mstar[DM_CHUNK];
 } dm_chunk;
+
+/* Pair s's kinematics q into the chunk (ROLL: with wrel), and back. */
+DM_INLINE void dm_kin_put(const int D, const int ROLL, dm_chunk *ch, uint32_t s, const dm_kin *q)
+{
+    for (int c = 0; c < D; c++) {
+        ch->n[c][s] = q->n[c];
+        ch->vc[c][s] = q->vc[c];
+        ch->dc[c][s] = q->dc[c];
+    }
+    for (int c = 0; c < (ROLL ? (D == 3 ? 3 : 1) : 0); c++)
+        ch->wrel[c][s] = q->wrel[c];
+    ch->delta[s] = q->delta;
+    ch->ai[s] = q->ai;
+    ch->aj[s] = q->aj;
+    ch->rstar[s] = q->rstar;
+    ch->mstar[s] = q->mstar;
+}
+
+DM_INLINE void dm_kin_get(const int D, const int ROLL, const dm_chunk *ch, uint32_t s, dm_kin *q)
+{
+    for (int c = 0; c < D; c++) {
+        q->n[c] = ch->n[c][s];
+        q->vc[c] = ch->vc[c][s];
+        q->dc[c] = ch->dc[c][s];
+    }
+    for (int c = 0; c < 3; c++)
+        q->wrel[c] = 0.0;
+    for (int c = 0; c < (ROLL ? (D == 3 ? 3 : 1) : 0); c++)
+        q->wrel[c] = ch->wrel[c][s];
+    q->delta = ch->delta[s];
+    q->ai = ch->ai[s];
+    q->aj = ch->aj[s];
+    q->rstar = ch->rstar[s];
+    q->mstar = ch->mstar[s];
+}
 
 /* Copies the histories of the chunk's m touching pairs into it, whether
  * each is a new contact (its touch flag off), and their entries in the pair
@@ -329,9 +371,40 @@ DM_INLINE void dm_result_add(const int D, const int WALLS, double *restrict f, d
     }
 }
 
+/* The kinematics of a chunk's first `lanes` touching pairs (ch->k) into the
+ * chunk, for dimension D (index D == 3), particle-particle or particle-wall
+ * pairs (index walls), with SPIN (index: the tangential law is not none) and
+ * ROLL (the rolling law). They depend on nothing else, so that the kernels
+ * of all normal, damping and tangential laws share them (kinematics.c).
+ * lanes is a multiple of DM_LANES (dm_chunk_load()); the loops that take it
+ * round it down to one all the same, which tells the compiler so and spares
+ * them a remainder loop. */
+typedef void (*dm_kin_fn)(const dm_kernel_args *a, dm_chunk *ch, uint32_t lanes);
+extern const dm_kin_fn dm_kins[2][2][2][2];
+
+/* The laws of a chunk's first `lanes` pairs, from the kinematics gathered
+ * into it (the loop that dm_law_fn's kernels run). */
+DM_INLINE void dm_chunk_laws(const int D, const int NL, const int DL, const int TL,
+                             const int RL, dm_chunk *restrict ch, uint32_t lanes,
+                             const dm_pairparam *restrict tab, double dt_hist, double reach)
+{
+    const int HSL = dm_law_hist_size(NL, DL, TL, D);
+    const uint32_t n = lanes / DM_LANES * DM_LANES; /* = lanes (see dm_kin_fn) */
+    for (uint32_t s = 0; s < n; s++) {
+        dm_kin q;
+        dm_kin_get(D, RL, ch, s, &q);
+        dm_chunk_law(D, NL, DL, TL, RL, HSL, ch, s, &tab[ch->pp[s]], &q, dt_hist, reach);
+    }
+}
+
+/* A combination's chunk_laws, shared by its particle-particle and
+ * particle-wall kernels. */
+typedef void (*dm_law_fn)(dm_chunk *ch, uint32_t lanes, const dm_pairparam *tab, double dt_hist,
+                          double reach);
+
 /* Particle-particle chunk. */
 DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
-                           dm_kernel_args *a)
+                           dm_law_fn laws, dm_kernel_args *a)
 {
     const int S = D + 2 * (D == 3 ? 3 : 1);
     const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
@@ -341,7 +414,7 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
     const dm_particles *P = &w->p;
     const dm_bucket *b = a->b;
     const int EV = w->events, HS = b->hs; /* HS = HSL + EV: the event slot is last */
-    const double *vp = a->vp, *wp = a->wp;
+    const double *vp = a->vp;
     const uint16_t *restrict mat = w->p.mat;
     const dm_pairparam *tab = w->ptab;
     const uint32_t nm = w->nmat_tab, k0 = a->k0;
@@ -399,14 +472,8 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
         on[k] = 0;
     }
     const uint32_t lanes = dm_chunk_load(HSL, 0, w, b, &ch, m);
-    for (uint32_t s = 0; s < lanes; s++) {
-        const uint32_t k = ch.k[s], i = bi[k], j = bj[k];
-        double d[3], r2;
-        dm_pp_touch(D, P, i, j, d, &r2);
-        dm_kin q;
-        dm_pp_kin(D, SPIN, RL, P, vp, wp, i, j, d, r2, &q);
-        dm_chunk_law(D, NL, DL, TL, RL, HSL, &ch, s, &tab[ch.pp[s]], &q, dt_hist, reach);
-    }
+    dm_kins[D == 3][0][SPIN][RL](a, &ch, lanes);
+    laws(&ch, lanes, tab, dt_hist, reach);
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
         dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
@@ -428,17 +495,16 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
  * then the law. The walls' forces, torques and energies are summed afterwards
  * (forces.c), from out and the geometry's lost. */
 DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
-                           dm_kernel_args *a)
+                           dm_law_fn laws, dm_kernel_args *a)
 {
     const int S = D + 2 * (D == 3 ? 3 : 1);
     const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
     const int EXIT = dm_law_exit(NL, DL);
     const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
     demill_world *w = a->w;
-    const dm_particles *P = &w->p;
     const dm_bucket *b = a->b;
     const int EV = w->events, HS = b->hs; /* HS = HSL + EV: the event slot is last */
-    const double *vp = a->vp, *wp = a->wp;
+    const double *vp = a->vp;
     const uint16_t *restrict mat = w->p.mat;
     const dm_pairparam *tab = w->ptab;
     const uint32_t nm = w->nmat_tab, g0 = a->geom_offset, k0 = a->k0;
@@ -494,13 +560,8 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
         on[k] = 0;
     }
     const uint32_t lanes = dm_chunk_load(HSL, 1, w, b, &ch, m);
-    for (uint32_t s = 0; s < lanes; s++) {
-        const uint32_t k = ch.k[s], i = b->i[k];
-        const dm_wall *wall = &w->walls[b->j[k]];
-        dm_kin q;
-        dm_pw_kin(D, SPIN, RL, P, vp, wp, g, g0 + k, i, wall, &q);
-        dm_chunk_law(D, NL, DL, TL, RL, HSL, &ch, s, &tab[ch.pp[s]], &q, dt_hist, reach);
-    }
+    dm_kins[D == 3][1][SPIN][RL](a, &ch, lanes);
+    laws(&ch, lanes, tab, dt_hist, reach);
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
         g->lost[g0 + k] =
@@ -522,13 +583,20 @@ typedef struct dm_kernel_slice {
 } dm_kernel_slice;
 
 #define DM_DEFINE_KERNELS(D, NL, DL, TL, RL)                                                     \
+    DM_VECTOR_CLONES __attribute__((noinline)) static void                                        \
+        dm_laws_##D##_##NL##_##DL##_##TL##_##RL(dm_chunk *ch, uint32_t lanes,                     \
+                                                const dm_pairparam *tab, double dt_hist,          \
+                                                double reach)                                     \
+    {                                                                                             \
+        dm_chunk_laws(D, NL, DL, TL, RL, ch, lanes, tab, dt_hist, reach);                         \
+    }                                                                                             \
     DM_VECTOR_CLONES static void dm_pp_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
-        dm_pp_chunk(D, NL, DL, TL, RL, a);                                                        \
+        dm_pp_chunk(D, NL, DL, TL, RL, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, a);               \
     }                                                                                             \
     DM_VECTOR_CLONES static void dm_pw_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
-        dm_pw_chunk(D, NL, DL, TL, RL, a);                                                        \
+        dm_pw_chunk(D, NL, DL, TL, RL, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, a);               \
     }
 #define DM_PP_ENTRY(D, NL, DL, TL, RL) dm_pp_##D##_##NL##_##DL##_##TL##_##RL,
 #define DM_PW_ENTRY(D, NL, DL, TL, RL) dm_pw_##D##_##NL##_##DL##_##TL##_##RL,

@@ -1,0 +1,60 @@
+/* kinematics.c: the contact kernels' kinematics loops (dm_kins, see
+ * kernels.h), one per dimension, kind of pair, SPIN and ROLL: the 16 loops
+ * that the 192 kernels share, compiled once rather than in every kernel. */
+#include "physics/contact/kernels.h"
+
+/* Particle-particle pairs: the separation again (the narrow phase kept only
+ * whether they touch), then the kinematics. */
+DM_INLINE void pp_kins(const int D, const int SPIN, const int ROLL, const dm_kernel_args *a,
+                       dm_chunk *restrict ch, uint32_t lanes)
+{
+    const dm_particles *P = &a->w->p;
+    const double *vp = a->vp, *wp = a->wp;
+    const uint32_t *restrict bi = a->b->i, *restrict bj = a->b->j;
+    const uint32_t n = lanes / DM_LANES * DM_LANES; /* see dm_kin_fn */
+    for (uint32_t s = 0; s < n; s++) {
+        const uint32_t k = ch->k[s], i = bi[k], j = bj[k];
+        double d[3], r2;
+        dm_pp_touch(D, P, i, j, d, &r2);
+        dm_kin q;
+        dm_pp_kin(D, SPIN, ROLL, P, vp, wp, i, j, d, r2, &q);
+        dm_kin_put(D, ROLL, ch, s, &q);
+    }
+}
+
+/* Particle-wall pairs, from the contact geometry of the bucket's candidates
+ * (w->wg, from a->geom_offset on). */
+DM_INLINE void pw_kins(const int D, const int SPIN, const int ROLL, const dm_kernel_args *a,
+                       dm_chunk *restrict ch, uint32_t lanes)
+{
+    const demill_world *w = a->w;
+    const double *vp = a->vp, *wp = a->wp;
+    const uint32_t *restrict bi = a->b->i, *restrict bj = a->b->j;
+    const uint32_t g0 = a->geom_offset, n = lanes / DM_LANES * DM_LANES; /* see dm_kin_fn */
+    for (uint32_t s = 0; s < n; s++) {
+        const uint32_t k = ch->k[s];
+        dm_kin q;
+        dm_pw_kin(D, SPIN, ROLL, &w->p, vp, wp, &w->wg, g0 + k, bi[k], &w->walls[bj[k]], &q);
+        dm_kin_put(D, ROLL, ch, s, &q);
+    }
+}
+
+#define KINS(D, SPIN, ROLL)                                                                       \
+    DM_VECTOR_CLONES static void pp_kins_##D##_##SPIN##_##ROLL(const dm_kernel_args *a,            \
+                                                               dm_chunk *ch, uint32_t lanes)       \
+    {                                                                                             \
+        pp_kins(D, SPIN, ROLL, a, ch, lanes);                                                     \
+    }                                                                                             \
+    DM_VECTOR_CLONES static void pw_kins_##D##_##SPIN##_##ROLL(const dm_kernel_args *a,            \
+                                                               dm_chunk *ch, uint32_t lanes)       \
+    {                                                                                             \
+        pw_kins(D, SPIN, ROLL, a, ch, lanes);                                                     \
+    }
+#define KINS_D(D) KINS(D, 0, 0) KINS(D, 0, 1) KINS(D, 1, 0) KINS(D, 1, 1)
+KINS_D(2)
+KINS_D(3)
+
+#define ROW(D, PAIRS)                                                                             \
+    {{PAIRS##_kins_##D##_0_0, PAIRS##_kins_##D##_0_1},                                            \
+     {PAIRS##_kins_##D##_1_0, PAIRS##_kins_##D##_1_1}}
+const dm_kin_fn dm_kins[2][2][2][2] = {{ROW(2, pp), ROW(2, pw)}, {ROW(3, pp), ROW(3, pw)}};
