@@ -193,7 +193,7 @@ double dm_tk_broken(const dm_ore *ore, double d, double e, uint32_t impacts)
         if (next - t <= 1e-14 * t)
             break; /* the threshold no longer moves */
         t = next;
-        if (ore->emax_ratio > 0 && t >= ore->emax_ratio * dm_tk_e50(ore, d))
+        if (tk_cdf(ore, d, t) == 1.0)
             break; /* every particle has broken */
     }
     return tk_cdf(ore, d, t);
