@@ -16,6 +16,7 @@
  * | demill/drum.h       | the mill: drum, lifters, charge, power, spectrum   |
  * | demill/state.h      | snapshots, checkpoint files, listing a world's ids |
  * | demill/vtk.h        | output for ParaView: particles, walls, time series |
+ * | demill/grinding.h   | ore breakage models, batch-grinding population balance |
  *
  * A minimal program:
  * @code
@@ -42,5 +43,6 @@
 #include "demill/drum.h"
 #include "demill/state.h"
 #include "demill/vtk.h"
+#include "demill/grinding.h"
 
 #endif /* DEMILL_H */

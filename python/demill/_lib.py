@@ -36,9 +36,14 @@ class _VtkSeries(ctypes.Structure):
     """Opaque ``demill_vtk_series``."""
 
 
+class _Grinding(ctypes.Structure):
+    """Opaque ``demill_grinding``."""
+
+
 WorldP = POINTER(_World)
 SnapshotP = POINTER(_Snapshot)
 VtkSeriesP = POINTER(_VtkSeries)
+GrindingP = POINTER(_Grinding)
 status = c_int32
 id_t = c_uint64
 dptr = POINTER(c_double)
@@ -108,8 +113,8 @@ PROTOTYPES = {
 }
 
 #: Functions newer than the oldest library this binding supports (progress,
-#: VTK output, snapshots and checkpoints, object listing): bound when the
-#: library has them.
+#: VTK output, snapshots and checkpoints, object listing, grinding): bound
+#: when the library has them.
 OPTIONAL_PROTOTYPES = {
     "demill_world_set_progress": (status, (WorldP, ProgressFn, c_void_p, c_uint64)),
     "demill_vtk_write_particles": (status, (WorldP, c_char_p)),
@@ -125,6 +130,30 @@ OPTIONAL_PROTOTYPES = {
     "demill_world_save_buffer": (status, (WorldP, c_void_p, c_size_t, sizeptr)),
     "demill_world_load_buffer": (status, (WorldP, c_void_p, c_size_t)),
     "demill_world_ids": (status, (WorldP, c_int32, idptr, c_size_t, sizeptr)),
+    # grinding.h
+    "demill_grinding_create": (status, (c_double, c_uint32, POINTER(GrindingP))),
+    "demill_grinding_destroy": (None, (GrindingP,)),
+    "demill_grinding_last_error": (c_char_p, (GrindingP,)),
+    "demill_grinding_sizes": (status, (GrindingP, dptr, c_size_t, sizeptr)),
+    "demill_grinding_set_feed": (status, (GrindingP, c_size_t, dptr)),
+    "demill_grinding_set_rates": (status, (GrindingP, c_size_t, dptr)),
+    "demill_grinding_rates": (status, (GrindingP, dptr, c_size_t, sizeptr)),
+    "demill_grinding_set_appearance": (status, (GrindingP, c_size_t, dptr)),
+    "demill_grinding_appearance": (status, (GrindingP, dptr, c_size_t, sizeptr)),
+    "demill_grinding_set_jk": (status, (GrindingP, c_double, c_double, c_size_t, dptr)),
+    "demill_grinding_set_tavares": (status, (GrindingP, c_double, c_double, c_double, c_double,
+                                             c_double, c_double, c_double, c_double, c_size_t,
+                                             dptr)),
+    "demill_grinding_t10": (status, (GrindingP, c_double, c_double, dptr)),
+    "demill_grinding_tn": (status, (GrindingP, c_double, dptr)),
+    "demill_grinding_broken_fraction": (status, (GrindingP, c_double, c_double, c_uint32, dptr)),
+    "demill_grinding_set_appearance_energy": (status, (GrindingP, c_double)),
+    "demill_grinding_run": (status, (GrindingP, c_double)),
+    "demill_grinding_time": (status, (GrindingP, dptr)),
+    "demill_grinding_product": (status, (GrindingP, dptr, c_size_t, sizeptr)),
+    "demill_grinding_passing": (status, (GrindingP, c_double, dptr)),
+    "demill_grinding_size_passing": (status, (GrindingP, c_double, dptr)),
+    "demill_grinding_specific_energy": (status, (GrindingP, c_double, c_double, dptr)),
 }
 
 

@@ -1,0 +1,311 @@
+/** @file demill/grinding.h
+ * @brief Ore breakage models and the batch-grinding population balance.
+ *
+ * A grinding object (demill_grinding) holds a size distribution over size
+ * classes in a √2 series, the specific breakage rates S_i and the breakage
+ * (appearance) function b_ij of those classes, and optionally an ore
+ * breakage model from which b_ij follows. It integrates Austin's
+ * size-discrete batch grinding equation (Austin, Klimpel and Luckie 1984,
+ * Process Engineering of Size Reduction: Ball Milling)
+ *
+ *     dw_i/dt = -S_i w_i + sum_{j<i} b_ij S_j w_j
+ *
+ * in time, and reports the product size distribution, the fraction passing
+ * a size, P80 and the specific energy. It needs no world: the rates may be
+ * typed in from a laboratory test, or (later) derived from a drum's
+ * collision spectrum. docs/grinding.md explains the models and equations.
+ *
+ * Size classes: class 0 is the coarsest. Class i (i < n - 1) holds sizes in
+ * (top/√2^(i+1), top/√2^i]; the last class, n - 1, holds everything finer
+ * than top/√2^(n-1) and never breaks (its rate is 0). Sizes are in m,
+ * times in s, rates in 1/s, specific energies of impact in J/kg
+ * (1 kWh/t = 3600 J/kg) and percentages (A, t10, the t-family) in %.
+ *
+ * Errors: every function that takes a grinding object returns
+ * DEMILL_ERR_NULL_POINTER when it is NULL and DEMILL_ERR_INVALID_HANDLE when
+ * it is not a live grinding object (destroyed, or a world); the lists at
+ * each function do not repeat these two. A function that fails leaves the
+ * object as it was and writes a message that demill_grinding_last_error()
+ * returns.
+ */
+#ifndef DEMILL_GRINDING_H
+#define DEMILL_GRINDING_H
+
+#include "common.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** An opaque grinding object: size classes, a size distribution, rates, an
+ *  appearance function and an ore breakage model. */
+typedef struct demill_grinding demill_grinding;
+
+/** Creates a grinding object with `classes` size classes in a √2 series
+ *  below `top_size`. Its distribution, rates and appearance function are
+ *  all zero and it has no breakage model until they are set.
+ *  @param top_size the upper limit of the coarsest class, m, > 0.
+ *  @param classes  the number of classes, 2 to 200 (the last one is the
+ *                  sink of everything finer).
+ *  @param[out] out receives the object.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (out is NULL),
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (top_size <= 0,
+ *          or classes out of range) or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_grinding_create(double top_size, uint32_t classes,
+                                                demill_grinding **out);
+
+/** Destroys a grinding object. NULL, or an object already destroyed, is
+ *  ignored.
+ *  @param grinding the object. */
+DEMILL_API void demill_grinding_destroy(demill_grinding *grinding);
+
+/** The message of the last failed call on a grinding object.
+ *  @param grinding the object.
+ *  @return a string owned by the object, "" after a call that succeeded;
+ *          a fixed text when grinding is NULL or not a live object. */
+DEMILL_API const char *demill_grinding_last_error(const demill_grinding *grinding);
+
+/** The limits of the size classes: n + 1 sizes for n classes, from the top
+ *  size down, limits[i] = top/√2^i for i < n, and limits[n] = 0 (the lower
+ *  limit of the sink).
+ *  @param grinding    the object.
+ *  @param[out] limits capacity doubles, m, or NULL to ask the count.
+ *  @param capacity    the number of doubles `limits` can hold.
+ *  @param[out] count  receives n + 1; may be NULL if limits is not.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (both limits and count NULL)
+ *          or DEMILL_ERR_BUFFER_TOO_SMALL. */
+DEMILL_API demill_status demill_grinding_sizes(const demill_grinding *grinding, double *limits,
+                                               size_t capacity, size_t *count);
+
+/** Sets the feed: the mass in each class. The product becomes the feed and
+ *  the grinding time 0.
+ *  @param grinding the object.
+ *  @param n        the number of values: the number of classes.
+ *  @param mass     n masses, any unit (kg for demill_grinding_specific_energy()),
+ *                  each >= 0, with a sum > 0.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE or
+ *          DEMILL_ERR_INVALID_VALUE (n is not the number of classes, a
+ *          negative mass, or a sum that is not > 0). */
+DEMILL_API demill_status demill_grinding_set_feed(demill_grinding *grinding, size_t n,
+                                                  const double *mass);
+
+/** Sets the specific breakage rates S_i of the classes.
+ *  @param grinding the object.
+ *  @param n        the number of values: the number of classes.
+ *  @param rates    n rates, 1/s, each >= 0; the last (the sink's) 0.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE or
+ *          DEMILL_ERR_INVALID_VALUE (n is not the number of classes, a
+ *          negative rate, or a sink rate that is not 0). */
+DEMILL_API demill_status demill_grinding_set_rates(demill_grinding *grinding, size_t n,
+                                                   const double *rates);
+
+/** Reads the specific breakage rates S_i.
+ *  @param grinding   the object.
+ *  @param[out] rates capacity doubles, 1/s, or NULL to ask the count.
+ *  @param capacity   the number of doubles `rates` can hold.
+ *  @param[out] count receives the number of classes; may be NULL if rates
+ *                    is not.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER or
+ *          DEMILL_ERR_BUFFER_TOO_SMALL. */
+DEMILL_API demill_status demill_grinding_rates(const demill_grinding *grinding, double *rates,
+                                               size_t capacity, size_t *count);
+
+/** Sets the breakage (appearance) function: b[i * n + j] is the fraction of
+ *  the mass broken out of class j that lands in class i. Broken mass leaves
+ *  its class: b_ij = 0 for i <= j, and for every class j but the sink
+ *  sum_{i>j} b_ij = 1 within 1e-9; the sink's column is all 0.
+ *  @param grinding the object.
+ *  @param n        the number of values: the number of classes squared.
+ *  @param b        n values, row i, column j at b[i * classes + j], each in
+ *                  [0, 1].
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE or
+ *          DEMILL_ERR_INVALID_VALUE (n is not classes², a value outside
+ *          [0, 1], a value on or above the diagonal or in the sink's column
+ *          that is not 0, or a column that does not sum to 1). */
+DEMILL_API demill_status demill_grinding_set_appearance(demill_grinding *grinding, size_t n,
+                                                        const double *b);
+
+/** Reads the breakage (appearance) function, laid out as for
+ *  demill_grinding_set_appearance().
+ *  @param grinding   the object.
+ *  @param[out] b     capacity doubles, or NULL to ask the count.
+ *  @param capacity   the number of doubles `b` can hold.
+ *  @param[out] count receives the number of classes squared; may be NULL if
+ *                    b is not.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER or
+ *          DEMILL_ERR_BUFFER_TOO_SMALL. */
+DEMILL_API demill_status demill_grinding_appearance(const demill_grinding *grinding, double *b,
+                                                    size_t capacity, size_t *count);
+
+/** Sets the ore's breakage model to the JKMRC drop-weight model (Napier-Munn,
+ *  Morrell, Morrison and Kojovic 1996, Mineral Comminution Circuits):
+ *  t10 = A (1 - exp(-b E_cs)), E_cs the specific comminution energy in
+ *  kWh/t (the specific impact energy in J/kg divided by 3600), with the
+ *  fragments' size distribution from the t-family table. Replaces any model
+ *  set before.
+ *  @param grinding the object.
+ *  @param a        A, the largest t10, %, in [0, 100].
+ *  @param b        b, t/kWh, >= 0.
+ *  @param rows     the number of rows of the t-family table, 2 to 100.
+ *  @param table    rows × 6 values, %: each row t10, t2, t4, t25, t50, t75
+ *                  (the percentages passing 1/10, 1/2, 1/4, 1/25, 1/50 and
+ *                  1/75 of the parent size), t10 increasing from row to row
+ *                  and every value in (0, 100], and in each row
+ *                  t2 >= t4 >= t10 >= t25 >= t50 >= t75.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (table), DEMILL_ERR_NOT_FINITE
+ *          or DEMILL_ERR_INVALID_VALUE (A or b out of range, or a table that
+ *          breaks a rule above). */
+DEMILL_API demill_status demill_grinding_set_jk(demill_grinding *grinding, double a, double b,
+                                                size_t rows, const double *table);
+
+/** Sets the ore's breakage model to the mechanistic model of Tavares and
+ *  King (1998, Single-particle fracture under impact loading): the mass-specific
+ *  fracture energies of particles of size d follow an upper-truncated
+ *  lognormal distribution of median E50(d) = e_inf (1 + (d0/d)^phi), spread
+ *  sigma and upper limit emax_ratio × E50(d); the weakening of particles that
+ *  survive an impact follows Tavares and King (2002, Modeling of particle
+ *  fracture by repeated impacts using continuum damage mechanics) with the
+ *  damage exponent gamma; the fragments of a particle broken by an impact of
+ *  specific energy E have t10 = a_prime (1 - exp(-b_prime E/E50(d))) and the
+ *  size distribution of the t-family table (as for demill_grinding_set_jk()).
+ *  Replaces any model set before.
+ *  @param grinding   the object.
+ *  @param e_inf      E∞, the median fracture energy of large particles, J/kg, > 0.
+ *  @param d0         d0, the size below which particles get tougher, m, > 0.
+ *  @param phi        φ, the exponent of that toughening, > 0.
+ *  @param sigma      σ, the spread of ln E, > 0.
+ *  @param emax_ratio Emax/E50, the upper truncation, > 1; 0 for none.
+ *  @param gamma      γ, the damage exponent, > 0.
+ *  @param a_prime    A', the largest t10, %, in [0, 100].
+ *  @param b_prime    b', >= 0 (dimensionless).
+ *  @param rows       the number of rows of the t-family table, 2 to 100.
+ *  @param table      rows × 6 values, as for demill_grinding_set_jk().
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (table), DEMILL_ERR_NOT_FINITE
+ *          or DEMILL_ERR_INVALID_VALUE (a parameter out of range, or a table
+ *          that breaks a rule of demill_grinding_set_jk()). */
+DEMILL_API demill_status demill_grinding_set_tavares(demill_grinding *grinding, double e_inf,
+                                                     double d0, double phi, double sigma,
+                                                     double emax_ratio, double gamma,
+                                                     double a_prime, double b_prime, size_t rows,
+                                                     const double *table);
+
+/** The t10 the ore's breakage model gives a particle of size `size` broken
+ *  by an impact of specific energy `energy`.
+ *  @param grinding the object.
+ *  @param size     the particle's size, m, > 0 (the JKMRC model does not
+ *                  use it).
+ *  @param energy   the specific impact energy, J/kg, >= 0.
+ *  @param[out] t10 receives t10, %.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE or
+ *          DEMILL_ERR_INVALID_VALUE (no model set, size <= 0 or energy < 0). */
+DEMILL_API demill_status demill_grinding_t10(const demill_grinding *grinding, double size,
+                                             double energy, double *t10);
+
+/** The t-family of the model's table at a given t10: t2, t4, t25, t50 and
+ *  t75, each interpolated against t10 by monotone piecewise cubic
+ *  interpolation (Fritsch and Carlson 1980) through the table's rows.
+ *  @param grinding the object.
+ *  @param t10      t10, %, within the table's first and last rows.
+ *  @param[out] tn  receives 5 values, %: t2, t4, t25, t50, t75.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE or
+ *          DEMILL_ERR_INVALID_VALUE (no model set, or t10 outside the
+ *          table). */
+DEMILL_API demill_status demill_grinding_tn(const demill_grinding *grinding, double t10,
+                                            double *tn);
+
+/** The fraction of particles of size `size` that break within `impacts`
+ *  impacts of specific energy `energy` each, by the Tavares and King model
+ *  with damage (the particles that survive an impact are weakened by it).
+ *  @param grinding      the object.
+ *  @param size          the particles' size, m, > 0.
+ *  @param energy        the specific energy of each impact, J/kg, >= 0.
+ *  @param impacts       the number of impacts, >= 1.
+ *  @param[out] fraction receives the fraction broken, 0 to 1.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE or
+ *          DEMILL_ERR_INVALID_VALUE (the model is not Tavares and King's,
+ *          size <= 0, energy < 0 or no impact). */
+DEMILL_API demill_status demill_grinding_broken_fraction(const demill_grinding *grinding,
+                                                         double size, double energy,
+                                                         uint32_t impacts, double *fraction);
+
+/** Sets the appearance function from the ore's breakage model for impacts
+ *  of one specific energy: for each class but the sink, the fragments of a
+ *  parent of the class's geometric mean size, by the model's t10 at that
+ *  energy and the t-family (docs/grinding.md says how the cumulative
+ *  passing curve is interpolated between the t-values and renormalised to
+ *  the mass that leaves the class).
+ *  @param grinding the object.
+ *  @param energy   the specific impact energy, J/kg, > 0.
+ *  @return DEMILL_OK, DEMILL_ERR_NOT_FINITE or DEMILL_ERR_INVALID_VALUE (no
+ *          model set, energy <= 0, or a class whose t10 is outside the
+ *          model's table). */
+DEMILL_API demill_status demill_grinding_set_appearance_energy(demill_grinding *grinding,
+                                                               double energy);
+
+/** Grinds for a time: integrates the batch grinding equation with the
+ *  current rates and appearance function from the current product, exactly
+ *  for rates that are constant over the call (the matrix exponential of its
+ *  lower triangular system, docs/grinding.md).
+ *  @param grinding the object.
+ *  @param time     the time to grind, s, > 0.
+ *  @return DEMILL_OK, DEMILL_ERR_NOT_FINITE or DEMILL_ERR_INVALID_VALUE
+ *          (time <= 0, or no feed set). */
+DEMILL_API demill_status demill_grinding_run(demill_grinding *grinding, double time);
+
+/** The grinding time since the feed was set.
+ *  @param grinding  the object.
+ *  @param[out] time receives the time, s.
+ *  @return DEMILL_OK or DEMILL_ERR_NULL_POINTER. */
+DEMILL_API demill_status demill_grinding_time(const demill_grinding *grinding, double *time);
+
+/** Reads the product: the mass in each class, in the unit of the feed.
+ *  @param grinding   the object.
+ *  @param[out] mass  capacity doubles, or NULL to ask the count.
+ *  @param capacity   the number of doubles `mass` can hold.
+ *  @param[out] count receives the number of classes; may be NULL if mass is
+ *                    not.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER or
+ *          DEMILL_ERR_BUFFER_TOO_SMALL. */
+DEMILL_API demill_status demill_grinding_product(const demill_grinding *grinding, double *mass,
+                                                 size_t capacity, size_t *count);
+
+/** The fraction of the product's mass finer than a size: exact at the class
+ *  limits, linear in the logarithm of size between them.
+ *  @param grinding      the object.
+ *  @param size          the size, m, at least the sink's upper limit (finer
+ *                       than that the distribution is not known).
+ *  @param[out] fraction receives the fraction passing, 0 to 1.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE or
+ *          DEMILL_ERR_INVALID_VALUE (no feed set, or size below the sink's
+ *          upper limit). */
+DEMILL_API demill_status demill_grinding_passing(const demill_grinding *grinding, double size,
+                                                 double *fraction);
+
+/** The size that a given fraction of the product's mass passes (0.8 for
+ *  P80), the inverse of demill_grinding_passing().
+ *  @param grinding  the object.
+ *  @param fraction  the fraction passing, in (0, 1].
+ *  @param[out] size receives the size, m.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE or
+ *          DEMILL_ERR_INVALID_VALUE (no feed set, a fraction outside (0, 1],
+ *          or a fraction that the sink alone holds, so that the size lies
+ *          in it). */
+DEMILL_API demill_status demill_grinding_size_passing(const demill_grinding *grinding,
+                                                      double fraction, double *size);
+
+/** The specific energy spent in grinding so far: power × time / mass.
+ *  @param grinding   the object.
+ *  @param power      the mill's power draw, W, >= 0.
+ *  @param ore_mass   the mass of ore ground, kg, > 0.
+ *  @param[out] kwh_t receives the specific energy, kWh/t.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE or
+ *          DEMILL_ERR_INVALID_VALUE (power < 0 or ore_mass <= 0). */
+DEMILL_API demill_status demill_grinding_specific_energy(const demill_grinding *grinding,
+                                                         double power, double ore_mass,
+                                                         double *kwh_t);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DEMILL_GRINDING_H */

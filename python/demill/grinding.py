@@ -1,0 +1,183 @@
+"""Ore breakage models and the batch-grinding population balance
+(``demill/grinding.h``, docs/grinding.md): a :class:`Grinding` object needs
+no world."""
+
+import ctypes
+import weakref
+
+import numpy as np
+
+from ._core import check, doubles, ptr, read_counted, strerror
+from ._lib import GrindingP, lib
+from .constants import Status
+from .errors import InvalidHandle
+
+
+class Grinding:
+    """Size classes in a √2 series below ``top_size`` m (``classes`` of
+    them, the last the sink of everything finer), a product, rates, an
+    appearance function and an ore breakage model.
+
+    ``Grinding(0.004, 16)`` creates one; use it as a context manager or
+    call :meth:`close` to free it at once. Every failing call raises the
+    :class:`~demill.Error` of its status with the library's message, and
+    leaves the object as it was. Sizes are in m, times in s, rates in 1/s,
+    specific impact energies in J/kg, t-values in %.
+    """
+
+    def __init__(self, top_size, classes):
+        p = GrindingP()
+        code = lib.demill_grinding_create(float(top_size), int(classes), ctypes.byref(p))
+        check(code, f"demill_grinding_create({top_size}, {classes}): {strerror(code)}")
+        self._ptr = p
+        self._finalizer = weakref.finalize(self, lib.demill_grinding_destroy, p)
+
+    @property
+    def closed(self):
+        """True once :meth:`close` has freed the object."""
+        return not self._finalizer.alive
+
+    def close(self):
+        """Frees the object (again is harmless)."""
+        self._finalizer()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    @property
+    def _handle(self):
+        if self.closed:
+            raise InvalidHandle(Status.INVALID_HANDLE, "the grinding object is closed")
+        return self._ptr
+
+    @property
+    def last_error(self):
+        """The message of the last failed call ("" if the last succeeded)."""
+        return lib.demill_grinding_last_error(self._handle).decode(errors="replace")
+
+    def _call(self, name, *args):
+        code = getattr(lib, name)(self._handle, *args)
+        if code != Status.OK:
+            check(code, self.last_error)
+
+    def _read(self, name):
+        return read_counted(lambda buf, n, count: self._call(name, buf, n, count), 1,
+                            np.float64)
+
+    def _scalar(self, name, *args):
+        out = ctypes.c_double()
+        self._call(name, *args, ctypes.byref(out))
+        return out.value
+
+    # ---- classes, feed, rates, appearance ---------------------------------
+
+    @property
+    def sizes(self):
+        """The n + 1 class limits, m, from the top size down to 0."""
+        return self._read("demill_grinding_sizes")
+
+    @property
+    def classes(self):
+        """The number of size classes."""
+        return len(self.sizes) - 1
+
+    def set_feed(self, mass):
+        """Sets the feed (mass per class); the time starts again at 0."""
+        arr = doubles(mass, (-1,), "mass")
+        self._call("demill_grinding_set_feed", arr.size, ptr(arr))
+
+    @property
+    def rates(self):
+        """The specific breakage rates S_i, 1/s (the sink's 0)."""
+        return self._read("demill_grinding_rates")
+
+    @rates.setter
+    def rates(self, values):
+        arr = doubles(values, (-1,), "rates")
+        self._call("demill_grinding_set_rates", arr.size, ptr(arr))
+
+    @property
+    def appearance(self):
+        """The appearance function as an n × n array, ``b[i, j]`` the
+        fraction of class j's broken mass that lands in class i."""
+        b = self._read("demill_grinding_appearance")
+        n = int(round(np.sqrt(b.size)))
+        return b.reshape(n, n)
+
+    @appearance.setter
+    def appearance(self, b):
+        arr = doubles(b, (-1, -1), "appearance")
+        self._call("demill_grinding_set_appearance", arr.size, ptr(arr))
+
+    # ---- breakage models -------------------------------------------------
+
+    def set_jk(self, a, b, table):
+        """The JKMRC model t10 = A (1 - exp(-b E_cs)), A in %, b in t/kWh,
+        with the t-family ``table``: rows of t10, t2, t4, t25, t50, t75 (%)."""
+        t = doubles(table, (-1, 6), "table")
+        self._call("demill_grinding_set_jk", float(a), float(b), t.shape[0], ptr(t))
+
+    def set_tavares(self, e_inf, d0, phi, sigma, emax_ratio, gamma, a_prime, b_prime, table):
+        """Tavares and King's model (docs/grinding.md has every parameter and
+        its unit) with the t-family ``table``."""
+        t = doubles(table, (-1, 6), "table")
+        self._call("demill_grinding_set_tavares", float(e_inf), float(d0), float(phi),
+                   float(sigma), float(emax_ratio), float(gamma), float(a_prime),
+                   float(b_prime), t.shape[0], ptr(t))
+
+    def t10(self, size, energy):
+        """The model's t10, %, for a particle of ``size`` m broken by an
+        impact of ``energy`` J/kg."""
+        return self._scalar("demill_grinding_t10", float(size), float(energy))
+
+    def tn(self, t10):
+        """t2, t4, t25, t50, t75 (%) at ``t10`` from the model's table."""
+        out = np.empty(5)
+        self._call("demill_grinding_tn", float(t10), ptr(out))
+        return out
+
+    def broken_fraction(self, size, energy, impacts=1):
+        """The fraction of particles of ``size`` broken within ``impacts``
+        impacts of ``energy`` J/kg each (Tavares and King, with damage)."""
+        return self._scalar("demill_grinding_broken_fraction", float(size), float(energy),
+                            int(impacts))
+
+    def set_appearance_energy(self, energy):
+        """Sets the appearance function from the model at one impact energy."""
+        self._call("demill_grinding_set_appearance_energy", float(energy))
+
+    # ---- grinding and the product ----------------------------------------
+
+    def run(self, time):
+        """Grinds for ``time`` s with the current rates and appearance."""
+        self._call("demill_grinding_run", float(time))
+
+    @property
+    def time(self):
+        """The grinding time since the feed was set, s."""
+        return self._scalar("demill_grinding_time")
+
+    @property
+    def product(self):
+        """The mass per class, in the unit of the feed."""
+        return self._read("demill_grinding_product")
+
+    def passing(self, size):
+        """The fraction of the product finer than ``size`` m."""
+        return self._scalar("demill_grinding_passing", float(size))
+
+    def size_passing(self, fraction):
+        """The size, m, that ``fraction`` of the product passes."""
+        return self._scalar("demill_grinding_size_passing", float(fraction))
+
+    @property
+    def p80(self):
+        """The size that 80 % of the product passes, m."""
+        return self.size_passing(0.8)
+
+    def specific_energy(self, power, ore_mass):
+        """Power ``power`` W × the grinding time / ``ore_mass`` kg, in kWh/t."""
+        return self._scalar("demill_grinding_specific_energy", float(power), float(ore_mass))

@@ -1,0 +1,92 @@
+"""The grinding binding (demill.Grinding) against numbers derived without
+it: one class decays as e^(-S t), the JKMRC t10 = A (1 - exp(-b E_cs)), the
+P80 of a two-class product worked by hand, mass conserved through a model's
+appearance function; errors raise with the library's message and change
+nothing."""
+
+import math
+import unittest
+
+import numpy as np
+from helpers import linear_world  # noqa: F401 - makes demill importable
+
+import demill
+
+# A t-family table made up for the tests: rows of t10, t2, t4, t25, t50, t75 (%).
+TABLE = [[10, 30, 18, 4.5, 2.5, 2.0], [20, 50, 33, 9.0, 5.0, 4.0], [30, 65, 46, 13.5, 7.5, 6.0]]
+
+
+class GrindingTest(unittest.TestCase):
+    def test_one_class_decays_exponentially(self):
+        with demill.Grinding(0.01, 2) as g:
+            g.set_feed([1.0, 0.0])
+            g.rates = [0.3, 0.0]
+            g.appearance = [[0, 0], [1, 0]]
+            g.run(2.5)
+            g.run(2.5)
+            self.assertAlmostEqual(g.time, 5.0, places=14)
+            self.assertAlmostEqual(g.product[0], math.exp(-1.5), delta=1e-12)
+
+    def test_jk_t10_and_appearance(self):
+        with demill.Grinding(0.004, 12) as g:
+            g.set_jk(60, 1.2, TABLE)
+            # E_cs = 1 kWh/t = 3600 J/kg: 60 (1 - e^-1.2) %
+            self.assertAlmostEqual(g.t10(0.001, 3600), 60 * (1 - math.exp(-1.2)), places=12)
+            np.testing.assert_allclose(g.tn(20), TABLE[1][1:], rtol=0, atol=1e-12)
+            g.set_appearance_energy(900)
+            b = g.appearance
+            self.assertEqual(b.shape, (12, 12))
+            np.testing.assert_allclose(b[:, :-1].sum(axis=0), 1.0, atol=1e-12)
+            feed = np.zeros(12)
+            feed[0] = 2.0
+            g.set_feed(feed)
+            g.rates = [0.05 * 0.8 ** i for i in range(11)] + [0.0]
+            for _ in range(50):
+                g.run(10)
+                self.assertAlmostEqual(g.product.sum(), 2.0, delta=2e-12)
+            self.assertAlmostEqual(g.specific_energy(50, 2.0), 50 * 500 / 2.0 / 3600, places=12)
+
+    def test_passing_and_p80(self):
+        with demill.Grinding(0.008, 8) as g:
+            limits = g.sizes
+            self.assertEqual(len(limits), 9)
+            self.assertEqual(g.classes, 8)
+            g.set_feed([0, 0, 1, 0, 1, 0, 0, 0])
+            self.assertAlmostEqual(g.passing(limits[3]), 0.5, places=15)
+            # 0.8 lies 0.6 of the way from 0.5 to 1 across class 2, in ln x
+            self.assertAlmostEqual(g.p80, limits[3] * 2 ** 0.3, delta=1e-15)
+
+    def test_tavares_median(self):
+        with demill.Grinding(0.02, 8) as g:
+            g.set_tavares(100, 0.005, 1, 0.8, 0, 5, 50, 1, TABLE)
+            # E50(5 mm) = 100 (1 + 1) J/kg: half break
+            self.assertAlmostEqual(g.broken_fraction(0.005, 200), 0.5, places=12)
+            self.assertGreater(g.broken_fraction(0.005, 100, 10), g.broken_fraction(0.005, 100))
+
+    def test_errors_carry_the_message_and_change_nothing(self):
+        with demill.Grinding(0.01, 4) as g:
+            g.set_feed([1, 1, 0, 0])
+            g.rates = [0.1, 0.1, 0.1, 0]
+            before = (g.product, g.rates, g.appearance)
+            with self.assertRaises(demill.InvalidValue) as cm:
+                g.rates = [0.1, -0.1, 0.1, 0]
+            self.assertIn("rates[1]", cm.exception.message)
+            with self.assertRaises(demill.InvalidValue):
+                g.set_jk(101, 1, TABLE)
+            with self.assertRaises(demill.InvalidValue):
+                g.run(0)
+            with self.assertRaises(demill.NotFinite):
+                g.set_feed([1, float("nan"), 0, 0])
+            with self.assertRaises(demill.InvalidValue) as cm:
+                g.appearance = np.eye(4)
+            self.assertIn("appearance", str(cm.exception))
+            for old, new in zip(before, (g.product, g.rates, g.appearance)):
+                np.testing.assert_array_equal(old, new)
+        with self.assertRaises(demill.InvalidHandle):
+            g.run(1)
+        with self.assertRaises(demill.InvalidValue):
+            demill.Grinding(-1, 4)
+
+
+if __name__ == "__main__":
+    unittest.main()
