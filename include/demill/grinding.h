@@ -12,8 +12,8 @@
  *
  * in time, and reports the product size distribution, the fraction passing
  * a size, P80 and the specific energy. It needs no world: the rates may be
- * typed in from a laboratory test, or (later) derived from a drum's
- * collision spectrum. docs/grinding.md explains the models and equations.
+ * typed in from a laboratory test, or derived from an impact spectrum
+ * (demill_grinding_rates_from_impacts()), such as a drum records. docs/grinding.md explains the models and equations.
  *
  * Size classes: class 0 is the coarsest. Class i (i < n - 1) holds sizes in
  * (top/√2^(i+1), top/√2^i]; the last class, n - 1, holds everything finer
@@ -241,6 +241,48 @@ DEMILL_API demill_status demill_grinding_broken_fraction(const demill_grinding *
  *          model's table). */
 DEMILL_API demill_status demill_grinding_set_appearance_energy(demill_grinding *grinding,
                                                                double energy);
+
+/** Sets the specific breakage rates S_i and the appearance function b_ij
+ *  from the impacts the particles of each class received in a time (an
+ *  impact spectrum), by the Tavares and King model:
+ *
+ *      S_i = sum_k lambda_ik p_i(E_k),  lambda_ik = counts[i][k] / (N_i T)
+ *
+ *  lambda_ik the impacts per particle and second in energy bin k, E_k the
+ *  bin's midpoint (edges[k] + edges[k+1]) / 2, and p_i(E) the probability
+ *  that one impact of specific energy E breaks a particle of class i: the
+ *  fraction of fresh particles of the class's geometric mean size whose
+ *  fracture energy is at most E (Tavares and King 1998, Single-particle
+ *  fracture under impact loading; the weakening of survivors by damage is
+ *  not part of this rate). Column j of b is the mean of the appearance
+ *  columns at the t10 of each bin's energy (as
+ *  demill_grinding_set_appearance_energy() makes them), weighted by each
+ *  bin's breakage lambda_jk p_j(E_k); a class that does not break (S_j = 0)
+ *  gets a column of zeros, as the sink. The sink's counts are not used.
+ *  The JKMRC model gives a fragment size distribution for a breakage event
+ *  but no probability that an impact breaks a particle (Napier-Munn et al.
+ *  1996 measure t10 on particles that all broke), so it is refused here:
+ *  set Tavares and King's model.
+ *  @param grinding  the object.
+ *  @param classes   the number of classes (the object's).
+ *  @param bins      the number of energy bins, 1 to 10000.
+ *  @param edges     bins + 1 increasing bin edges, J/kg, the first >= 0.
+ *  @param counts    classes × bins impact counts, counts[i * bins + k] for
+ *                   class i and bin k, each >= 0.
+ *  @param particles classes numbers of particles N_i, each >= 0, > 0 for a
+ *                   class (but the sink) with impacts.
+ *  @param time      the time T over which the impacts were counted, s, > 0.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_INVALID_VALUE (a count that does not match, edges not
+ *          increasing, a negative count or particle number, impacts on a
+ *          class without particles, time <= 0, no model set, the JKMRC
+ *          model, or a breaking bin whose t10 is outside the model's
+ *          t-family table) or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_grinding_rates_from_impacts(demill_grinding *grinding,
+                                                            size_t classes, size_t bins,
+                                                            const double *edges,
+                                                            const double *counts,
+                                                            const double *particles, double time);
 
 /** Grinds for a time: integrates the batch grinding equation with the
  *  current rates and appearance function from the current product, exactly

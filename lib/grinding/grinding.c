@@ -437,6 +437,115 @@ DEMILL_API demill_status demill_grinding_set_appearance_energy(demill_grinding *
     return DEMILL_OK;
 }
 
+#define DM_IMPACT_MAX_BINS 10000u
+
+/* Checks the arguments of demill_grinding_rates_from_impacts(). */
+static demill_status check_impacts(const demill_grinding *g, const char *what, size_t classes,
+                                   size_t bins, const double *edges, const double *counts,
+                                   const double *particles, double time)
+{
+    if (!edges || !counts || !particles)
+        return FAIL(g, DEMILL_ERR_NULL_POINTER, "%s: edges, counts or particles is NULL", what);
+    if (classes != g->n)
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE, "%s: %zu classes given, the object has %u", what,
+                    classes, g->n);
+    if (bins < 1 || bins > DM_IMPACT_MAX_BINS)
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE, "%s: %zu energy bins, not 1 to %u", what, bins,
+                    DM_IMPACT_MAX_BINS);
+    demill_status st;
+    if ((st = finite_all(g, "impact energy edges", bins + 1, edges)) ||
+        (st = finite_all(g, "impact counts", classes * bins, counts)) ||
+        (st = finite_all(g, "particles", classes, particles)))
+        return st;
+    if (!isfinite(time))
+        return FAIL(g, DEMILL_ERR_NOT_FINITE, "%s: time is %g", what, time);
+    if (!(time > 0))
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE, "%s: time %g s, not > 0", what, time);
+    if (edges[0] < 0)
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE, "%s: the first energy edge is %g J/kg, below 0",
+                    what, edges[0]);
+    for (size_t k = 0; k < bins; k++)
+        if (!(edges[k + 1] > edges[k]))
+            return FAIL(g, DEMILL_ERR_INVALID_VALUE,
+                        "%s: energy edge %zu (%g J/kg) is not above edge %zu (%g J/kg)", what,
+                        k + 1, edges[k + 1], k, edges[k]);
+    for (size_t i = 0; i < classes; i++) {
+        if (particles[i] < 0)
+            return FAIL(g, DEMILL_ERR_INVALID_VALUE, "%s: particles[%zu] is %g, below 0", what, i,
+                        particles[i]);
+        double total = 0.0;
+        for (size_t k = 0; k < bins; k++) {
+            if (counts[i * bins + k] < 0)
+                return FAIL(g, DEMILL_ERR_INVALID_VALUE, "%s: counts[%zu] is %g, below 0", what,
+                            i * bins + k, counts[i * bins + k]);
+            total += counts[i * bins + k];
+        }
+        if (total > 0 && !(particles[i] > 0) && i + 1 < classes)
+            return FAIL(g, DEMILL_ERR_INVALID_VALUE,
+                        "%s: class %zu has %g impacts but no particles to receive them", what, i,
+                        total);
+    }
+    if (g->ore.model == DM_ORE_NONE)
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE, "%s: no breakage model set", what);
+    if (g->ore.model != DM_ORE_TAVARES)
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE,
+                    "%s: the JKMRC model gives no probability that an impact breaks a particle; "
+                    "set Tavares and King's",
+                    what);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_grinding_rates_from_impacts(demill_grinding *g, size_t classes,
+                                                            size_t bins, const double *edges,
+                                                            const double *counts,
+                                                            const double *particles, double time)
+{
+    CHECK(g);
+    const char *what = "demill_grinding_rates_from_impacts";
+    demill_status st = check_impacts(g, what, classes, bins, edges, counts, particles, time);
+    if (st)
+        return st;
+    size_t n = g->n;
+    double *s = calloc(n, sizeof *s), *b = calloc(n * n, sizeof *b), col[DM_GRINDING_MAX_CLASSES];
+    if (!s || !b) {
+        free(s);
+        free(b);
+        return FAIL(g, DEMILL_ERR_OUT_OF_MEMORY, "%s: no memory", what);
+    }
+    for (uint32_t j = 0; j + 1 < n; j++) {
+        double size = dm_class_limit(g, j) / pow(2.0, 0.25); /* the geometric mean */
+        for (size_t k = 0; k < bins; k++) {
+            double c = counts[j * bins + k];
+            if (c == 0)
+                continue;
+            double e = 0.5 * (edges[k] + edges[k + 1]);
+            double w = c / (particles[j] * time) * dm_tk_broken(&g->ore, size, e, 1);
+            if (w == 0)
+                continue;
+            double t10 = dm_ore_t10(&g->ore, size, e);
+            char where[128];
+            snprintf(where, sizeof where, "%s, class %u, energy %g J/kg", what, j, e);
+            if ((st = check_t10(g, where, t10))) {
+                free(s);
+                free(b);
+                return st;
+            }
+            s[j] += w;
+            dm_appearance_column(g, j, t10, col);
+            for (size_t i = j + 1; i < n; i++)
+                b[i * n + j] += w * col[i];
+        }
+        for (size_t i = j + 1; s[j] > 0 && i < n; i++)
+            b[i * n + j] /= s[j];
+    }
+    memcpy(g->s, s, n * sizeof *s);
+    memcpy(g->b, b, n * n * sizeof *b);
+    free(s);
+    free(b);
+    ok(g);
+    return DEMILL_OK;
+}
+
 static demill_status check_feed(const demill_grinding *g, const char *what)
 {
     if (!(g->total > 0))

@@ -148,6 +148,8 @@ OPTIONAL_PROTOTYPES = {
     "demill_grinding_tn": (status, (GrindingP, c_double, dptr)),
     "demill_grinding_broken_fraction": (status, (GrindingP, c_double, c_double, c_uint32, dptr)),
     "demill_grinding_set_appearance_energy": (status, (GrindingP, c_double)),
+    "demill_grinding_rates_from_impacts": (status, (GrindingP, c_size_t, c_size_t, dptr, dptr,
+                                                    dptr, c_double)),
     "demill_grinding_run": (status, (GrindingP, c_double)),
     "demill_grinding_time": (status, (GrindingP, dptr)),
     "demill_grinding_product": (status, (GrindingP, dptr, c_size_t, sizeptr)),

@@ -149,6 +149,19 @@ class Grinding:
         """Sets the appearance function from the model at one impact energy."""
         self._call("demill_grinding_set_appearance_energy", float(energy))
 
+    def rates_from_impacts(self, edges, counts, particles, time):
+        """Sets the rates and the appearance function from an impact
+        spectrum by Tavares and King's model: ``edges`` the bins' edges
+        (J/kg, one more than the bins), ``counts`` an array of classes ×
+        bins impacts, ``particles`` the particles of each class and
+        ``time`` the time over which they were counted, s
+        (``demill_grinding_rates_from_impacts``; the JKMRC model is refused)."""
+        e = doubles(edges, (-1,), "edges")
+        c = doubles(counts, (-1, e.size - 1), "counts")
+        n = doubles(particles, (-1,), "particles")
+        self._call("demill_grinding_rates_from_impacts", c.shape[0], c.shape[1], ptr(e),
+                   ptr(c), ptr(n), float(time))
+
     # ---- grinding and the product ----------------------------------------
 
     def run(self, time):

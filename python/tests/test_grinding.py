@@ -1,7 +1,8 @@
 """The grinding binding (demill.Grinding) against numbers derived without
 it: one class decays as e^(-S t), the JKMRC t10 = A (1 - exp(-b E_cs)), the
 P80 of a two-class product worked by hand, mass conserved through a model's
-appearance function; errors raise with the library's message and change
+appearance function, the rate of impacts at one energy S = c/(N T)
+P(E); errors raise with the library's message and change
 nothing."""
 
 import math
@@ -62,6 +63,25 @@ class GrindingTest(unittest.TestCase):
             # E50(5 mm) = 100 (1 + 1) J/kg: half break
             self.assertAlmostEqual(g.broken_fraction(0.005, 200), 0.5, places=12)
             self.assertGreater(g.broken_fraction(0.005, 100, 10), g.broken_fraction(0.005, 100))
+
+    def test_rates_from_impacts(self):
+        with demill.Grinding(0.02, 8) as g:
+            g.set_tavares(100, 0.005, 1, 0.8, 0, 5, 30, 1, TABLE)
+            # 40 impacts on 4 particles of class 2 in 2 s, all in one bin
+            # whose midpoint is E50 of class 2's geometric mean size: half
+            # of them break, so S_2 = 40 / (4 * 2) * 0.5 = 2.5 1/s.
+            d = 0.02 * 2 ** -1.25
+            e50 = 100 * (1 + 0.005 / d)
+            counts = np.zeros((8, 1))
+            counts[2, 0] = 40
+            g.rates_from_impacts([0.5 * e50, 1.5 * e50], counts, [4] * 8, 2.0)
+            self.assertAlmostEqual(g.rates[2], 2.5, places=12)
+            self.assertEqual(g.rates[1], 0.0)  # no impacts
+            self.assertAlmostEqual(g.appearance[:, 2].sum(), 1.0, places=12)
+            g.set_jk(55, 0.9, TABLE)
+            with self.assertRaises(demill.InvalidValue) as cm:
+                g.rates_from_impacts([0.5 * e50, 1.5 * e50], counts, [4] * 8, 2.0)
+            self.assertIn("JKMRC", cm.exception.message)
 
     def test_errors_carry_the_message_and_change_nothing(self):
         with demill.Grinding(0.01, 4) as g:

@@ -13,6 +13,11 @@
  *   energy, and grows with repeated impacts (damage);
  * - the fraction passing and P80 of a two-class product, worked by hand;
  * - the specific energy power × time / mass;
+ * - rates from an impact spectrum: impacts of lognormally distributed
+ *   energy on particles of lognormally distributed fracture energy break
+ *   at the rate of the integral worked below in closed form, and the
+ *   appearance function is the breakage-weighted mean of the model's
+ *   columns at each bin's energy;
  * - every bad input gives its code and leaves the object as it was. */
 #include <stdlib.h>
 #include <string.h>
@@ -431,6 +436,132 @@ START_TEST(bad_input_changes_nothing)
 }
 END_TEST
 
+/* Φ, the standard normal distribution function. */
+static double phi_n(double z)
+{
+    return 0.5 * erfc(-z / sqrt(2.0));
+}
+
+START_TEST(rates_from_impacts)
+{
+    enum { N = 8, BINS = 4000 };
+    demill_grinding *g;
+    ck_assert_int_eq(demill_grinding_create(0.02, N, &g), DEMILL_OK);
+    /* E∞ 100 J/kg, d0 5 mm, φ 1, σ 0.8, A' 30 % (t10 stays in the table) */
+    const double sigma = 0.8, spread = 0.6, time = 2.0;
+    G_OK(g, demill_grinding_set_tavares(g, 100, 0.005, 1, sigma, 0, 5, 30, 1, 3, table));
+    /* Class i: C_i = 1000 (i + 1) impacts on N_i = 10 + i particles in 2 s,
+     * their specific energies lognormal, median m_i = 50 (i + 1) J/kg and
+     * spread 0.6 in ln E; the counts of 4000 logarithmic bins from 0.01 to
+     * 1e5 J/kg are C_i times the distribution's mass in each. */
+    static double edges[BINS + 1], counts[N * BINS];
+    double particles[N];
+    for (int k = 0; k <= BINS; k++)
+        edges[k] = 0.01 * pow(1e7, (double)k / BINS);
+    for (int i = 0; i < N; i++) {
+        double c = 1000.0 * (i + 1), m = 50.0 * (i + 1);
+        particles[i] = 10 + i;
+        for (int k = 0; k < BINS; k++)
+            counts[i * BINS + k] =
+                c * (phi_n(log(edges[k + 1] / m) / spread) - phi_n(log(edges[k] / m) / spread));
+    }
+    G_OK(g, demill_grinding_rates_from_impacts(g, N, BINS, edges, counts, particles, time));
+    double s[N];
+    G_OK(g, demill_grinding_rates(g, s, N, NULL));
+    /* By hand: an impact of energy E breaks a particle of fracture energy
+     * E_f <= E. With ln E ~ N(ln m, s²) and ln E_f ~ N(ln E50, σ²)
+     * independent, ln E_f - ln E ~ N(ln E50 - ln m, σ² + s²), so
+     * P(break) = Φ(ln(m/E50) / √(σ² + s²)), and S_i = C_i/(N_i T) P, with
+     * E50 = E∞ (1 + d0/d) at the class's geometric mean size d. */
+    for (int i = 0; i < N - 1; i++) {
+        double d = 0.02 * pow(2.0, -0.5 * i - 0.25), e50 = 100.0 * (1.0 + 0.005 / d);
+        double p = phi_n(log(50.0 * (i + 1) / e50) / sqrt(sigma * sigma + spread * spread));
+        double want = 1000.0 * (i + 1) / ((10 + i) * time) * p;
+        ck_assert_msg(fabs(s[i] - want) <= 1e-5 * want, "S_%d = %.10g 1/s, by hand %.10g", i,
+                      s[i], want);
+    }
+    ck_assert(s[N - 1] == 0.0); /* the sink does not break */
+
+    /* Appearance: impacts in two bins only, at 150 and 400 J/kg (the bins'
+     * midpoints), on class j. Column j is the mean of the model's columns
+     * at those two energies (demill_grinding_set_appearance_energy on a
+     * second object), weighted by each bin's breakage rate c/(N T) Φ(ln(E/E50)/σ). */
+    double e2[3] = {100, 200, 600}, c2[N * 2] = {0}, b[N * N], b1[N * N], b2[N * N];
+    demill_grinding *h;
+    ck_assert_int_eq(demill_grinding_create(0.02, N, &h), DEMILL_OK);
+    G_OK(h, demill_grinding_set_tavares(h, 100, 0.005, 1, sigma, 0, 5, 30, 1, 3, table));
+    G_OK(h, demill_grinding_set_appearance_energy(h, 150));
+    G_OK(h, demill_grinding_appearance(h, b1, N * N, NULL));
+    G_OK(h, demill_grinding_set_appearance_energy(h, 400));
+    G_OK(h, demill_grinding_appearance(h, b2, N * N, NULL));
+    for (int j = 0; j < N; j++) {
+        c2[j * 2] = 30;
+        c2[j * 2 + 1] = 10;
+    }
+    G_OK(g, demill_grinding_rates_from_impacts(g, N, 2, e2, c2, particles, time));
+    G_OK(g, demill_grinding_appearance(g, b, N * N, NULL));
+    for (int j = 0; j < N - 1; j++) {
+        double d = 0.02 * pow(2.0, -0.5 * j - 0.25), e50 = 100.0 * (1.0 + 0.005 / d);
+        double w1 = 30 * phi_n(log(150 / e50) / sigma), w2 = 10 * phi_n(log(400 / e50) / sigma);
+        double sum = 0;
+        for (int i = 0; i < N; i++) {
+            double want = (w1 * b1[i * N + j] + w2 * b2[i * N + j]) / (w1 + w2);
+            ck_assert_msg(fabs(b[i * N + j] - want) <= 1e-14, "b[%d][%d] = %.15g, by hand %.15g",
+                          i, j, b[i * N + j], want);
+            sum += b[i * N + j];
+        }
+        ck_assert_msg(fabs(sum - 1) <= 1e-12, "column %d sums to %.15g", j, sum);
+    }
+    /* the rates and appearance are accepted back as a user's */
+    G_OK(g, demill_grinding_set_appearance(g, N * N, b));
+    demill_grinding_destroy(h);
+    demill_grinding_destroy(g);
+}
+END_TEST
+
+START_TEST(rates_from_impacts_refused)
+{
+    enum { N = 6 };
+    demill_grinding *g;
+    ck_assert_int_eq(demill_grinding_create(0.01, N, &g), DEMILL_OK);
+    double e[3] = {0, 100, 300}, c[N * 2] = {5, 1, 4, 2, 3, 3, 2, 4, 1, 5, 9, 9};
+    double np[N] = {10, 10, 10, 10, 10, 0}; /* the sink's impacts are not used */
+    /* no model, then the JKMRC model, which gives no breakage probability */
+    ck_assert_int_eq(demill_grinding_rates_from_impacts(g, N, 2, e, c, np, 1),
+                     DEMILL_ERR_INVALID_VALUE);
+    G_OK(g, demill_grinding_set_jk(g, 55, 0.9, 3, table));
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, e, c, np, 1), DEMILL_ERR_INVALID_VALUE);
+    demill_grinding_rates_from_impacts(g, N, 2, e, c, np, 1);
+    ck_assert_ptr_nonnull(strstr(demill_grinding_last_error(g), "JKMRC"));
+    G_OK(g, demill_grinding_set_tavares(g, 100, 0.005, 1, 0.8, 0, 5, 30, 1, 3, table));
+    G_OK(g, demill_grinding_rates_from_impacts(g, N, 2, e, c, np, 1));
+    /* wrong class count, no bins, NULL, time <= 0 or NaN, edges out of
+     * order, a negative count, impacts on a class without particles */
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N - 1, 2, e, c, np, 1),
+            DEMILL_ERR_INVALID_VALUE);
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 0, e, c, np, 1), DEMILL_ERR_INVALID_VALUE);
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, NULL, c, np, 1),
+            DEMILL_ERR_NULL_POINTER);
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, e, c, np, 0), DEMILL_ERR_INVALID_VALUE);
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, e, c, np, NAN), DEMILL_ERR_NOT_FINITE);
+    double bad_e[3] = {0, 300, 100}, bad_c[N * 2], bad_np[N] = {10, 0, 10, 10, 10, 0};
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, bad_e, c, np, 1),
+            DEMILL_ERR_INVALID_VALUE);
+    memcpy(bad_c, c, sizeof bad_c);
+    bad_c[3] = -1;
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, e, bad_c, np, 1),
+            DEMILL_ERR_INVALID_VALUE);
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, e, c, bad_np, 1),
+            DEMILL_ERR_INVALID_VALUE);
+    /* a breaking bin whose t10 is beyond the table (A' 60 %, last row 30 %) */
+    G_OK(g, demill_grinding_set_tavares(g, 100, 0.005, 1, 0.8, 0, 5, 60, 1, 3, table));
+    double hot[3] = {0, 1e4, 1e5};
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, hot, c, np, 1),
+            DEMILL_ERR_INVALID_VALUE);
+    demill_grinding_destroy(g);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("grinding");
@@ -443,6 +574,8 @@ int main(void)
     tcase_add_test(tc, tavares_king);
     tcase_add_test(tc, passing_p80_and_energy);
     tcase_add_test(tc, bad_input_changes_nothing);
+    tcase_add_test(tc, rates_from_impacts);
+    tcase_add_test(tc, rates_from_impacts_refused);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }
