@@ -17,6 +17,7 @@
 #define DEMILL_DRUM_H
 
 #include "world.h"
+#include "grinding.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -310,6 +311,90 @@ DEMILL_API demill_status demill_drum_spectrum_start(demill_world *world, demill_
  *          DEMILL_ERR_BUFFER_TOO_SMALL. */
 DEMILL_API demill_status demill_drum_spectrum(demill_world *world, demill_id drum,
                                               uint64_t *counts, size_t capacity, size_t *count);
+
+/** Starts recording the impacts on the particles of one ore material,
+ *  beside the drum's collision spectrum, which must be recording
+ *  (demill_drum_spectrum_start(); starting that again ends this recording
+ *  too). Each collision of an ore particle (a contact, from touch to
+ *  release), with a particle or with any wall, counts as one impact on it,
+ *  of the specific energy it absorbed: the energy dissipated in the
+ *  collision times its share of the two bodies' compliances (1 − ν²)/E
+ *  (Young's modulus E and Poisson ratio ν of each body's material; a wall's
+ *  is its material's), divided by its mass. Two ore particles that collide
+ *  each count an impact. Impacts are counted per size class of the
+ *  particle, the classes of a grinding object (demill/grinding.h): class
+ *  k < classes − 1 holds diameters in (top/√2^(k+1), top/√2^k] (larger
+ *  ones go to class 0), the last everything finer; and per bin of specific
+ *  energy, `nbins` logarithmic bins from e_min to e_max J/kg (below and
+ *  above go to the first and last bin). Calling it again restarts the
+ *  impacts, the collision spectrum's counts kept. Memory: classes × nbins
+ *  counters; a run that does not record costs nothing more.
+ *  @param world    the world.
+ *  @param drum     the drum's id.
+ *  @param material the ore's material.
+ *  @param top_size the upper limit of class 0, m, > 0.
+ *  @param classes  the number of classes, 2 to 200.
+ *  @param nbins    the number of energy bins, 1 to 10000.
+ *  @param e_min    the lower edge of the first bin, J/kg, > 0.
+ *  @param e_max    the upper edge of the last bin, J/kg, > e_min, with
+ *                  log10(e_max) > log10(e_min).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_INVALID_VALUE (no collision spectrum recording, or a
+ *          value out of range) or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_drum_impacts_start(demill_world *world, demill_id drum,
+                                                   demill_id material, double top_size,
+                                                   uint32_t classes, uint32_t nbins, double e_min,
+                                                   double e_max);
+
+/** Reads the impacts on the ore's particles: a row of nbins counts per size
+ *  class, class 0 first, and the time over which they were recorded.
+ *  @param world       the world.
+ *  @param drum        the drum's id.
+ *  @param[out] counts capacity counters, or NULL to ask the count.
+ *  @param capacity    the number of counters `counts` can hold.
+ *  @param[out] count  receives classes × nbins (may be NULL if counts is
+ *                     not).
+ *  @param[out] time   receives the simulated time since the recording
+ *                     started, s; may be NULL.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_INVALID_VALUE (no impacts recorded) or
+ *          DEMILL_ERR_BUFFER_TOO_SMALL. */
+DEMILL_API demill_status demill_drum_impacts(demill_world *world, demill_id drum, uint64_t *counts,
+                                             size_t capacity, size_t *count, double *time);
+
+/** The number of the ore's particles in each size class of the impacts'
+ *  recording, now (the charge keeps its sizes: particles do not break in
+ *  the DEM).
+ *  @param world          the world.
+ *  @param drum           the drum's id.
+ *  @param[out] particles capacity counts, or NULL to ask the count.
+ *  @param capacity       the number of counts `particles` can hold.
+ *  @param[out] count     receives the number of classes (may be NULL if
+ *                        particles is not).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_INVALID_VALUE (no impacts recorded) or
+ *          DEMILL_ERR_BUFFER_TOO_SMALL. */
+DEMILL_API demill_status demill_drum_impacts_particles(demill_world *world, demill_id drum,
+                                                       uint64_t *particles, size_t capacity,
+                                                       size_t *count);
+
+/** Sets a grinding object's rates and appearance function from the impacts
+ *  a drum recorded: demill_grinding_rates_from_impacts() with the drum's
+ *  counts, its bins' edges (J/kg), the ore's particles per class and the
+ *  recorded time. The recording's classes must be the object's (the same
+ *  top size and number of classes). Errors of the world and the drum write
+ *  the world's message; those of the grinding object and of its rates the
+ *  object's (demill_grinding_last_error()).
+ *  @param grinding the grinding object, with Tavares and King's model.
+ *  @param world    the world.
+ *  @param drum     the drum's id.
+ *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER or DEMILL_ERR_INVALID_HANDLE
+ *          (grinding or world), DEMILL_ERR_INVALID_VALUE (no impacts
+ *          recorded, classes that do not match, no time recorded, or an
+ *          error of demill_grinding_rates_from_impacts()) or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_grinding_rates_from_drum(demill_grinding *grinding,
+                                                         demill_world *world, demill_id drum);
 
 /** Steps the world until the charge has settled: until the kinetic energy per
  *  particle falls below `energy_per_particle`, or `max_time` of simulated

@@ -89,13 +89,15 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 /* ---- the bytes of a state --------------------------------------------------- */
 
 #define CK_MAGIC "DEMILLCK"
-#define CK_FORMAT 1u          /* the format this library writes and the newest it reads */
+#define CK_FORMAT 2u          /* the format this library writes and the newest it reads;
+                                 2 adds the impacts on an ore to the drum's spectrum */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
 /* The walk over a state's fields, writing them out or reading them in. */
 typedef struct io {
     bool reading;
+    uint32_t format;   /* the format version read or written */
     uint8_t *buf;      /* writing: the bytes so far */
     size_t n, cap;
     const uint8_t *in; /* reading: the bytes still to read */
@@ -356,6 +358,19 @@ static void transfer_drum(io *s, dm_drum *d, int dim)
     io_f64(s, &sp->log_min, 1);
     io_f64(s, &sp->log_span, 1);
     io_f64_array(s, &sp->edges, sp->nclasses - 1, sp->nclasses - 1);
+    if (s->format >= 2) {
+        io_u32(s, &sp->ore, 1);
+        if (sp->ore) {
+            io_count(s, &sp->ore_classes, 200, "impact size classes");
+            io_count(s, &sp->ore_bins, 10000, "impact energy bins");
+            io_f64(s, &sp->ore_top, 1);
+            io_f64(s, &sp->ore_log_min, 1);
+            io_f64(s, &sp->ore_log_span, 1);
+            io_f64(s, &sp->ore_t0, 1);
+        }
+    }
+    if (s->status)
+        return;
     const size_t counters = dm_spectrum_counters(sp);
     io_array(s, &sp->counts, counters, counters, sizeof *sp->counts);
 }
@@ -685,6 +700,9 @@ static demill_status check_drum(demill_world *t)
     bool ok = isfinite(sp->log_min) && isfinite(sp->log_span) && sp->log_span > 0;
     for (uint32_t k = 0; k + 1 < sp->nclasses; k++)
         ok &= isfinite(sp->edges[k]) && sp->edges[k] > 0 && (!k || sp->edges[k] > sp->edges[k - 1]);
+    if (sp->ore)
+        ok &= sp->ore <= t->nmat && sp->ore_classes >= 2 && sp->ore_bins >= 1 &&
+              sp->ore_top > 0 && isfinite(sp->ore_log_min) && sp->ore_log_span > 0;
     return ok ? DEMILL_OK : dm_fail(t, DEMILL_ERR_FORMAT, "the collision spectrum's classes");
 }
 
@@ -733,7 +751,7 @@ static uint32_t crc32_of(const uint8_t *p, size_t n)
 /* The checkpoint of w, in a new buffer (*bytes of it). */
 static demill_status encode(demill_world *w, uint8_t **out, size_t *bytes)
 {
-    io s = {.reading = false};
+    io s = {.reading = false, .format = CK_FORMAT};
     uint8_t header[CK_HEADER] = {0};
     io_bytes(&s, header, sizeof header);
     transfer(&s, w);
@@ -788,7 +806,7 @@ static demill_status decode(demill_world *t, const uint8_t *b, size_t size)
     if (sum != crc)
         return dm_fail(t, DEMILL_ERR_FORMAT, "corrupt: checksum 0x%08x, the header says 0x%08x",
                        sum, crc);
-    io s = {.reading = true, .in = b + CK_HEADER, .left = payload};
+    io s = {.reading = true, .format = format, .in = b + CK_HEADER, .left = payload};
     transfer(&s, t);
     if (!s.status && s.left)
         io_fail(&s, DEMILL_ERR_FORMAT, "%zu bytes after the end", s.left);

@@ -109,6 +109,12 @@ PROTOTYPES = {
     "demill_drum_spectrum_start": (status, (WorldP, id_t, c_size_t, dptr, c_uint32, c_double,
                                             c_double)),
     "demill_drum_spectrum": (status, (WorldP, id_t, POINTER(c_uint64), c_size_t, sizeptr)),
+    "demill_drum_impacts_start": (status, (WorldP, id_t, id_t, c_double, c_uint32, c_uint32,
+                                           c_double, c_double)),
+    "demill_drum_impacts": (status, (WorldP, id_t, POINTER(c_uint64), c_size_t, sizeptr, dptr)),
+    "demill_drum_impacts_particles": (status, (WorldP, id_t, POINTER(c_uint64), c_size_t,
+                                               sizeptr)),
+    "demill_grinding_rates_from_drum": (status, (GrindingP, WorldP, id_t)),
     "demill_world_settle": (status, (WorldP, c_double, c_double, POINTER(c_int32))),
 }
 

@@ -123,6 +123,35 @@ class Drum(Handle, Keyed):
         counts = read_counted(call, 1, np.uint64)
         return counts if nbins is None else counts.reshape(-1, nbins)
 
+    def impacts_start(self, material, top_size, classes, nbins, e_min, e_max):
+        """Starts (or restarts) recording the impacts on the particles of
+        one ore ``material`` (the collision spectrum must be recording:
+        :meth:`spectrum_start`): per size class of a grinding object
+        (``classes`` in a √2 series below ``top_size`` m) and per
+        logarithmic bin of specific energy, ``nbins`` from ``e_min`` to
+        ``e_max`` J/kg (``demill_drum_impacts_start``)."""
+        self.world._call("demill_drum_impacts_start", self.id, as_id(material),
+                         float(top_size), count(classes, "classes"), count(nbins, "nbins"),
+                         float(e_min), float(e_max))
+
+    def impacts(self):
+        """The impacts recorded: ``(counts, time)``, counts a uint64 array
+        of one row of bins per size class, time the seconds recorded."""
+        time = ctypes.c_double()
+
+        def call(buf, capacity, n):
+            self.world._call("demill_drum_impacts", self.id, buf, capacity, n,
+                             ctypes.byref(time))
+        counts = read_counted(call, 1, np.uint64)
+        classes = self.impacts_particles().size
+        return counts.reshape(classes, -1), time.value
+
+    def impacts_particles(self):
+        """The ore's particles in each size class of the impacts' recording."""
+        def call(buf, capacity, n):
+            self.world._call("demill_drum_impacts_particles", self.id, buf, capacity, n)
+        return read_counted(call, 1, np.uint64)
+
 
 class Lifter:
     """One lifter bar of a drum (:meth:`Drum.lifter`)."""

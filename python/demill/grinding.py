@@ -162,6 +162,16 @@ class Grinding:
         self._call("demill_grinding_rates_from_impacts", c.shape[0], c.shape[1], ptr(e),
                    ptr(c), ptr(n), float(time))
 
+    def rates_from_drum(self, drum):
+        """Sets the rates and the appearance function from the impacts a
+        :class:`~demill.Drum` recorded (:meth:`~demill.Drum.impacts_start`),
+        whose classes must be this object's
+        (``demill_grinding_rates_from_drum``)."""
+        world = drum.world
+        code = lib.demill_grinding_rates_from_drum(self._handle, world._handle, drum.id)
+        if code != Status.OK:
+            check(code, self.last_error or world.last_error)
+
     # ---- grinding and the product ----------------------------------------
 
     def run(self, time):

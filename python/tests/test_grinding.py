@@ -83,6 +83,40 @@ class GrindingTest(unittest.TestCase):
                 g.rates_from_impacts([0.5 * e50, 1.5 * e50], counts, [4] * 8, 2.0)
             self.assertIn("JKMRC", cm.exception.message)
 
+    def test_rates_from_drum(self):
+        # Two ore balls of 10 mm meet head-on at 1 m/s in a drum, no
+        # gravity, restitution 0.5: each absorbs half of 0.375 m* v² with
+        # m* = m/2, 0.09375 J/kg, which lands in bin 49 of 100 from 1e-3 to
+        # 10 J/kg (log10 0.09375 = -1.028: (−1.028 + 3) / 4 × 100 = 49.3).
+        with demill.World(3) as w:
+            w.gravity = (0, 0, 0)
+            ore = w.material(density=2500)
+            w.pair(ore, ore, normal=demill.Normal.LINEAR, damping=demill.Damping.RESTITUTION,
+                   restitution=0.5)
+            drum = w.add_drum(ore, diameter=2.0, length=0.5)
+            drum.spectrum_start([], 4, 1e-6, 1e-2)
+            drum.impacts_start(ore, 0.02, 4, 100, 1e-3, 10)
+            w.particles.add(ore, [(-0.0055, 0, 0), (0.0055, 0, 0)], radii=0.005,
+                            velocities=[(0.5, 0, 0), (-0.5, 0, 0)])
+            w.step(400)
+            counts, time = drum.impacts()
+            self.assertEqual(counts.shape, (4, 100))
+            self.assertAlmostEqual(time, 400 * w.time_step, places=12)
+            np.testing.assert_array_equal(drum.impacts_particles(), [0, 0, 2, 0])
+            self.assertEqual(counts[2, 49], 2)
+            self.assertEqual(counts.sum(), 2)
+            with demill.Grinding(0.02, 4) as g:
+                with self.assertRaises(demill.InvalidValue) as cm:
+                    g.rates_from_drum(drum)  # no model
+                self.assertIn("model", cm.exception.message)
+                g.set_tavares(0.1, 0.005, 1, 0.8, 0, 5, 30, 1, TABLE)
+                g.rates_from_drum(drum)
+                # S_2 = 2 impacts / (2 particles × T) × P(bin 49's midpoint)
+                lo, hi = 10 ** (-3 + 4 * 0.49), 10 ** (-3 + 4 * 0.50)
+                d = 0.02 * 2 ** -1.25
+                p = g.broken_fraction(d, 0.5 * (lo + hi))
+                self.assertAlmostEqual(g.rates[2], p / time, delta=1e-12 * p / time)
+
     def test_errors_carry_the_message_and_change_nothing(self):
         with demill.Grinding(0.01, 4) as g:
             g.set_feed([1, 1, 0, 0])

@@ -71,6 +71,7 @@ static demill_world *mill3d(int integrator)
     DM_OK(w, demill_particles_remove(w, 3, gone));
     const double edges[2] = {0.0055, 0.0058};
     DM_OK(w, demill_drum_spectrum_start(w, drum, 2, edges, 20, 1e-9, 1e-3));
+    DM_OK(w, demill_drum_impacts_start(w, drum, balls, 0.012, 4, 30, 1e-6, 1e2));
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_RAMP_TIME, 0.05));
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_SPEED_FRACTION, 0.75));
     return w;
@@ -392,9 +393,9 @@ START_TEST(truncated_and_corrupt_checkpoints_are_refused)
                 "a corrupted byte");
     }
     memcpy(bad, good.b, good.n);
-    const uint32_t newer = 2;
+    const uint32_t newer = 3;
     memcpy(bad + 8, &newer, 4);
-    refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "format version 2", "a newer format");
+    refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "format version 3", "a newer format");
     memcpy(bad, good.b, good.n);
     memcpy(bad + good.n, "trailing", 8);
     refused(target, before, bad, good.n + 8, DEMILL_ERR_FORMAT, "trailing", "trailing bytes");

@@ -64,11 +64,17 @@ typedef void (*dm_contact_visitor)(void *ctx, const dm_contact_eval *c);
 void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void *ctx);
 
 /* ---- the collision spectrum (spectrum.c) ---------------------------------------------- */
-/* Counts one collision: particles i and j (storage slots), or particle i and
- * a wall of the given DEMILL_SPECTRUM_* kind (j unused, kind >= 0). */
-void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall_kind, double energy);
-/* The number of counters of a spectrum. */
+/* Counts one collision that dissipated `energy`: particles i and j (storage
+ * slots), or particle i and wall slot `wall` (j unused, wall >= 0; only the
+ * drum's walls enter the collision spectrum, every wall the ore's impacts). */
+void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall, double energy);
+/* The number of counters of a spectrum: its collisions' and the ore's. */
 size_t dm_spectrum_counters(const dm_spectrum *sp);
+/* The number of the collisions' counters alone (the ore's come after). */
+size_t dm_spectrum_collision_counters(const dm_spectrum *sp);
+/* The ore size class of a diameter: k with top/√2^(k+1) < d <= top/√2^k,
+ * 0 above the top, the last class below its limit. */
+uint32_t dm_spectrum_ore_class(const dm_spectrum *sp, double diameter);
 void dm_spectrum_free(demill_world *w);
 
 #endif /* DM_CONTACT_H */

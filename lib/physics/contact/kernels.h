@@ -550,11 +550,8 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
                     h[HSL] += absorbed * dt_hist;
             }
         }
-        if (EV && h[HSL] > 0.0 && wall->drum_part)
-            dm_spectrum_record(w, i, 0,
-                               wall->drum_part == DM_PART_LIFTER ? DEMILL_SPECTRUM_LIFTER
-                                                                 : DEMILL_SPECTRUM_SHELL,
-                               h[HSL]);
+        if (EV && h[HSL] > 0.0)
+            dm_spectrum_record(w, i, 0, (int)b->j[k], h[HSL]);
         for (int c = 0; c < HS; c++)
             h[c] = 0.0;
         on[k] = 0;

@@ -220,7 +220,14 @@ typedef struct dm_spectrum {
     uint32_t nclasses, nbins;
     double *edges;          /* nclasses - 1 increasing diameters */
     double log_min, log_span;
-    uint64_t *counts;       /* rows × nbins */
+    uint64_t *counts;       /* rows × nbins, then the ore's impacts */
+    /* The impacts on particles of one ore material (demill_drum_impacts_start):
+     * ore_classes × ore_bins counters after the collisions' in counts. */
+    uint32_t ore;           /* the ore's material slot + 1; 0: not recorded */
+    uint32_t ore_classes, ore_bins;
+    double ore_top;         /* √2 size classes below this diameter, m */
+    double ore_log_min, ore_log_span; /* log10 of the bins' range, J/kg */
+    double ore_t0;          /* the world's time when the recording started */
 } dm_spectrum;
 
 typedef struct dm_drum {
