@@ -7,7 +7,9 @@
  * two revolutions at 75 % of critical speed. --scene drum3d and --scene
  * drum2d run the canonical scenes exactly, as docs/scenes.md defines them. Writes a time series, a
  * summary, VTK files for ParaView and two pictures to the output folder;
- * progress goes to stderr. Run `mill --help` for the options.
+ * progress goes to stderr. With --ore FILE, ore joins the charge and the
+ * mill also writes the product of grinding it (ore.c). Run `mill --help`
+ * for the options.
  */
 #define _POSIX_C_SOURCE 200809L /* mkdir, clock_gettime, isatty */
 
@@ -25,7 +27,8 @@
 #define PI 3.14159265358979323846
 
 typedef struct options {
-    const char *scene, *out;
+    const char *scene, *out, *ore;
+    double grind_minutes;
     int dim, lifters, threads;
     double diameter, length, speed, fill, radius, lifter_height, revolutions, dt, vtk_every;
     size_t particles; /* scenes: a fixed packing */
@@ -55,6 +58,12 @@ static void usage(FILE *f)
           "  --vtk-every T        seconds between VTK frames, 0 for none [0.1]\n"
           "  --threads N          threads; the results are the same for any number [1]\n"
           "  --out DIR            output folder [mill-out]\n"
+          "  --ore FILE           add ore to the charge (the file's format: docs/grinding.md),\n"
+          "                       record its impacts over the last revolution, and from them\n"
+          "                       grind it: writes product.csv and product.png, and P80 and\n"
+          "                       kWh/t to summary.txt. The coupling is one way: the DEM charge\n"
+          "                       keeps its balls and its ore at the feed's sizes\n"
+          "  --grind-minutes M    grinding time of the product with --ore, minutes [10]\n"
           "  --help               this text\n",
           f);
 }
@@ -74,7 +83,7 @@ static int parse_number(const char *opt, const char *text, double lo, double hi,
 
 static int parse_options(int argc, char **argv, options *o)
 {
-    *o = (options){.scene = "default", .out = "mill-out", .dim = 3, .lifters = 8, .threads = 1,
+    *o = (options){.scene = "default", .out = "mill-out", .grind_minutes = 10, .dim = 3, .lifters = 8, .threads = 1,
                    .diameter = 0.3, .length = 0.1, .speed = 75, .fill = 0, .radius = 0.005,
                    .lifter_height = 0.015, .revolutions = 2, .dt = 1e-5, .vtk_every = 0.1,
                    .mass = 10000 * 8.8216e-4};
@@ -95,6 +104,11 @@ static int parse_options(int argc, char **argv, options *o)
             o->scene = v;
         } else if (!strcmp(a, "--out")) {
             o->out = v;
+        } else if (!strcmp(a, "--ore")) {
+            o->ore = v;
+        } else if (!strcmp(a, "--grind-minutes")) {
+            if (parse_number(a, v, 1e-6, 1e6, &o->grind_minutes))
+                return -1;
         } else if (!strcmp(a, "--dim")) {
             if (parse_number(a, v, 2, 3, &x) || (x != 2 && x != 3)) {
                 fprintf(stderr, "mill: --dim takes 2 or 3\n");
@@ -150,7 +164,8 @@ static int parse_options(int argc, char **argv, options *o)
     if (strcmp(o->scene, "default")) {
         if (geometry) {
             fprintf(stderr, "mill: --scene %s is fixed (docs/scenes.md); only --revolutions, "
-                            "--vtk-every, --threads and --out may be given with it\n",
+                            "--vtk-every, --threads, --out, --ore and --grind-minutes may be given "
+                            "with it\n",
                     o->scene);
             return -1;
         }
@@ -270,6 +285,9 @@ int main(int argc, char **argv)
                 DEMILL_VERSION_STRING, demill_version_string());
         return EXIT_FAILURE;
     }
+    ore_def ore;
+    if (o.ore && ore_read(o.ore, &ore))
+        return EXIT_FAILURE;
     if (mkdir(o.out, 0777) && errno != EEXIST) {
         perror(o.out);
         return EXIT_FAILURE;
@@ -322,6 +340,11 @@ int main(int argc, char **argv)
             mass += m[k];
         free(m);
     }
+    /* the ore, after the balls have been weighed */
+    demill_id ore_mat = 0;
+    size_t n_ore = 0;
+    if (o.ore && ore_add(w, steel, drum, &ore, &ore_mat, &n_ore))
+        return EXIT_FAILURE;
 
     /* settle 0.3 s at rest, then turn */
     const double settle = 0.3;
@@ -331,9 +354,9 @@ int main(int argc, char **argv)
     const uint64_t vtk_steps = o.vtk_every > 0 ? (uint64_t)fmax(1, round(o.vtk_every / o.dt)) : 0;
     const double total_time = settle + (period > 0 ? o.revolutions * period : 1.0);
     const uint64_t total_steps = (uint64_t)ceil(total_time / o.dt);
-    fprintf(stderr, "mill: %s, %dD, %zu balls (%.3f kg) in a %.3f m drum, %d lifters, %.0f %% of "
-                    "critical (%.4f rad/s), %.0f revolutions, about %llu steps\n",
-            o.scene, o.dim, n, mass, o.diameter, o.lifters, o.speed, omega, o.revolutions,
+    fprintf(stderr, "mill: %s, %dD, %zu balls (%.3f kg) and %zu ore particles in a %.3f m drum, %d "
+                    "lifters, %.0f %% of critical (%.4f rad/s), %.0f revolutions, about %llu steps\n",
+            o.scene, o.dim, n, mass, n_ore, o.diameter, o.lifters, o.speed, omega, o.revolutions,
             (unsigned long long)total_steps);
 
     char path[4096];
@@ -358,7 +381,7 @@ int main(int argc, char **argv)
     int contact_samples = 0, turning = 0;
     const double t_step0 = now();
     const int tty = isatty(fileno(stderr));
-    progress bar = {.w = w, .drum = drum, .total = total_steps, .particles = n,
+    progress bar = {.w = w, .drum = drum, .total = total_steps, .particles = n + n_ore,
                     .last = t_step0, .every = tty ? 0.25 : 10.0, .tty = tty};
     check(demill_world_set_progress(w, show_progress, &bar, sample), "demill_world_set_progress");
     while (period > 0 ? drum_value(w, drum, DEMILL_DRUM_REVOLUTIONS) < o.revolutions
@@ -373,8 +396,11 @@ int main(int argc, char **argv)
         check(demill_world_get(w, DEMILL_WORLD_TIME, &t), "time");
         /* the measurement revolution is the last one */
         const uint64_t rev = (uint64_t)drum_value(w, drum, DEMILL_DRUM_REVOLUTIONS);
-        if (turning && isnan(t_rev_start) && rev + 1 >= (uint64_t)o.revolutions)
+        if (turning && isnan(t_rev_start) && rev + 1 >= (uint64_t)o.revolutions) {
             t_rev_start = t;
+            if (o.ore && ore_record(w, drum, ore_mat, &ore))
+                return EXIT_FAILURE;
+        }
         if (rev >= (uint64_t)o.revolutions)
             t_rev_end = t;
         /* contacts per particle over the measurement revolution, every 1000 steps */
@@ -447,6 +473,20 @@ int main(int argc, char **argv)
     if (draw_power(path, row_t, smooth, nrows, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
                    isnan(t_rev_end) ? t : t_rev_end))
         return EXIT_FAILURE;
+    ore_result ground;
+    if (o.ore) {
+        if (ore_grind(w, drum, &ore, o.grind_minutes, mean_power, &ground))
+            return EXIT_FAILURE;
+        snprintf(path, sizeof path, "%s/product.csv", o.out);
+        if (ore_write_csv(path, &ground))
+            return EXIT_FAILURE;
+        snprintf(title, sizeof title,
+                 "libdemill %s mill: %.4g kg of ore ground %.4g min at %.2f W, %.3g kWh/t",
+                 o.scene, ore.mass, o.grind_minutes, mean_power, ground.kwh_t);
+        snprintf(path, sizeof path, "%s/product.png", o.out);
+        if (draw_product(path, &ground, title))
+            return EXIT_FAILURE;
+    }
     snprintf(path, sizeof path, "%s/summary.txt", o.out);
     FILE *sum = fopen(path, "w");
     if (!sum) {
@@ -469,7 +509,13 @@ int main(int argc, char **argv)
             drum_value(w, drum, DEMILL_DRUM_SHOULDER_ANGLE_MEAN) * 180 / PI,
             drum_value(w, drum, DEMILL_DRUM_COM_ANGLE_MEAN) * 180 / PI,
             contact_samples ? contacts_sum / contact_samples : NAN, (unsigned long long)steps,
-            o.dt, t, wall, steps * (double)n / (t_step1 - t_step0));
+            o.dt, t, wall, steps * (double)(n + n_ore) / (t_step1 - t_step0));
+    if (o.ore)
+        fprintf(sum, "ore_particles = %zu\nore_mass_kg = %.6g\ngrind_minutes = %.6g\n"
+                     "F80_m = %.6g\nP80_m = %.6g\nspecific_energy_kWh_t = %.6g\n"
+                     "bond_work_index_kWh_t = %.6g\nbond_specific_energy_kWh_t = %.6g\n",
+                n_ore, ore.mass, o.grind_minutes, ground.f80, ground.p80, ground.kwh_t, ore.bond_wi,
+                ground.bond_kwh_t);
     if (fclose(sum)) {
         fprintf(stderr, "mill: error writing summary.txt\n");
         return EXIT_FAILURE;

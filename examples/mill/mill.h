@@ -4,6 +4,7 @@
 #define MILL_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include <demill.h>
@@ -48,5 +49,43 @@ typedef struct drum_shape {
 int draw_charge(const char *path, demill_world *w, const drum_shape *d, const char *title);
 int draw_power(const char *path, const double *t, const double *p, size_t n, double mean,
                double mean_from, double mean_to);
+
+/* The ore of --ore (ore.c): read from a file (docs/grinding.md, mill --ore). */
+#define ORE_MAX_FEED 32
+#define ORE_MAX_ROWS 100
+typedef struct ore_def {
+    double density, youngs, poisson; /* the DEM material */
+    double mass;                     /* kg of ore in the charge */
+    size_t nfeed;
+    double feed[2 * ORE_MAX_FEED];   /* (diameter m, mass fraction) pairs */
+    double top;                      /* the grinding classes: below top, m, */
+    uint32_t classes;                /* this many */
+    double tk[8];                    /* Tavares and King: E∞ d0 φ σ Emax/E50 γ A' b' */
+    size_t rows;
+    double table[6 * ORE_MAX_ROWS];  /* t-family: t10 t2 t4 t25 t50 t75 */
+    double bond_wi;                  /* Bond work index, kWh/t; 0 if not given */
+} ore_def;
+
+/* What the grinding gave (ore_grind, ore_write_csv). */
+typedef struct ore_result {
+    uint32_t n;
+    double limits[201], rates[200], feed[200], product[200];
+    double feed_passing[200], product_passing[200]; /* at each class's upper limit */
+    double f80, p80, kwh_t, bond_kwh_t;
+} ore_result;
+
+/* Each returns 0, or -1 with a message on stderr. */
+int ore_read(const char *path, ore_def *ore);
+/* Adds the ore material (the balls' contact laws) and fills its mass. */
+int ore_add(demill_world *w, demill_id steel, demill_id drum, const ore_def *ore, demill_id *mat,
+            size_t *added);
+/* Starts recording the impacts on the ore. */
+int ore_record(demill_world *w, demill_id drum, demill_id mat, const ore_def *ore);
+/* Rates from the impacts, the batch grinding for `minutes`, P80 and kWh/t
+ * at the mean `power`, W. */
+int ore_grind(demill_world *w, demill_id drum, const ore_def *ore, double minutes, double power,
+              ore_result *out);
+int ore_write_csv(const char *path, const ore_result *r);
+int draw_product(const char *path, const ore_result *r, const char *title);
 
 #endif

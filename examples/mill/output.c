@@ -1,6 +1,7 @@
 /* output.c: the pictures the mill example draws with cairo (the charge in
- * cross-section coloured by speed, and the power draw against time); its VTK
- * files come from the library (demill/vtk.h). */
+ * cross-section coloured by speed, the power draw against time and, with
+ * --ore, the feed's and product's size distributions); its VTK files come
+ * from the library (demill/vtk.h). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -254,6 +255,83 @@ int draw_power(const char *path, const double *t, const double *pw, size_t n, do
     cairo_show_text(cr, "time [s]");
     cairo_move_to(cr, l, 32);
     cairo_show_text(cr, "power draw P = -T ω [W], 10 ms running mean");
+#undef PX
+#undef PY
+    cairo_destroy(cr);
+    return save_png(s, path);
+}
+
+int draw_product(const char *path, const ore_result *r, const char *title)
+{
+    const int wd = 1000, ht = 560, l = 80, r_ = 30, tp = 60, bt = 60;
+    /* the log size axis over the classes' limits but the sink's 0 */
+    const double lx0 = log10(r->limits[r->n - 1]), lx1 = log10(r->limits[0]);
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, wd, ht);
+    cairo_t *cr = cairo_create(s);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    const double sx = (wd - l - r_) / (lx1 - lx0), sy = (ht - tp - bt) / 100.0;
+#define PX(lx) (l + ((lx) - lx0) * sx)
+#define PY(pp) (ht - bt - (pp) * sy)
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, 13);
+    cairo_set_line_width(cr, 1);
+    char label[96];
+    /* decades and 2, 5 within them, in mm */
+    for (double dec = floor(lx0); dec <= lx1; dec += 1)
+        for (int m = 1; m <= 5; m += m == 1 ? 1 : 3) {
+            const double lx = dec + log10(m);
+            if (lx < lx0 - 1e-9 || lx > lx1 + 1e-9)
+                continue;
+            cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+            cairo_move_to(cr, PX(lx), tp);
+            cairo_line_to(cr, PX(lx), ht - bt);
+            cairo_stroke(cr);
+            cairo_set_source_rgb(cr, 0, 0, 0);
+            snprintf(label, sizeof label, "%g", 1e3 * pow(10, lx));
+            cairo_move_to(cr, PX(lx) - 8, ht - bt + 18);
+            cairo_show_text(cr, label);
+        }
+    for (int pk = 0; pk <= 100; pk += 20) {
+        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+        cairo_move_to(cr, l, PY(pk));
+        cairo_line_to(cr, wd - r_, PY(pk));
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        snprintf(label, sizeof label, "%d", pk);
+        cairo_move_to(cr, l - 35, PY(pk) + 4);
+        cairo_show_text(cr, label);
+    }
+    /* the curves through (upper limit, passing) of every class but the sink */
+    const double colour[2][3] = {{0.45, 0.45, 0.45}, {0.13, 0.37, 0.66}};
+    for (int c = 0; c < 2; c++) {
+        const double *p = c ? r->product_passing : r->feed_passing;
+        cairo_set_source_rgb(cr, colour[c][0], colour[c][1], colour[c][2]);
+        cairo_set_line_width(cr, 2.2);
+        for (uint32_t k = 0; k < r->n; k++) {
+            const double x = PX(log10(r->limits[k])), y = PY(100 * p[k]);
+            if (k == 0)
+                cairo_move_to(cr, x, y);
+            else
+                cairo_line_to(cr, x, y);
+        }
+        cairo_stroke(cr);
+        cairo_move_to(cr, l + 20, tp + 22 + 20 * c);
+        snprintf(label, sizeof label, c ? "product: P80 %.3g mm" : "feed: F80 %.3g mm",
+                 1e3 * (c ? r->p80 : r->f80));
+        cairo_show_text(cr, label);
+    }
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1.5);
+    cairo_rectangle(cr, l, tp, wd - l - r_, ht - tp - bt);
+    cairo_stroke(cr);
+    cairo_set_font_size(cr, 15);
+    cairo_move_to(cr, wd / 2 - 40, ht - 15);
+    cairo_show_text(cr, "size [mm], log scale");
+    cairo_move_to(cr, l, 25);
+    cairo_show_text(cr, title);
+    cairo_move_to(cr, l, 47);
+    cairo_show_text(cr, "cumulative mass passing [%]");
 #undef PX
 #undef PY
     cairo_destroy(cr);
