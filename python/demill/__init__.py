@@ -35,8 +35,8 @@ from .world import Progress, TimeStep, World
 __version__ = VERSION_STRING
 __all__ = (constants.__all__ + errors.__all__ + [
     "World", "Material", "Pair", "Particle", "Particles", "Wall", "Contacts", "Drum", "Lifter",
-    "Snapshot", "VtkSeries", "Grinding", "Progress", "TimeStep", "ParamInfo", "library_path", "version",
-    "version_number", "check_version", "id_kind", "param_info", "particle_field_size",
+    "Snapshot", "VtkSeries", "Grinding", "Progress", "TimeStep", "ParamInfo", "library_path",
+    "version", "version_number", "check_version", "id_kind", "param_info", "particle_field_size",
     "contact_field_size", "strerror"])
 
 

@@ -10,6 +10,28 @@ from .constants import Status
 from .errors import error_for
 
 
+class Closable:
+    """A C object freed exactly once, by ``self._finalizer``: ``closed``,
+    ``close()`` (again is harmless) and ``with`` blocks that close it."""
+
+    __slots__ = ()
+
+    @property
+    def closed(self):
+        """True once the C object is freed."""
+        return not self._finalizer.alive
+
+    def close(self):
+        """Frees the C object (again is harmless)."""
+        self._finalizer()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
 def strerror(code):
     """The library's generic text of a status code (``demill_strerror``)."""
     return lib.demill_strerror(int(code)).decode()

@@ -7,13 +7,13 @@ import weakref
 
 import numpy as np
 
-from ._core import check, doubles, ptr, read_counted, strerror
+from ._core import Closable, check, doubles, ptr, read_counted, strerror
 from ._lib import GrindingP, lib
 from .constants import Status
 from .errors import InvalidHandle
 
 
-class Grinding:
+class Grinding(Closable):
     """Size classes in a √2 series below ``top_size`` m (``classes`` of
     them, the last the sink of everything finer), a product, rates, an
     appearance function and an ore breakage model.
@@ -31,21 +31,6 @@ class Grinding:
         check(code, f"demill_grinding_create({top_size}, {classes}): {strerror(code)}")
         self._ptr = p
         self._finalizer = weakref.finalize(self, lib.demill_grinding_destroy, p)
-
-    @property
-    def closed(self):
-        """True once :meth:`close` has freed the object."""
-        return not self._finalizer.alive
-
-    def close(self):
-        """Frees the object (again is harmless)."""
-        self._finalizer()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
 
     @property
     def _handle(self):

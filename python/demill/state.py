@@ -6,10 +6,11 @@ import ctypes
 import os
 import weakref
 
+from ._core import Closable
 from ._lib import SnapshotP, VtkSeriesP, lib
 
 
-class _Owned:
+class _Owned(Closable):
     """A C object freed by ``free`` exactly once."""
 
     __slots__ = ("world", "_ptr", "_finalizer", "__weakref__")
@@ -20,25 +21,10 @@ class _Owned:
         self._ptr = pointer
         self._finalizer = weakref.finalize(self, free, pointer)
 
-    @property
-    def closed(self):
-        """True once freed."""
-        return not self._finalizer.alive
-
     def _handle(self):
         if self.closed:
             raise ValueError(f"the {self._what} is closed")
         return self._ptr
-
-    def close(self):
-        """Frees the C object (again is harmless)."""
-        self._finalizer()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
 
 
 class Snapshot(_Owned):

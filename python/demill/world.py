@@ -7,8 +7,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._core import (Keyed, Param, VectorParam, as_id, check, configure, ptr, read_counted,
-                    strerror, vector)
+from ._core import (Closable, Keyed, Param, VectorParam, as_id, check, configure, ptr,
+                    read_counted, strerror, vector)
 from ._lib import ProgressFn, WorldP, lib
 from .constants import Energy, Integrator, Kind, Status, WorldKey
 from .drum import Drum
@@ -49,7 +49,7 @@ def _flag(value):
     return bool(round(value))
 
 
-class World(Keyed):
+class World(Closable, Keyed):
     """A simulation world of dimension 2 or 3 that owns its materials,
     particles, walls and drum.
 
@@ -102,21 +102,10 @@ class World(Keyed):
 
     # ---- lifetime and calls ------------------------------------------------
 
-    @property
-    def closed(self):
-        """True once :meth:`close` has freed the world."""
-        return not self._finalizer.alive
-
     def close(self):
         """Frees the world and everything it owns (again is harmless)."""
-        self._finalizer()
+        super().close()
         self._progress = None
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
 
     def __repr__(self):
         if self.closed:
