@@ -27,7 +27,13 @@
  *     world DEMILL_ERR_INVALID_HANDLE; a failure on a world leaves a message;
  *   - bulk reads give as many items as there are, particles_read_ids the
  *     order of demill_world_ids(), progress reports the steps and time the
- *     documentation says, parameter bounds hold their defaults.
+ *     documentation says, parameter bounds hold their defaults;
+ *   - a grinding object (demill/grinding.h, one per input) is as its reads
+ *     (classes, rates, appearance, product, time, what its model gives)
+ *     showed it before a call that fails or reads, a call on NULL or on
+ *     what is not a live object fails as documented, a failure leaves a
+ *     message, and demill_grinding_run() keeps the mass within 1e-9
+ *     relative; no grinding call changes a world.
  * A violation prints what failed and aborts; DEMILL_FUZZ_TRACE=1 in the
  * environment prints every call with its arguments and status first.
  *
@@ -100,6 +106,8 @@ static struct {
     progress prog[2];
     buf before[2];    /* each world's checkpoint as the next call finds it */
     buf after, again; /* scratch */
+    demill_grinding *g;     /* the grinding object, or none */
+    buf gbefore, gafter;    /* its state before and after a call (grinding_state()) */
     char dir[64]; /* temporary directory for files */
     bool trace;
     unsigned long ops;
@@ -293,6 +301,7 @@ typedef struct call {
     bool watchdog;   /* the watchdog was on */
     bool skipped;    /* capped: the call was not made */
     bool other_handle; /* may fail with DEMILL_ERR_INVALID_HANDLE for another reason */
+    bool grinding_message; /* a failure may leave its message in the grinding object */
     int nnamed;
     demill_id named[NAMED_MAX];
     int named_kind[NAMED_MAX];
@@ -755,6 +764,7 @@ static void op_wall_get(call *c)
 }
 
 static void save(demill_world *w, buf *b, const char *what);
+static bool same(const buf *a, const buf *b);
 
 /* The number of contacts, asked as a user would (0 if the world cannot say),
  * to size the buffers of a read. The question (like one about the energy
@@ -1349,6 +1359,373 @@ static void op_stateless(call *c)
         fail("demill_world_last_error gave NULL");
 }
 
+/* ---- the drum's impacts and a grinding object ------------------------------ */
+
+static void op_impacts_start(call *c)
+{
+    const demill_id d = id_named(c, DEMILL_KIND_DRUM), m = id_named(c, DEMILL_KIND_MATERIAL);
+    const double top = num();
+    const uint64_t classes = count();
+    uint64_t bins = count();
+    if (bins > BINS_MAX && bins <= 10000)
+        bins %= BINS_MAX + 1;
+    const double e_min = num(), e_max = num();
+    trace("demill_drum_impacts_start(w, 0x%llx, 0x%llx, %.17g, %llu, %llu, %.17g, %.17g)",
+          (unsigned long long)d, (unsigned long long)m, top, (unsigned long long)classes,
+          (unsigned long long)bins, e_min, e_max);
+    c->st = demill_drum_impacts_start(c->w, d, m, top, (uint32_t)classes, (uint32_t)bins, e_min,
+                                      e_max);
+    if (c->st == DEMILL_OK && (classes < 2 || classes > 200 || bins < 1 || bins > 10000))
+        fail("demill_drum_impacts_start took %llu classes and %llu bins",
+             (unsigned long long)classes, (unsigned long long)bins);
+}
+
+static void op_impacts_read(call *c)
+{
+    const demill_id d = id_named(c, DEMILL_KIND_DRUM);
+    const uint8_t f = byte();
+    size_t n = 0;
+    if (c->k >= 0 && demill_drum_impacts(c->w, d, NULL, 0, &n, NULL) != DEMILL_OK)
+        n = 0;
+    const size_t cap = capacity(f, n);
+    uint64_t *out = f & 1 ? NULL : grab(n + 1, sizeof *out);
+    size_t got = SIZE_MAX;
+    double time = NAN;
+    c->query = true;
+    trace("demill_drum_impacts(w, 0x%llx, %s, %zu, %s, %s)", (unsigned long long)d,
+          out ? "out" : "NULL", cap, f & 2 ? "NULL" : "&count", f & 16 ? "NULL" : "&time");
+    c->st = demill_drum_impacts(c->w, d, out, cap, f & 2 ? NULL : &got, f & 16 ? NULL : &time);
+    check_count(c, "demill_drum_impacts", !(f & 2) && n, got, n);
+    if (c->st == DEMILL_OK && !(f & 16) && !(time >= 0.0 && isfinite(time)))
+        fail("demill_drum_impacts gave the time %g", time);
+    free(out);
+}
+
+static void op_impacts_particles(call *c)
+{
+    const demill_id d = id_named(c, DEMILL_KIND_DRUM);
+    const uint8_t f = byte();
+    size_t n = 0;
+    if (c->k >= 0 && demill_drum_impacts_particles(c->w, d, NULL, 0, &n) != DEMILL_OK)
+        n = 0;
+    const size_t cap = capacity(f, n);
+    uint64_t *out = f & 1 ? NULL : grab(n + 1, sizeof *out);
+    size_t got = SIZE_MAX;
+    c->query = true;
+    trace("demill_drum_impacts_particles(w, 0x%llx, %s, %zu, %s)", (unsigned long long)d,
+          out ? "out" : "NULL", cap, f & 2 ? "NULL" : "&count");
+    c->st = demill_drum_impacts_particles(c->w, d, out, cap, f & 2 ? NULL : &got);
+    check_count(c, "demill_drum_impacts_particles", !(f & 2) && n, got, n);
+    if (c->st == DEMILL_OK && out && cap >= n) {
+        uint64_t sum = 0;
+        for (size_t i = 0; i < n; i++)
+            sum += out[i];
+        if (sum > c->np)
+            fail("demill_drum_impacts_particles counted %llu particles of %zu",
+                 (unsigned long long)sum, c->np);
+    }
+    free(out);
+}
+
+/* Everything a grinding object tells through its reads, to compare its
+ * states: its classes, rates, appearance, product and time, and what its
+ * model gives (status and values) at a few points. */
+static void grinding_state(demill_grinding *g, buf *b)
+{
+    b->n = 0;
+    b->diverged = false;
+    if (!g)
+        return;
+    size_t nc = 0, nb = 0, got;
+    demill_grinding_rates(g, NULL, 0, &nc);
+    demill_grinding_appearance(g, NULL, 0, &nb);
+    const size_t len = (4 * nc + nb + 24) * sizeof(double);
+    if (len > b->cap) {
+        unsigned char *p = realloc(b->b, len);
+        if (!p)
+            abort();
+        b->b = p;
+        b->cap = len;
+    }
+    double *v = (double *)b->b, *end = v;
+    demill_grinding_sizes(g, end, nc + 1, &got), end += nc + 1;
+    demill_grinding_rates(g, end, nc, &got), end += nc;
+    demill_grinding_appearance(g, end, nb, &got), end += nb;
+    demill_grinding_product(g, end, nc, &got), end += nc;
+    demill_grinding_time(g, end++);
+    const double top = v[0];
+    end[0] = demill_grinding_t10(g, top / 2, 100.0, end + 1);
+    end += 2;
+    end[0] = demill_grinding_tn(g, 20.0, end + 1);
+    end += 6;
+    end[0] = demill_grinding_broken_fraction(g, top / 2, 100.0, 3, end + 1);
+    end += 2;
+    end[0] = demill_grinding_passing(g, top / 4, end + 1);
+    end += 2;
+    b->n = (size_t)((unsigned char *)end - b->b);
+}
+
+static size_t grinding_classes(void)
+{
+    size_t n = 0;
+    if (F.g)
+        demill_grinding_rates(F.g, NULL, 0, &n);
+    return n;
+}
+
+/* The values of FZ_GRIND_FEED, _RATES and _APPEARANCE (api_ops.h): returns
+ * the array (NULL if the flags ask) and sets *n to their number. */
+static double *grinding_values(uint8_t f, int what, size_t *n)
+{
+    const size_t nc = grinding_classes(), want = what == FZ_GRIND_APPEARANCE ? nc * nc : nc;
+    static const int delta[4] = {0, -1, 1, 0};
+    *n = (f & 3) == 3 ? 0 : want + (size_t)delta[f & 3];
+    if (!want && (f & 3) == 1)
+        *n = 0;
+    if (f & 4)
+        return NULL;
+    double *v = grab(*n + 1, sizeof *v);
+    const int fill = (f >> 3) & 3;
+    const double one = fill == 1 ? num() : 0.0;
+    for (size_t i = 0; i < *n; i++) {
+        if (fill == 0)
+            v[i] = num();
+        else if (fill == 1)
+            v[i] = one;
+        else if (what == FZ_GRIND_FEED)
+            v[i] = 1.0;
+        else if (what == FZ_GRIND_RATES)
+            v[i] = i + 1 < nc ? (double)(i + 1) : 0.0;
+        else /* b[r * nc + col]: all of class col into class col + 1 */
+            v[i] = nc && i / nc == i % nc + 1 && i % nc + 1 < nc ? 1.0 : 0.0;
+    }
+    if (fill == 3 && *n) {
+        const size_t which = byte() % *n;
+        v[which] = num();
+    }
+    return v;
+}
+
+/* A t-family table of 6 rows (t10, t2, t4, t25, t50, t75), then rows that
+ * break its rules, for FZ_GRIND_MODEL: rows 6 valid, 1 too few, 2 valid,
+ * 101 too many (the array holds 101). */
+static double tfamily[101 * 6];
+
+static void init_tfamily(void)
+{
+    static const double rows[6][6] = {
+        {1, 4, 2.5, 0.4, 0.2, 0.15}, {10, 32, 19, 4.5, 2.5, 1.8}, {20, 55, 36, 9, 5, 3.6},
+        {30, 72, 52, 14, 8, 5.6},    {45, 88, 72, 22, 12, 8.5},   {60, 97, 88, 31, 18, 13}};
+    for (size_t i = 0; i < 101; i++)
+        for (int j = 0; j < 6; j++)
+            tfamily[6 * i + j] = rows[i % 6][j];
+}
+
+static void op_grinding(call *c)
+{
+    const uint8_t which = byte() % 7, what = byte() % FZ_GRIND_CALLS;
+    demill_grinding *g = which < 4    ? F.g
+                         : which == 4 ? NULL
+                         : which == 5 ? (demill_grinding *)fake_object
+                                      : (demill_grinding *)F.w[0];
+    const bool live = which < 4 && F.g;
+    c->worldless = what != FZ_GRIND_FROM_DRUM;
+    c->query = true; /* no grinding call changes a world */
+    grinding_state(F.g, &F.gbefore);
+    bool reads = false;
+    double mass_before = 0.0;
+    if (what == FZ_GRIND_RUN && live) {
+        size_t n = grinding_classes(), got;
+        double *p = grab(n, sizeof *p);
+        demill_grinding_product(F.g, p, n, &got);
+        for (size_t i = 0; i < n; i++)
+            mass_before += p[i];
+        free(p);
+    }
+    trace("grinding %s: ", which < 4 ? (F.g ? "g" : "g (none)") : which == 4 ? "NULL"
+                           : which == 5 ? "fake" : "a world");
+    switch (what) {
+    case FZ_GRIND_CREATE: {
+        const double top = num();
+        const uint64_t classes = count();
+        const bool null_out = byte() & 1;
+        demill_grinding *out = (demill_grinding *)fake_object;
+        trace("demill_grinding_create(%.17g, %llu, %s)", top, (unsigned long long)classes,
+              null_out ? "NULL" : "&g");
+        c->st = demill_grinding_create(top, (uint32_t)classes, null_out ? NULL : &out);
+        if (c->st == DEMILL_OK && (classes < 2 || classes > 200 || !(top > 0.0)))
+            fail("demill_grinding_create took %.17g, %llu", top, (unsigned long long)classes);
+        if (!null_out && (c->st == DEMILL_OK) != (out != NULL))
+            fail("demill_grinding_create gave %d and %s an object", (int)c->st,
+                 out ? "set" : "did not set");
+        if (c->st == DEMILL_OK) {
+            demill_grinding_destroy(F.g);
+            F.g = out;
+            trace(" = 0\n");
+            return;
+        }
+        break;
+    }
+    case FZ_GRIND_FEED:
+    case FZ_GRIND_RATES:
+    case FZ_GRIND_APPEARANCE: {
+        size_t n;
+        const uint8_t f = byte();
+        double *v = grinding_values(f, what, &n);
+        trace("demill_grinding_set_%s(g, %zu, %s)",
+              what == FZ_GRIND_FEED ? "feed" : what == FZ_GRIND_RATES ? "rates" : "appearance", n,
+              v ? "v" : "NULL");
+        c->st = what == FZ_GRIND_FEED    ? demill_grinding_set_feed(g, n, v)
+                : what == FZ_GRIND_RATES ? demill_grinding_set_rates(g, n, v)
+                                         : demill_grinding_set_appearance(g, n, v);
+        free(v);
+        break;
+    }
+    case FZ_GRIND_MODEL: {
+        static const size_t nrows[4] = {6, 1, 2, 101};
+        const uint8_t f = byte();
+        const size_t rows = nrows[(f >> 2) & 3];
+        const double *table = f & 2 ? NULL : tfamily;
+        if (f & 1) {
+            double p[8];
+            for (int i = 0; i < 8; i++)
+                p[i] = num();
+            trace("demill_grinding_set_tavares(g, %.17g, %.17g, %.17g, %.17g, %.17g, %.17g, "
+                  "%.17g, %.17g, %zu, %s)",
+                  p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], rows, table ? "t" : "NULL");
+            c->st = demill_grinding_set_tavares(g, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7],
+                                                rows, table);
+        } else {
+            const double a = num(), b = num();
+            trace("demill_grinding_set_jk(g, %.17g, %.17g, %zu, %s)", a, b, rows,
+                  table ? "t" : "NULL");
+            c->st = demill_grinding_set_jk(g, a, b, rows, table);
+        }
+        break;
+    }
+    case FZ_GRIND_APPEARANCE_ENERGY: {
+        const double e = num();
+        trace("demill_grinding_set_appearance_energy(g, %.17g)", e);
+        c->st = demill_grinding_set_appearance_energy(g, e);
+        break;
+    }
+    case FZ_GRIND_FROM_IMPACTS: {
+        static const int delta[4] = {0, -1, 1, 0};
+        const uint8_t cb = byte(), bins = byte() % 5, f = byte();
+        const size_t nc = grinding_classes();
+        const size_t classes = (cb & 3) == 3 || (!nc && (cb & 3) == 1)
+                                   ? 0 : nc + (size_t)delta[cb & 3];
+        double *edges = grab(bins + 1u, sizeof(double));
+        double *counts = grab(classes * bins + 1, sizeof(double));
+        double *parts = grab(classes + 1, sizeof(double));
+        if (f & 8) {
+            const double e0 = num();
+            for (size_t k = 0; k <= bins; k++)
+                edges[k] = e0 * pow(10.0, (double)k);
+        } else {
+            for (size_t k = 0; k <= bins; k++)
+                edges[k] = num();
+        }
+        const double all = f & 16 ? num() : 0.0;
+        for (size_t k = 0; k < classes * bins; k++)
+            counts[k] = f & 16 ? all : num();
+        for (size_t k = 0; k < classes; k++)
+            parts[k] = num();
+        const double time = num();
+        trace("demill_grinding_rates_from_impacts(g, %zu, %u, %s, %s, %s, %.17g)", classes,
+              (unsigned)bins, f & 1 ? "NULL" : "edges", f & 2 ? "NULL" : "counts",
+              f & 4 ? "NULL" : "particles", time);
+        c->st = demill_grinding_rates_from_impacts(g, classes, bins, f & 1 ? NULL : edges,
+                                                   f & 2 ? NULL : counts, f & 4 ? NULL : parts,
+                                                   time);
+        free(edges);
+        free(counts);
+        free(parts);
+        break;
+    }
+    case FZ_GRIND_FROM_DRUM: {
+        const demill_id d = id_named(c, DEMILL_KIND_DRUM);
+        if (!live && c->k < 0) { /* two bad objects: the status is the order of the checks' */
+            c->skipped = true;
+            return;
+        }
+        c->other_handle = !live;
+        c->grinding_message = true;
+        trace("demill_grinding_rates_from_drum(g, w, 0x%llx)", (unsigned long long)d);
+        c->st = demill_grinding_rates_from_drum(g, c->w, d);
+        break;
+    }
+    case FZ_GRIND_RUN: {
+        const double t = num();
+        trace("demill_grinding_run(g, %.17g)", t);
+        c->st = demill_grinding_run(g, t);
+        break;
+    }
+    default: {
+        const uint8_t r = byte() % 11, f = byte();
+        const bool null_out = f & 1;
+        const size_t nc = grinding_classes();
+        const size_t n = r == 4 ? nc + 1 : r == 6 ? nc * nc : nc;
+        double *out = grab(n + 6, sizeof *out);
+        double *o = null_out ? NULL : out;
+        const size_t cap = capacity(f, n);
+        size_t got;
+        double x, y;
+        reads = true;
+        switch (r) {
+        case 0: c->st = demill_grinding_product(g, o, cap, &got); break;
+        case 1: x = num(), c->st = demill_grinding_passing(g, x, o); break;
+        case 2: x = num(), c->st = demill_grinding_size_passing(g, x, o); break;
+        case 3: c->st = demill_grinding_time(g, o); break;
+        case 4: c->st = demill_grinding_sizes(g, o, cap, &got); break;
+        case 5: c->st = demill_grinding_rates(g, o, cap, &got); break;
+        case 6: c->st = demill_grinding_appearance(g, o, cap, &got); break;
+        case 7: x = num(), y = num(), c->st = demill_grinding_t10(g, x, y, o); break;
+        case 8: x = num(), c->st = demill_grinding_tn(g, x, o); break;
+        case 9:
+            x = num(), y = num();
+            c->st = demill_grinding_broken_fraction(g, x, y, (uint32_t)count(), o);
+            break;
+        default: x = num(), y = num(), c->st = demill_grinding_specific_energy(g, x, y, o);
+        }
+        trace("grinding read %d (%s, capacity %zu)", (int)r, o ? "out" : "NULL", cap);
+        if (c->st == DEMILL_OK && (r == 1 || r == 9) && !(out[0] >= 0.0 && out[0] <= 1.0))
+            fail("grinding read %d gave the fraction %.17g", (int)r, out[0]);
+        if (c->st == DEMILL_OK && r == 2 && !(out[0] > 0.0 && isfinite(out[0])))
+            fail("demill_grinding_size_passing gave the size %.17g", out[0]);
+        free(out);
+    }
+    }
+    if (live && c->st != DEMILL_OK && what != FZ_GRIND_CREATE) {
+        const char *msg = demill_grinding_last_error(F.g);
+        trace(" {%s}", msg);
+        if (!*msg && (what != FZ_GRIND_FROM_DRUM || (c->k >= 0 && !*demill_world_last_error(c->w))))
+            fail("a grinding call failed with %d and left no message", (int)c->st);
+    }
+    if (!live && c->st != DEMILL_OK && what != FZ_GRIND_CREATE) {
+        const demill_status want = g ? DEMILL_ERR_INVALID_HANDLE : DEMILL_ERR_NULL_POINTER;
+        if (c->st != want && what != FZ_GRIND_FROM_DRUM)
+            fail("a grinding call on a %s object gave %d, not %d", g ? "bad" : "NULL",
+                 (int)c->st, (int)want);
+    }
+    if (!live && c->st == DEMILL_OK && what != FZ_GRIND_CREATE)
+        fail("a grinding call on a %s object succeeded", g ? "bad" : "NULL");
+    grinding_state(F.g, &F.gafter);
+    if ((c->st != DEMILL_OK || reads) && !same(&F.gbefore, &F.gafter))
+        fail("a grinding call that %s changed the object (status %d)",
+             reads ? "reads" : "failed", (int)c->st);
+    if (what == FZ_GRIND_RUN && c->st == DEMILL_OK) {
+        size_t n = grinding_classes(), got;
+        double *p = grab(n, sizeof *p), mass = 0.0;
+        demill_grinding_product(F.g, p, n, &got);
+        for (size_t i = 0; i < n; i++)
+            mass += p[i];
+        free(p);
+        if (!(fabs(mass - mass_before) <= 1e-9 * mass_before))
+            fail("demill_grinding_run changed the mass from %.17g to %.17g", mass_before, mass);
+    }
+}
+
 static void (*const ops[FZ_OPS])(call *) = {
     [FZ_WORLD_RECREATE] = op_world_recreate,
     [FZ_WORLD_CREATE_BAD] = op_world_create_bad,
@@ -1398,6 +1775,10 @@ static void (*const ops[FZ_OPS])(call *) = {
     [FZ_VTK_WALLS] = op_vtk_walls,
     [FZ_VTK_SERIES] = op_vtk_series,
     [FZ_STATELESS] = op_stateless,
+    [FZ_IMPACTS_START] = op_impacts_start,
+    [FZ_IMPACTS_READ] = op_impacts_read,
+    [FZ_IMPACTS_PARTICLES] = op_impacts_particles,
+    [FZ_GRINDING] = op_grinding,
 };
 
 /* ---- the checks after a call ------------------------------------------------ */
@@ -1564,7 +1945,7 @@ static void run_call(void)
                  (int)want);
     }
     if (!c.worldless && c.k >= 0) {
-        if (c.st != DEMILL_OK && !*demill_world_last_error(c.w))
+        if (c.st != DEMILL_OK && !c.grinding_message && !*demill_world_last_error(c.w))
             fail("the call failed with %d and left no message", (int)c.st);
         check_named(&c);
     }
@@ -1627,6 +2008,7 @@ static void cleanup(void)
 static void setup(void)
 {
     F.trace = getenv("DEMILL_FUZZ_TRACE") != NULL;
+    init_tfamily();
     if (demill_world_create(3, &F.scratch) != DEMILL_OK)
         abort();
     const char *tmp = getenv("TMPDIR");
@@ -1669,6 +2051,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     demill_vtk_series_close(F.series);
     F.series = NULL;
+    demill_grinding_destroy(F.g);
+    F.g = NULL;
     F.npool = F.pool_next = 0;
     return 0;
 }

@@ -140,7 +140,55 @@ enum {
      * demill_world_last_error: NULL, fake or a world), 8 bytes (an id): the
      * functions that take no world */
     FZ_STATELESS,
+    /* id (drum), id (material), num (top size), count (classes), count
+     * (nbins), num (e_min), num (e_max) */
+    FZ_IMPACTS_START,
+    /* id (drum), flags (1 counts NULL, 2 count NULL, 16 time NULL, capacity) */
+    FZ_IMPACTS_READ,
+    FZ_IMPACTS_PARTICLES, /* id (drum), flags (1 particles NULL, 2 count NULL, capacity) */
+    /* The harness's grinding object (one per input; none until created).
+     * byte (the object passed: 0 to 3 the live one, 4 NULL, 5 memory that
+     * is no object, 6 a world), byte (the call, modulo FZ_GRIND_CALLS),
+     * then the call's arguments as listed there. The world byte of the op
+     * names the world of demill_grinding_rates_from_drum() and is unused
+     * by the others. */
+    FZ_GRINDING,
     FZ_OPS
+};
+
+/* The calls of FZ_GRINDING. "values" are n values for an object of C
+ * classes: flags bits 0-1 n = C (C² for the appearance), one less, one
+ * more or 0; bit 2 NULL; bits 3-4 the values: each a num, all one num,
+ * the harness's valid ones (feed all 1, rates i + 1 with the sink 0, an
+ * appearance that puts all of a class into the next), or those with one
+ * replaced (byte: which, num). */
+enum {
+    FZ_GRIND_CREATE,     /* num (top size), count (classes), flags (1: out NULL) */
+    FZ_GRIND_FEED,       /* flags, values */
+    FZ_GRIND_RATES,      /* flags, values */
+    FZ_GRIND_APPEARANCE, /* flags, values */
+    /* byte (bit 0 Tavares and King, else JKMRC; bit 1 table NULL, bits 2-3
+     * rows 6, 1, 2 or 101 of the harness's table), 2 nums (JKMRC: A, b)
+     * or 8 nums (Tavares and King: e_inf, d0, phi, sigma, emax_ratio,
+     * gamma, a', b') */
+    FZ_GRIND_MODEL,
+    FZ_GRIND_APPEARANCE_ENERGY, /* num (energy) */
+    /* byte (classes: C, C - 1, C + 1 or 0), byte (bins, modulo 5), flags
+     * (1 edges NULL, 2 counts NULL, 4 particles NULL, 8 edges from num
+     * (e0) up by 10×, 16 counts all from one num), bins + 1 nums (edges,
+     * unless flag 8), classes × bins nums (counts, unless flag 16) or one
+     * num, classes nums (particles), num (time) */
+    FZ_GRIND_FROM_IMPACTS,
+    FZ_GRIND_FROM_DRUM, /* id (drum) */
+    FZ_GRIND_RUN,       /* num (time) */
+    /* byte (0 product, 1 passing, 2 size passing, 3 time, 4 sizes, 5
+     * rates, 6 appearance, 7 t10, 8 tn, 9 broken fraction, 10 specific
+     * energy), flags (1 out NULL, capacity for the arrays), then by the
+     * read: passing num (size); size passing num (fraction); t10 num
+     * (size), num (energy); tn num (t10); broken fraction num (size), num
+     * (energy), count (impacts); specific energy num (power), num (mass) */
+    FZ_GRIND_READ,
+    FZ_GRIND_CALLS
 };
 
 /* The keys, fields and choices an op picks from ("table" above): the valid

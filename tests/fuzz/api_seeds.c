@@ -4,7 +4,10 @@
  * 3D mill with lifters, a fill, files and VTK output;
  * a 2D box of discs with a moving wall, the progress callback stopping a
  * long run, a settle and bulk writes; and the ids of one world used on the
- * other. */
+ * other; the impacts on a mill's balls recorded and turned into the rates
+ * of a grinding object, which grinds; and a grinding object on its own,
+ * from rates and an appearance typed in, a model's, and an impact spectrum
+ * typed in. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -211,6 +214,85 @@ static void box2d(const char *dir)
     finish(dir, "box2d");
 }
 
+/* A call of FZ_GRINDING on the live object. */
+static void grind(int code, int world)
+{
+    op(FZ_GRINDING, world), byte(0), byte((unsigned)code);
+}
+
+/* Tavares and King's model for the ores of the seeds: E50 about 0.012 J/kg
+ * at 5 mm, so that the little mill's impacts break some balls. */
+static void tavares(void)
+{
+    grind(FZ_GRIND_MODEL, 0), byte(1), num(0.01), num(0.001), num(1), num(0.8), num(0), num(3),
+        num(55), num(0.5);
+}
+
+/* The small mill's balls as an ore: their impacts recorded over 400 steps,
+ * read, and turned into a grinding object's rates, which grinds them. */
+static void mill_impacts(const char *dir)
+{
+    start(0);
+    material(0, 7800, DEMILL_NORMAL_HERTZ, DEMILL_TANGENTIAL_MINDLIN);
+    op(FZ_DRUM_CREATE, 0), own(0), byte(0);
+    op(FZ_DRUM_SET, 0), own(0), KEY(fz_drum_keys, DEMILL_DRUM_DIAMETER), num(0.05);
+    op(FZ_DRUM_SET, 0), own(0), KEY(fz_drum_keys, DEMILL_DRUM_LENGTH), num(0.012);
+    op(FZ_DRUM_FILL, 0), own(0), own(0), KEY(fz_distributions, DEMILL_SIZES_CLASSES),
+        byte(2 | 4 * 3), byte(2), num(0.006), num(1), KEY(fz_fill_targets, DEMILL_FILL_COUNT),
+        num(16), byte(1);
+    op(FZ_DRUM_SET, 0), own(0), KEY(fz_drum_keys, DEMILL_DRUM_SPEED_FRACTION), num(0.8);
+    op(FZ_SUGGEST_APPLY, 0), num(0), num(0);
+    op(FZ_SPECTRUM_START, 0), own(0), byte(1), count(0), count(8), num(1e-9), num(1e-2);
+    op(FZ_IMPACTS_START, 0), own(0), own(0), num(0.008), count(4), count(8), num(0.01), num(1);
+    step(0, 200);
+    step(0, 200);
+    op(FZ_IMPACTS_READ, 0), own(0), byte(0);
+    op(FZ_IMPACTS_PARTICLES, 0), own(0), byte(0);
+    grind(FZ_GRIND_CREATE, 0), num(0.008), count(4), byte(0);
+    tavares();
+    grind(FZ_GRIND_FROM_DRUM, 0), own(0);
+    grind(FZ_GRIND_FEED, 0), byte(2 << 3);
+    grind(FZ_GRIND_RUN, 0), num(10);
+    grind(FZ_GRIND_READ, 0), byte(0), byte(0);
+    grind(FZ_GRIND_READ, 0), byte(1), byte(0), num(0.004);
+    grind(FZ_GRIND_READ, 0), byte(2), byte(0), num(0.8);
+    op(FZ_BUFFER_TRANSFER, 1), byte(0), byte(0);
+    op(FZ_IMPACTS_READ, 1), own(0), byte(0);
+    grind(FZ_GRIND_FROM_DRUM, 1), own(0);
+    finish(dir, "mill-impacts");
+}
+
+/* A grinding object alone: rates and an appearance typed in, a run, its
+ * product; then the JKMRC and Tavares and King models, an appearance at
+ * one energy, rates from a typed-in impact spectrum, and runs again. */
+static void grinding_alone(const char *dir)
+{
+    start(0);
+    grind(FZ_GRIND_CREATE, 0), num(0.01), count(6), byte(0);
+    grind(FZ_GRIND_FEED, 0), byte(2 << 3);
+    grind(FZ_GRIND_RATES, 0), byte(2 << 3);
+    grind(FZ_GRIND_APPEARANCE, 0), byte(2 << 3);
+    grind(FZ_GRIND_RUN, 0), num(0.5);
+    grind(FZ_GRIND_READ, 0), byte(0), byte(0);
+    grind(FZ_GRIND_READ, 0), byte(2), byte(0), num(0.8);
+    grind(FZ_GRIND_MODEL, 0), byte(0), num(50), num(1);
+    grind(FZ_GRIND_APPEARANCE_ENERGY, 0), num(3600);
+    grind(FZ_GRIND_RUN, 0), num(2);
+    grind(FZ_GRIND_READ, 0), byte(7), byte(0), num(0.005), num(3600);
+    tavares();
+    grind(FZ_GRIND_READ, 0), byte(9), byte(0), num(0.005), num(0.02), count(3);
+    /* 6 classes, 2 bins from 0.01 J/kg up by 10×, one impact per particle
+     * and bin, a particle per class, 1 s */
+    grind(FZ_GRIND_FROM_IMPACTS, 0), byte(0), byte(2), byte(8 | 16), num(0.01), num(1);
+    for (int i = 0; i < 6; i++)
+        num(1);
+    num(1);
+    grind(FZ_GRIND_RUN, 0), num(5);
+    grind(FZ_GRIND_READ, 0), byte(1), byte(0), num(0.002);
+    grind(FZ_GRIND_READ, 0), byte(10), byte(0), num(100), num(2);
+    finish(dir, "grinding");
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2)
@@ -218,5 +300,7 @@ int main(int argc, char **argv)
     ball_on_plane(argv[1]);
     small_mill(argv[1]);
     box2d(argv[1]);
+    mill_impacts(argv[1]);
+    grinding_alone(argv[1]);
     return 0;
 }
