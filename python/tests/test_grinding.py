@@ -3,13 +3,18 @@ it: one class decays as e^(-S t), the JKMRC t10 = A (1 - exp(-b E_cs)), the
 P80 of a two-class product worked by hand, mass conserved through a model's
 appearance function, the rate of impacts at one energy S = c/(N T)
 P(E); errors raise with the library's message and change
-nothing."""
+nothing; the Grinding section of docs/getting-started-python.md runs and
+prints what it says."""
 
 import math
+import os
+import re
+import subprocess
+import sys
 import unittest
 
 import numpy as np
-from helpers import linear_world  # noqa: F401 - makes demill importable
+from helpers import REPO, linear_world  # noqa: F401 - makes demill importable
 
 import demill
 
@@ -140,6 +145,23 @@ class GrindingTest(unittest.TestCase):
             g.run(1)
         with self.assertRaises(demill.InvalidValue):
             demill.Grinding(-1, 4)
+
+
+    def test_guide_programs(self):
+        # Each program of the guide's Grinding section runs, and the output
+        # the guide quotes after "It prints" is what it prints.
+        guide = (REPO / "docs" / "getting-started-python.md").read_text(encoding="utf-8")
+        section = guide.split("\n## Grinding\n")[1].split("\n## ")[0]
+        programs = re.findall(r"```python\n(.*?)```", section, re.S)
+        self.assertEqual(len(programs), 2)
+        env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+        out = subprocess.run([sys.executable, "-c", programs[1]], env=env, check=True,
+                             capture_output=True, text=True).stdout
+        quoted = re.search(r"It prints (.*?), in under", section, re.S).group(1)
+        for text in re.findall(r"`(.*?)`", quoted, re.S):
+            self.assertIn(" ".join(text.split()), " ".join(out.split()))
+        subprocess.run([sys.executable, "-c", programs[0]], env=env, check=True,
+                       capture_output=True)
 
 
 if __name__ == "__main__":
