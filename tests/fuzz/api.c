@@ -1447,6 +1447,7 @@ static void grinding_state(demill_grinding *g, buf *b)
         b->b = p;
         b->cap = len;
     }
+    memset(b->b, 0, len); /* a read that fails writes nothing: compare zeros, not leftovers */
     double *v = (double *)b->b, *end = v;
     demill_grinding_sizes(g, end, nc + 1, &got), end += nc + 1;
     demill_grinding_rates(g, end, nc, &got), end += nc;
