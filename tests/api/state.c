@@ -505,6 +505,50 @@ START_TEST(drum_values_the_api_refuses_are_refused)
 }
 END_TEST
 
+/* The drum's recording of impacts on an ore (checkpoint format 2) is held
+ * to finite values as demill_drum_impacts_start() is: a top size, energy
+ * span or start time that is not finite, written behind a repaired checksum,
+ * is refused, so that the recorded time and the rates from the drum cannot
+ * load as NaN. The four values follow each other in the payload: top size,
+ * log10 of the lowest energy, the span of the logarithms, the start time. */
+START_TEST(impact_recordings_not_finite_are_refused)
+{
+    demill_world *w, *target;
+    demill_id ore, drum;
+    ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+    ck_assert_int_eq(demill_world_create(3, &target), DEMILL_OK);
+    DM_OK(w, demill_material_create(w, &ore));
+    DM_OK(w, demill_drum_create(w, ore, &drum));
+    DM_OK(w, demill_drum_spectrum_start(w, drum, 0, NULL, 4, 1e-6, 1e-2));
+    const double top = 0.0123, log_min = log10(1e-3), log_span = log10(10.0) - log_min;
+    DM_OK(w, demill_drum_impacts_start(w, drum, ore, top, 5, 8, 1e-3, 10.0));
+    bytes good = checkpoint_of(w), before = checkpoint_of(target);
+    const double run[3] = {top, log_min, log_span};
+    size_t at = 0, found = 0;
+    for (size_t k = 32; k + 32 <= good.n; k++)
+        if (!memcmp(good.b + k, run, sizeof run)) {
+            at = k;
+            found++;
+        }
+    ck_assert_uint_eq(found, 1);
+    const struct {
+        size_t offset;
+        double bad;
+    } cases[] = {{0, INFINITY}, {16, INFINITY}, {24, NAN}, {24, -INFINITY}};
+    unsigned char *bad = malloc(good.n);
+    ck_assert_ptr_nonnull(bad);
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        memcpy(bad, good.b, good.n);
+        memcpy(bad + at + cases[c].offset, &cases[c].bad, 8);
+        dm_test_ckpt_repair(bad, good.n);
+        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "not finite", "impacts");
+    }
+    /* unchanged, it loads */
+    DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
+    release(w, target, good, before, bad);
+}
+END_TEST
+
 /* The state of an empty world (no particle room at all) restored into a
  * world whose refinement integrator has room for particles: the room shrinks
  * to none (before, shrinking it to 0 bytes freed it and reported running out
@@ -786,6 +830,7 @@ int main(int argc, char **argv)
         {"refused", truncated_and_corrupt_checkpoints_are_refused, 1},
         {"repaired", corruption_behind_a_repaired_checksum_never_crashes, 1},
         {"drum", drum_values_the_api_refuses_are_refused, 1},
+        {"impacts", impact_recordings_not_finite_are_refused, 1},
         {"empty", empty_state_into_a_refining_world, 1},
         {"files", file_errors, 1},
         {"accepted", accepted_states_reload, 1},
