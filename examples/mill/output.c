@@ -67,6 +67,20 @@ static int save_png(cairo_surface_t *s, const char *path)
     return 0;
 }
 
+/* A white canvas of wd × ht pixels for a picture, with the pictures' font at
+ * font_size and lines 1 pixel wide. */
+static cairo_t *canvas(int wd, int ht, double font_size, cairo_surface_t **s)
+{
+    *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, wd, ht);
+    cairo_t *cr = cairo_create(*s);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, font_size);
+    cairo_set_line_width(cr, 1);
+    return cr;
+}
+
 typedef struct drawn {
     double x, y, z, r, speed;
 } drawn;
@@ -100,12 +114,8 @@ int draw_charge(const char *path, demill_world *w, const drum_shape *d, const ch
         vmax = fmax(vmax, p[k].speed);
     }
     qsort(p, n, sizeof *p, cmp_depth); /* far (-z) first, near last */
-    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, size + bar, size + top);
-    cairo_t *cr = cairo_create(s);
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, 18);
+    cairo_surface_t *s;
+    cairo_t *cr = canvas(size + bar, size + top, 18, &s);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, 20, 36);
     cairo_show_text(cr, title);
@@ -174,6 +184,33 @@ static double tick_step(double span)
     return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * mag;
 }
 
+/* A grid line from (x0, y0) to (x1, y1) and its label at (lx, ly). */
+static void plot_grid(cairo_t *cr, double x0, double y0, double x1, double y1, double lx,
+                      double ly, const char *label)
+{
+    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+    cairo_move_to(cr, x0, y0);
+    cairo_line_to(cr, x1, y1);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_move_to(cr, lx, ly);
+    cairo_show_text(cr, label);
+}
+
+/* The frame of the plot area (left l, top tp, w × h) and the x axis's
+ * title, centred about x_title_at at the bottom of a canvas ht high. */
+static void plot_frame(cairo_t *cr, double l, double tp, double w, double h, double ht,
+                       double x_title_at, const char *x_title)
+{
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 1.5);
+    cairo_rectangle(cr, l, tp, w, h);
+    cairo_stroke(cr);
+    cairo_set_font_size(cr, 15);
+    cairo_move_to(cr, x_title_at, ht - 15);
+    cairo_show_text(cr, x_title);
+}
+
 int draw_power(const char *path, const double *t, const double *pw, size_t n, double mean,
                double mean_from, double mean_to)
 {
@@ -194,37 +231,20 @@ int draw_power(const char *path, const double *t, const double *pw, size_t n, do
     p0 = fmin(0.0, sorted[0]);
     free(sorted);
     p1 = p1 > p0 ? p1 : p0 + 1;
-    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, wd, ht);
-    cairo_t *cr = cairo_create(s);
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
+    cairo_surface_t *s;
+    cairo_t *cr = canvas(wd, ht, 13, &s);
     const double sx = (wd - l - r) / (t1 - t0), sy = (ht - tp - bt) / (p1 - p0);
 #define PX(tt) (l + ((tt) - t0) * sx)
 #define PY(pp) (ht - bt - ((pp) - p0) * sy)
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, 13);
-    cairo_set_line_width(cr, 1);
     char label[64];
     const double dtk = tick_step(t1 - t0), dpk = tick_step(p1 - p0);
     for (double tk = ceil(t0 / dtk) * dtk; tk <= t1 + 1e-12; tk += dtk) {
-        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-        cairo_move_to(cr, PX(tk), tp);
-        cairo_line_to(cr, PX(tk), ht - bt);
-        cairo_stroke(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
         snprintf(label, sizeof label, "%g", tk);
-        cairo_move_to(cr, PX(tk) - 8, ht - bt + 18);
-        cairo_show_text(cr, label);
+        plot_grid(cr, PX(tk), tp, PX(tk), ht - bt, PX(tk) - 8, ht - bt + 18, label);
     }
     for (double pk = ceil(p0 / dpk) * dpk; pk <= p1 + 1e-12; pk += dpk) {
-        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-        cairo_move_to(cr, l, PY(pk));
-        cairo_line_to(cr, wd - r, PY(pk));
-        cairo_stroke(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
         snprintf(label, sizeof label, "%g", pk);
-        cairo_move_to(cr, l - 45, PY(pk) + 4);
-        cairo_show_text(cr, label);
+        plot_grid(cr, l, PY(pk), wd - r, PY(pk), l - 45, PY(pk) + 4, label);
     }
     cairo_save(cr);
     cairo_rectangle(cr, l, tp, wd - l - r, ht - tp - bt);
@@ -246,13 +266,7 @@ int draw_power(const char *path, const double *t, const double *pw, size_t n, do
         cairo_move_to(cr, PX(mean_from), tp + 20);
         cairo_show_text(cr, label);
     }
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_width(cr, 1.5);
-    cairo_rectangle(cr, l, tp, wd - l - r, ht - tp - bt);
-    cairo_stroke(cr);
-    cairo_set_font_size(cr, 15);
-    cairo_move_to(cr, wd / 2 - 30, ht - 15);
-    cairo_show_text(cr, "time [s]");
+    plot_frame(cr, l, tp, wd - l - r, ht - tp - bt, ht, wd / 2 - 30, "time [s]");
     cairo_move_to(cr, l, 32);
     cairo_show_text(cr, "power draw P = -T ω [W], 10 ms running mean");
 #undef PX
@@ -266,16 +280,11 @@ int draw_product(const char *path, const ore_result *r, const char *title)
     const int wd = 1000, ht = 560, l = 80, r_ = 30, tp = 60, bt = 60;
     /* the log size axis over the classes' limits but the sink's 0 */
     const double lx0 = log10(r->limits[r->n - 1]), lx1 = log10(r->limits[0]);
-    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, wd, ht);
-    cairo_t *cr = cairo_create(s);
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
+    cairo_surface_t *s;
+    cairo_t *cr = canvas(wd, ht, 13, &s);
     const double sx = (wd - l - r_) / (lx1 - lx0), sy = (ht - tp - bt) / 100.0;
 #define PX(lx) (l + ((lx) - lx0) * sx)
 #define PY(pp) (ht - bt - (pp) * sy)
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, 13);
-    cairo_set_line_width(cr, 1);
     char label[96];
     /* decades and 2, 5 within them, in mm */
     for (double dec = floor(lx0); dec <= lx1; dec += 1)
@@ -283,24 +292,12 @@ int draw_product(const char *path, const ore_result *r, const char *title)
             const double lx = dec + log10(m);
             if (lx < lx0 - 1e-9 || lx > lx1 + 1e-9)
                 continue;
-            cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-            cairo_move_to(cr, PX(lx), tp);
-            cairo_line_to(cr, PX(lx), ht - bt);
-            cairo_stroke(cr);
-            cairo_set_source_rgb(cr, 0, 0, 0);
             snprintf(label, sizeof label, "%g", 1e3 * pow(10, lx));
-            cairo_move_to(cr, PX(lx) - 8, ht - bt + 18);
-            cairo_show_text(cr, label);
+            plot_grid(cr, PX(lx), tp, PX(lx), ht - bt, PX(lx) - 8, ht - bt + 18, label);
         }
     for (int pk = 0; pk <= 100; pk += 20) {
-        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-        cairo_move_to(cr, l, PY(pk));
-        cairo_line_to(cr, wd - r_, PY(pk));
-        cairo_stroke(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
         snprintf(label, sizeof label, "%d", pk);
-        cairo_move_to(cr, l - 35, PY(pk) + 4);
-        cairo_show_text(cr, label);
+        plot_grid(cr, l, PY(pk), wd - r_, PY(pk), l - 35, PY(pk) + 4, label);
     }
     /* the curves through (upper limit, passing) of every class but the sink */
     const double colour[2][3] = {{0.45, 0.45, 0.45}, {0.13, 0.37, 0.66}};
@@ -321,13 +318,7 @@ int draw_product(const char *path, const ore_result *r, const char *title)
                  1e3 * (c ? r->p80 : r->f80));
         cairo_show_text(cr, label);
     }
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_width(cr, 1.5);
-    cairo_rectangle(cr, l, tp, wd - l - r_, ht - tp - bt);
-    cairo_stroke(cr);
-    cairo_set_font_size(cr, 15);
-    cairo_move_to(cr, wd / 2 - 40, ht - 15);
-    cairo_show_text(cr, "size [mm], log scale");
+    plot_frame(cr, l, tp, wd - l - r_, ht - tp - bt, ht, wd / 2 - 40, "size [mm], log scale");
     cairo_move_to(cr, l, 25);
     cairo_show_text(cr, title);
     cairo_move_to(cr, l, 47);
