@@ -1300,6 +1300,20 @@ static void expect_spectrum(const scene *s, int nexp, const int *index, const ui
     }
 }
 
+/* The drum of the collision tests: diameter 2 m (R = 1), length 0.5, no
+ * gravity, the linear law with restitution damping e = 0.5 for particle
+ * pairs and particle-drum pairs. */
+static scene collision_scene(void)
+{
+    scene s = drum_scene(3, DEMILL_DAMPING_RESTITUTION);
+    demill_world *w = s.w;
+    DM_OK(w, demill_pair_set(w, s.mat, s.mat, DEMILL_PAIR_RESTITUTION, 0.5));
+    DM_OK(w, demill_pair_set(w, s.mat, s.wallmat, DEMILL_PAIR_RESTITUTION, 0.5));
+    DM_OK(w, demill_drum_set(w, s.drum, DEMILL_DRUM_DIAMETER, 2.0));
+    DM_OK(w, demill_drum_set(w, s.drum, DEMILL_DRUM_LENGTH, 0.5));
+    return s;
+}
+
 /* A drum of diameter 2 m (R = 1), length 0.5, one lifter (h = w = 0.015) at
  * 6 o'clock, no gravity, linear law with restitution damping e = 0.5 and the
  * default clamp for particle pairs and particle-drum pairs (k = 5e4 N/m in
@@ -1325,12 +1339,8 @@ static void expect_spectrum(const scene *s, int nexp, const int *index, const ui
  * Each collision is counted exactly once, and only when it ends. */
 START_TEST(spectrum_counts_collisions)
 {
-    scene s = drum_scene(3, DEMILL_DAMPING_RESTITUTION);
+    scene s = collision_scene();
     demill_world *w = s.w;
-    DM_OK(w, demill_pair_set(w, s.mat, s.mat, DEMILL_PAIR_RESTITUTION, 0.5));
-    DM_OK(w, demill_pair_set(w, s.mat, s.wallmat, DEMILL_PAIR_RESTITUTION, 0.5));
-    DM_OK(w, demill_drum_set(w, s.drum, DEMILL_DRUM_DIAMETER, 2.0));
-    DM_OK(w, demill_drum_set(w, s.drum, DEMILL_DRUM_LENGTH, 0.5));
     DM_OK(w, demill_drum_add_lifter(w, s.drum, SIX_OCLOCK, LIFT_H, LIFT_W, 0.0));
     const double edges[2] = {0.008, 0.015};
     DM_OK(w, demill_drum_spectrum_start(w, s.drum, 2, edges, NBINS, 1e-6, 1e-2));
@@ -1415,12 +1425,8 @@ static uint32_t impact_bin(double specific)
 START_TEST(impacts_split_and_binned)
 {
     enum { C = 5, B = 400 };
-    scene s = drum_scene(3, DEMILL_DAMPING_RESTITUTION);
+    scene s = collision_scene();
     demill_world *w = s.w;
-    DM_OK(w, demill_pair_set(w, s.mat, s.mat, DEMILL_PAIR_RESTITUTION, 0.5));
-    DM_OK(w, demill_pair_set(w, s.mat, s.wallmat, DEMILL_PAIR_RESTITUTION, 0.5));
-    DM_OK(w, demill_drum_set(w, s.drum, DEMILL_DRUM_DIAMETER, 2.0));
-    DM_OK(w, demill_drum_set(w, s.drum, DEMILL_DRUM_LENGTH, 0.5));
     DM_OK(w, demill_material_set(w, s.mat, DEMILL_MATERIAL_YOUNGS_MODULUS, 5e10));
     DM_OK(w, demill_material_set(w, s.mat, DEMILL_MATERIAL_POISSON_RATIO, 0.25));
     DM_OK(w, demill_material_set(w, s.wallmat, DEMILL_MATERIAL_YOUNGS_MODULUS, 2e11));
