@@ -1017,22 +1017,34 @@ static void op_spectrum_start(call *c)
                                        e_max);
 }
 
-static void op_spectrum_read(call *c)
+/* A drum's counters read through `read` (demill_drum_spectrum() and the
+ * like), with a buffer, a capacity and a count as the next byte asks;
+ * returns the buffer (NULL if none was passed; the caller frees it), with
+ * the count the library gave before into *n and the capacity into *cap. */
+typedef demill_status (*counters_fn)(demill_world *, demill_id, uint64_t *, size_t, size_t *);
+static uint64_t *read_counters(call *c, const char *name, counters_fn read, size_t *n,
+                               size_t *cap)
 {
     const demill_id d = id_named(c, DEMILL_KIND_DRUM);
     const uint8_t f = byte();
-    size_t n = 0;
-    if (c->k >= 0 && demill_drum_spectrum(c->w, d, NULL, 0, &n) != DEMILL_OK)
-        n = 0;
-    const size_t cap = capacity(f, n);
-    uint64_t *out = f & 1 ? NULL : grab(n + 1, sizeof *out);
+    *n = 0;
+    if (c->k >= 0 && read(c->w, d, NULL, 0, n) != DEMILL_OK)
+        *n = 0;
+    *cap = capacity(f, *n);
+    uint64_t *out = f & 1 ? NULL : grab(*n + 1, sizeof *out);
     size_t got = SIZE_MAX;
     c->query = true;
-    trace("demill_drum_spectrum(w, 0x%llx, %s, %zu, %s)", (unsigned long long)d,
-          out ? "out" : "NULL", cap, f & 2 ? "NULL" : "&count");
-    c->st = demill_drum_spectrum(c->w, d, out, cap, f & 2 ? NULL : &got);
-    check_count(c, "demill_drum_spectrum", !(f & 2) && n, got, n);
-    free(out);
+    trace("%s(w, 0x%llx, %s, %zu, %s)", name, (unsigned long long)d, out ? "out" : "NULL", *cap,
+          f & 2 ? "NULL" : "&count");
+    c->st = read(c->w, d, out, *cap, f & 2 ? NULL : &got);
+    check_count(c, name, !(f & 2) && *n, got, *n);
+    return out;
+}
+
+static void op_spectrum_read(call *c)
+{
+    size_t n, cap;
+    free(read_counters(c, "demill_drum_spectrum", demill_drum_spectrum, &n, &cap));
 }
 
 /* The steps the harness asks for: up to STEPS_MAX, or more when the progress
@@ -1403,19 +1415,9 @@ static void op_impacts_read(call *c)
 
 static void op_impacts_particles(call *c)
 {
-    const demill_id d = id_named(c, DEMILL_KIND_DRUM);
-    const uint8_t f = byte();
-    size_t n = 0;
-    if (c->k >= 0 && demill_drum_impacts_particles(c->w, d, NULL, 0, &n) != DEMILL_OK)
-        n = 0;
-    const size_t cap = capacity(f, n);
-    uint64_t *out = f & 1 ? NULL : grab(n + 1, sizeof *out);
-    size_t got = SIZE_MAX;
-    c->query = true;
-    trace("demill_drum_impacts_particles(w, 0x%llx, %s, %zu, %s)", (unsigned long long)d,
-          out ? "out" : "NULL", cap, f & 2 ? "NULL" : "&count");
-    c->st = demill_drum_impacts_particles(c->w, d, out, cap, f & 2 ? NULL : &got);
-    check_count(c, "demill_drum_impacts_particles", !(f & 2) && n, got, n);
+    size_t n, cap;
+    uint64_t *out = read_counters(c, "demill_drum_impacts_particles",
+                                  demill_drum_impacts_particles, &n, &cap);
     if (c->st == DEMILL_OK && out && cap >= n) {
         uint64_t sum = 0;
         for (size_t i = 0; i < n; i++)
