@@ -455,6 +455,20 @@ START_TEST(corruption_behind_a_repaired_checksum_never_crashes)
 }
 END_TEST
 
+/* Where the len bytes at v stand in a checkpoint's payload, which holds
+ * them exactly once. */
+static size_t unique_offset(bytes b, const void *v, size_t len)
+{
+    size_t at = 0, found = 0;
+    for (size_t k = DM_TEST_CKPT_HEADER; k + len <= b.n; k++)
+        if (!memcmp(b.b + k, v, len)) {
+            at = k;
+            found++;
+        }
+    ck_assert_uint_eq(found, 1);
+    return at;
+}
+
 /* A checkpoint is held to the bounds the API holds a drum to: a drum value
  * or a lifter that demill_drum_set() or demill_drum_add_lifter() would
  * refuse, written into a checkpoint behind a repaired checksum, is refused
@@ -487,13 +501,7 @@ START_TEST(drum_values_the_api_refuses_are_refused)
     unsigned char *bad = malloc(good.n);
     ck_assert_ptr_nonnull(bad);
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
-        size_t at = 0, found = 0;
-        for (size_t k = 32; k + 8 <= good.n; k++)
-            if (!memcmp(good.b + k, &cases[c].value, 8)) {
-                at = k;
-                found++;
-            }
-        ck_assert_uint_eq(found, 1);
+        const size_t at = unique_offset(good, &cases[c].value, 8);
         memcpy(bad, good.b, good.n);
         memcpy(bad + at, &cases[c].bad, 8);
         dm_test_ckpt_repair(bad, good.n);
@@ -524,13 +532,8 @@ START_TEST(impact_recordings_not_finite_are_refused)
     DM_OK(w, demill_drum_impacts_start(w, drum, ore, top, 5, 8, 1e-3, 10.0));
     bytes good = checkpoint_of(w), before = checkpoint_of(target);
     const double run[3] = {top, log_min, log_span};
-    size_t at = 0, found = 0;
-    for (size_t k = 32; k + 32 <= good.n; k++)
-        if (!memcmp(good.b + k, run, sizeof run)) {
-            at = k;
-            found++;
-        }
-    ck_assert_uint_eq(found, 1);
+    const size_t at = unique_offset(good, run, sizeof run);
+    ck_assert_uint_le(at + 32, good.n);
     const struct {
         size_t offset;
         double bad;
