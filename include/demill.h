@@ -12,6 +12,7 @@
  * | demill/material.h   | materials and per-pair contact models              |
  * | demill/particles.h  | particles: add, remove, read, write                |
  * | demill/wall.h       | walls with prescribed motion                       |
+ * | demill/body.h       | bodies the particles move: springs, dampers, force |
  * | demill/query.h      | contacts and energies                              |
  * | demill/drum.h       | the mill: drum, lifters, charge, power, spectrum   |
  * | demill/state.h      | snapshots, checkpoint files, listing a world's ids |
@@ -39,6 +40,7 @@
 #include "demill/material.h"
 #include "demill/particles.h"
 #include "demill/wall.h"
+#include "demill/body.h"
 #include "demill/query.h"
 #include "demill/drum.h"
 #include "demill/state.h"

@@ -120,7 +120,8 @@ DEMILL_API const char *demill_strerror(demill_status code);
 
 /* ------------------------------------------------------------------------ */
 /** @name Ids
- * Materials, particles and walls are named by 64-bit ids. An id encodes the
+ * Materials, particles, walls, drums and bodies are named by 64-bit ids.
+ * An id encodes the
  * kind of object, the world it belongs to and a generation counter, so an id
  * of a removed object, of another world or of the wrong kind is rejected with
  * DEMILL_ERR_INVALID_HANDLE instead of touching the wrong object.
@@ -134,7 +135,7 @@ DEMILL_API const char *demill_strerror(demill_status code);
  * An id of a destroyed world may name an object of a world created after
  * 4096 or more further worlds; do not keep ids past their world.
  * @{ */
-/** The id of a material, particle, wall or drum of a world. */
+/** The id of a material, particle, wall, drum or body of a world. */
 typedef uint64_t demill_id;
 /** The id that names nothing. */
 #define DEMILL_ID_NONE ((demill_id)0)
@@ -145,7 +146,8 @@ enum {
     DEMILL_KIND_MATERIAL = 1, /**< a material (demill_material_create()) */
     DEMILL_KIND_PARTICLE = 2, /**< a particle (demill_particles_add()) */
     DEMILL_KIND_WALL = 3,     /**< a wall (demill_wall_add_plane()) */
-    DEMILL_KIND_DRUM = 4      /**< a drum (demill_drum_create()) */
+    DEMILL_KIND_DRUM = 4,     /**< a drum (demill_drum_create()) */
+    DEMILL_KIND_BODY = 5      /**< a body (demill_body_add()) */
 };
 
 /** The kind of object an id names, without checking that the object still

@@ -27,7 +27,16 @@ enum {
     DEMILL_PARTICLE_MASS = 5,             /**< 1 double, kg; read-only */
     DEMILL_PARTICLE_FORCE = 6,            /**< 3 doubles, N: total force (contacts and gravity) at the last force evaluation; read-only */
     DEMILL_PARTICLE_TORQUE = 7,           /**< 3 doubles, N m: total torque at the last force evaluation; read-only */
-    DEMILL_PARTICLE_ANGLE = 8             /**< 1 double, rad: 2D worlds only, rotation angle θ about z; read/write */
+    DEMILL_PARTICLE_ANGLE = 8,            /**< 1 double, rad: 2D worlds only, rotation angle θ about z; read/write */
+    /** 1 double, 0 or 1; read/write. A fixed particle (1) never moves: no
+     *  force moves or turns it, gravity included, and its velocity and
+     *  angular velocity are 0 (fixing a particle sets them to 0; writing
+     *  them non-zero while it is fixed gives DEMILL_ERR_INVALID_VALUE). It
+     *  touches the particles that move, as an infinitely heavy particle: the
+     *  contact's reduced mass m* is the moving particle's mass. Two fixed
+     *  particles do not touch, nor does a fixed particle touch a wall. For
+     *  rough floors and walls made of particles. 0 makes it move again. */
+    DEMILL_PARTICLE_FIXED = 9
 };
 
 /** Id fields, for demill_particles_read_ids(). */

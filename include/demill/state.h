@@ -138,7 +138,8 @@ DEMILL_API demill_status demill_world_load_buffer(demill_world *world, const voi
  *  DEMILL_KIND_PARTICLE (in id order, as demill_particles_read_ids()),
  *  DEMILL_KIND_WALL (the walls added with demill_wall_add_plane(), in the
  *  order of their slots: a new wall may take the slot of a removed one; the
- *  drum's own surfaces are not walls) or DEMILL_KIND_DRUM (none or one).
+ *  drum's own surfaces are not walls), DEMILL_KIND_DRUM (none or one) or
+ *  DEMILL_KIND_BODY (in the order of their slots, as walls).
  *  @param world    the world.
  *  @param kind     a DEMILL_KIND_* constant.
  *  @param out      capacity ids, or NULL to ask the count.

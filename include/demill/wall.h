@@ -1,7 +1,8 @@
 /** @file demill/wall.h
  * @brief Walls, bodies of infinite mass moved by a prescribed motion.
  *
- * A wall is not moved by the particles. Contact with a wall uses the contact
+ * A wall is not moved by the particles, unless it is attached to a body
+ * (demill/body.h), which they move. Contact with a wall uses the contact
  * model of the pair (particle material, wall material) with R* = R and m* = m
  * of the particle. The drum of a mill joins these walls in a later version.
  */
@@ -43,7 +44,8 @@ DEMILL_API demill_status demill_wall_add_plane(demill_world *world, demill_id ma
                                                const double point[3], const double normal[3],
                                                demill_id *out);
 
-/** Removes a wall. Its id becomes invalid; contacts with it end.
+/** Removes a wall. Its id becomes invalid; contacts with it end; a wall
+ *  attached to a body leaves it.
  *  @param world the world.
  *  @param wall  the wall's id.
  *  @return DEMILL_OK or DEMILL_ERR_INVALID_HANDLE. */
@@ -61,8 +63,9 @@ DEMILL_API demill_status demill_wall_remove(demill_world *world, demill_id wall)
  *  @param angular_velocity angular velocity about the centre, rad/s, or NULL
  *                          for 0.
  *  @param centre           the centre of rotation, m, or NULL to keep it.
- *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE or
- *          DEMILL_ERR_DIMENSION. */
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_DIMENSION or DEMILL_ERR_INVALID_VALUE (the wall is
+ *          attached to a body, demill_body_attach_wall(), and moves with it). */
 DEMILL_API demill_status demill_wall_set_motion(demill_world *world, demill_id wall,
                                                 const double velocity[3],
                                                 const double angular_velocity[3],

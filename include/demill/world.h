@@ -208,7 +208,8 @@ DEMILL_API demill_status demill_world_get(const demill_world *world, int32_t key
  *  @param steps the number of steps of DEMILL_WORLD_TIME_STEP to take.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NO_CONTACT_MODEL,
  *          DEMILL_ERR_INVALID_VALUE (also: the world's time is so large that
- *          a time step does not advance it), DEMILL_ERR_OUT_OF_MEMORY,
+ *          a time step does not advance it, or the iterative refinement is
+ *          chosen in a world with bodies), DEMILL_ERR_OUT_OF_MEMORY,
  *          DEMILL_ERR_UNSTABLE or DEMILL_ERR_INTERRUPTED. If memory runs out
  *          in the middle of a run, the world holds the state after the last
  *          completed step. On DEMILL_ERR_UNSTABLE (see DEMILL_WORLD_WATCHDOG)

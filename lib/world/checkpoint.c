@@ -89,8 +89,9 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 /* ---- the bytes of a state --------------------------------------------------- */
 
 #define CK_MAGIC "DEMILLCK"
-#define CK_FORMAT 2u          /* the format this library writes and the newest it reads;
-                                 2 adds the impacts on an ore to the drum's spectrum */
+#define CK_FORMAT 3u          /* the format this library writes and the newest it reads;
+                                 2 adds the impacts on an ore to the drum's spectrum,
+                                 3 the bodies (section BODY) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -399,6 +400,35 @@ static void transfer_bucket(io *s, dm_bucket *b, int kernel, int dim, bool event
     io_f64_array(s, &b->hist, (size_t)b->n * hs, (size_t)b->n * hs);
 }
 
+/* The bodies, and which walls are attached to which body. */
+static void transfer_bodies(io *s, demill_world *w)
+{
+    io_count(s, &w->nbodies, UINT32_MAX - 1, "body slots");
+    io_room(s, w->nbodies, 400, "bodies");
+    io_array(s, &w->bodies, 0, w->nbodies, sizeof *w->bodies);
+    if (s->reading && !s->status) {
+        w->cap_bodies = w->nbodies;
+        memset(w->bodies, 0, w->nbodies * sizeof *w->bodies);
+    }
+    for (uint32_t k = 0; k < w->nbodies && !s->status; k++) {
+        dm_body *b = &w->bodies[k];
+        io_u32(s, &b->handle, 1);
+        io_int(s, &b->free_axes);
+        io_int(s, &b->gravity);
+        double *const f[] = {&b->mass, b->x,     b->v,       b->vp,       b->k,
+                             b->c,     b->rest,  b->f0,      &b->freq,    &b->phase,
+                             b->x_tally, b->fe_tally, b->fd_tally, &b->work, &b->dissipated};
+        const size_t len[] = {1, 3, 3, 3, 3, 3, 3, 3, 1, 1, 3, 3, 3, 1, 1};
+        for (size_t q = 0; q < sizeof len / sizeof *len; q++)
+            io_f64(s, f[q], len[q]);
+    }
+    transfer_handles(s, &w->bh, "body handles");
+    for (uint32_t k = 0; k < w->nwalls && !s->status; k++) {
+        io_u32(s, &w->walls[k].body, 1);
+        io_f64(s, w->walls[k].body_ref, 3);
+    }
+}
+
 /* Walks every field of state w. Reading, w starts zeroed (with its pointers
  * NULL) and the arrays are allocated as they are read. */
 static void transfer(io *s, demill_world *w)
@@ -505,6 +535,10 @@ static void transfer(io *s, demill_world *w)
         for (int k = 0; k < DM_KERNELS; k++)
             transfer_bucket(s, side ? &w->pw.b[k] : &w->pp.b[k], k, w->dim, w->events,
                             w->nlist_valid);
+    if (s->format >= 3) {
+        io_section(s, "BODY");
+        transfer_bodies(s, w);
+    }
     io_section(s, "END.");
 }
 
@@ -607,11 +641,21 @@ static demill_status check_particles(demill_world *t)
         const double scalars[] = {P->r[i], P->m[i], P->im[i], P->iinv[i]};
         if (!all_finite(P->x + D * i, D) || !all_finite(P->v + D * i, D) ||
             !all_finite(P->w + W * i, W) || !all_finite(scalars, 4) || !(P->r[i] > 0) ||
-            !(P->m[i] > 0) || !(P->im[i] > 0) || !(P->iinv[i] > 0))
+            !(P->m[i] > 0) || P->im[i] < 0 || P->iinv[i] < 0)
             return dm_fail(t, DEMILL_ERR_FORMAT,
                            "particle %u: a position, velocity, radius or mass that is not "
                            "finite and positive",
                            i);
+        /* a fixed particle: both inverses 0, at rest */
+        bool rest = true;
+        for (size_t c = 0; c < D; c++)
+            rest &= P->v[D * i + c] == 0.0;
+        for (size_t c = 0; c < W; c++)
+            rest &= P->w[W * i + c] == 0.0;
+        if ((P->im[i] == 0) != (P->iinv[i] == 0) || (P->im[i] == 0 && !rest))
+            return dm_fail(t, DEMILL_ERR_FORMAT,
+                           "particle %u: fixed in part (1/m %g, 1/I %g) or moving", i, P->im[i],
+                           P->iinv[i]);
     }
     return DEMILL_OK;
 }
@@ -663,6 +707,39 @@ static demill_status check_walls(demill_world *t)
             return dm_fail(t, DEMILL_ERR_FORMAT, "wall handle %u names slot %u", k,
                            t->wh.slot[k]);
     return check_handles(t, &t->wh, user, "wall handles");
+}
+
+/* Every body's values within the bounds demill_body_*() enforce, its
+ * handle its own, and every wall attached to a live body. */
+static demill_status check_bodies(demill_world *t)
+{
+    uint32_t live = 0;
+    const int axes = t->dim == 3 ? 7 : 3;
+    for (uint32_t k = 0; k < t->nbodies; k++) {
+        const dm_body *b = &t->bodies[k];
+        if (b->handle == DM_FREE)
+            continue;
+        live++;
+        bool ok = b->handle < t->bh.n && t->bh.slot[b->handle] == k && b->mass > 0 &&
+                  (b->free_axes & ~axes) == 0 && (b->gravity == 0 || b->gravity == 1) &&
+                  b->freq >= 0;
+        for (int c = 0; c < 3; c++)
+            ok &= b->k[c] >= 0 && b->c[c] >= 0 && (t->dim == 3 || c < 2 || b->f0[c] == 0);
+        if (!ok)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "body slot %u is inconsistent", k);
+    }
+    for (uint32_t k = 0; k < t->bh.n; k++)
+        if (t->bh.slot[k] != DM_FREE && t->bh.slot[k] >= t->nbodies)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "body handle %u names slot %u", k,
+                           t->bh.slot[k]);
+    for (uint32_t k = 0; k < t->nwalls; k++) {
+        const dm_wall *wl = &t->walls[k];
+        if (wl->body && (wl->body > t->nbodies || t->bodies[wl->body - 1].handle == DM_FREE ||
+                         !wl->kind || wl->drum_part))
+            return dm_fail(t, DEMILL_ERR_FORMAT, "wall slot %u is attached to body slot %u", k,
+                           wl->body - 1);
+    }
+    return check_handles(t, &t->bh, live, "body handles");
 }
 
 static demill_status check_drum(demill_world *t)
@@ -814,7 +891,7 @@ static demill_status decode(demill_world *t, const uint8_t *b, size_t size)
         return dm_fail(t, s.status, "%s", s.why);
     demill_status st;
     if ((st = check_params(t)) || (st = check_particles(t)) || (st = check_walls(t)) ||
-        (st = check_drum(t)) || (st = check_contacts(t)))
+        (st = check_bodies(t)) || (st = check_drum(t)) || (st = check_contacts(t)))
         return st == DEMILL_ERR_OUT_OF_MEMORY ? st : DEMILL_ERR_FORMAT;
     for (uint32_t i = 0; i < t->p.n; i++)
         t->mat_particles[t->p.mat[i]]++;
@@ -970,7 +1047,8 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         return s;
     if (kind == DEMILL_KIND_PARTICLE)
         return demill_particles_read_ids(w, DEMILL_PARTICLE_ID, out, capacity, count);
-    if (kind != DEMILL_KIND_MATERIAL && kind != DEMILL_KIND_WALL && kind != DEMILL_KIND_DRUM)
+    if (kind != DEMILL_KIND_MATERIAL && kind != DEMILL_KIND_WALL && kind != DEMILL_KIND_DRUM &&
+        kind != DEMILL_KIND_BODY)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_ids: %d is not a kind of object",
                        (int)kind);
     if (!out && !count)
@@ -980,6 +1058,9 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         n = w->nmat;
     else if (kind == DEMILL_KIND_DRUM)
         n = w->drum.alive;
+    else if (kind == DEMILL_KIND_BODY)
+        for (uint32_t k = 0; k < w->nbodies; k++)
+            n += dm_body_live(w, k);
     else
         for (uint32_t k = 0; k < w->nwalls; k++)
             n += w->walls[k].kind && !w->walls[k].drum_part;
@@ -997,6 +1078,10 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         for (uint32_t k = 0, q = 0; k < w->nwalls; k++)
             if (w->walls[k].kind && !w->walls[k].drum_part)
                 out[q++] = dm_wall_id(w, k);
+    } else if (kind == DEMILL_KIND_BODY) {
+        for (uint32_t k = 0, q = 0; k < w->nbodies; k++)
+            if (dm_body_live(w, k))
+                out[q++] = dm_body_id(w, k);
     } else if (n) { /* the drum */
         out[0] = dm_drum_id(w);
     }

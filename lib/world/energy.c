@@ -26,12 +26,21 @@ static void add_stored(void *ctx, const dm_contact_eval *c)
 
 /* The energies of the current state: translational and rotational kinetic,
  * potential and, with stored, the elastic energy of normal and tangential
- * springs (e[3], e[4]; left 0 otherwise). */
-demill_status dm_energies(demill_world *w, int stored, double e[5])
+ * springs (e[3], e[4]; left 0 otherwise); then the bodies' energies, each
+ * summed over the bodies (e[5 + DM_BODY_*]). */
+demill_status dm_energies(demill_world *w, int stored, double e[DM_ENERGIES])
 {
     const dm_particles *P = &w->p;
     const int D = w->dim, W = D == 3 ? 3 : 1;
-    memset(e, 0, 5 * sizeof *e);
+    memset(e, 0, DM_ENERGIES * sizeof *e);
+    for (uint32_t k = 0; k < w->nbodies; k++) {
+        double b[DM_BODY_ENERGIES];
+        if (!dm_body_live(w, k))
+            continue;
+        dm_body_energies(w, k, b);
+        for (int q = 0; q < DM_BODY_ENERGIES; q++)
+            e[5 + q] += b[q];
+    }
     for (uint32_t i = 0; i < P->n; i++) {
         for (int c = 0; c < D; c++) {
             e[0] += 0.5 * P->m[i] * P->v[D * i + c] * P->v[D * i + c];
@@ -53,16 +62,16 @@ DEMILL_API demill_status demill_world_energy(demill_world *w, int32_t term, doub
         return s;
     if (!value)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_energy: value is NULL");
-    if (term < DEMILL_ENERGY_KINETIC_TRANSLATIONAL || term > DEMILL_ENERGY_TOTAL)
+    if (term < DEMILL_ENERGY_KINETIC_TRANSLATIONAL || term > DEMILL_ENERGY_BODY_WORK)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_energy: %d is not an energy term",
                        (int)term);
-    double e[5];
+    double e[DM_ENERGIES];
     if ((s = dm_energies(w, term == DEMILL_ENERGY_ELASTIC_NORMAL ||
                                 term == DEMILL_ENERGY_ELASTIC_TANGENTIAL ||
                                 term == DEMILL_ENERGY_TOTAL,
                          e)))
         return s;
-    const double kt = e[0], kr = e[1], pot = e[2], stored[2] = {e[3], e[4]};
+    const double kt = e[0], kr = e[1], pot = e[2], stored[2] = {e[3], e[4]}, *body = e + 5;
     const dm_tally *t = &w->tally;
     double diss = t->diss_normal + t->diss_tangential + t->diss_friction + t->diss_rolling;
     switch (term) {
@@ -77,7 +86,12 @@ DEMILL_API demill_status demill_world_energy(demill_world *w, int32_t term, doub
     case DEMILL_ENERGY_DISSIPATED_FRICTION: *value = t->diss_friction; break;
     case DEMILL_ENERGY_DISSIPATED_ROLLING: *value = t->diss_rolling; break;
     case DEMILL_ENERGY_DISSIPATED: *value = diss; break;
-    default: *value = kt + kr + pot + stored[0] + stored[1] + diss - t->wall_work;
+    case DEMILL_ENERGY_TOTAL:
+        *value = kt + kr + pot + stored[0] + stored[1] + diss - t->wall_work +
+                 body[DM_BODY_KINETIC] + body[DM_BODY_ELASTIC] + body[DM_BODY_POTENTIAL] +
+                 body[DM_BODY_DISSIPATED] - body[DM_BODY_WORK];
+        break;
+    default: *value = body[term - DEMILL_ENERGY_BODY_KINETIC];
     }
     dm_clear_error(w);
     return DEMILL_OK;

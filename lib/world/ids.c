@@ -9,12 +9,14 @@ static const char *kind_name(int kind)
     case DEMILL_KIND_PARTICLE: return "particle";
     case DEMILL_KIND_WALL: return "wall";
     case DEMILL_KIND_DRUM: return "drum";
+    case DEMILL_KIND_BODY: return "body";
     default: return "unknown";
     }
 }
 
 /* Checks that `id` names a live object of `kind` in world w and returns its
- * storage slot (particles: storage index; walls: wall slot; materials: index).
+ * storage slot (particles: storage index; walls: wall slot; bodies: body
+ * slot; materials: index).
  * `what` names the argument in the error message. */
 demill_status dm_resolve(const demill_world *cw, demill_id id, int kind, const char *what,
                          uint32_t *slot)
@@ -46,7 +48,9 @@ demill_status dm_resolve(const demill_world *cw, demill_id id, int kind, const c
         *slot = index;
         return DEMILL_OK;
     }
-    const dm_handles *h = kind == DEMILL_KIND_PARTICLE ? &w->ph : &w->wh;
+    const dm_handles *h = kind == DEMILL_KIND_PARTICLE ? &w->ph
+                          : kind == DEMILL_KIND_BODY   ? &w->bh
+                                                       : &w->wh;
     if (index >= h->n || h->slot[index] == DM_FREE || h->gen[index] != DM_ID_GEN(id))
         return dm_fail(w, DEMILL_ERR_INVALID_HANDLE,
                        "%s: %s id 0x%llx was removed or never existed", what, kind_name(kind),
@@ -68,6 +72,12 @@ demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot)
         return dm_drum_id(w);
     uint32_t h = w->walls[wall_slot].handle;
     return dm_id_make(w->tag, DEMILL_KIND_WALL, w->wh.gen[h], h);
+}
+
+demill_id dm_body_id(const demill_world *w, uint32_t slot)
+{
+    uint32_t h = w->bodies[slot].handle;
+    return dm_id_make(w->tag, DEMILL_KIND_BODY, w->bh.gen[h], h);
 }
 
 demill_id dm_drum_id(const demill_world *w)

@@ -67,10 +67,8 @@ demill_status dm_masses_update(demill_world *w, uint32_t mat, const char *who)
     if (s)
         return s;
     for (uint32_t i = 0; i < p->n; i++)
-        if (mat == DM_ALL_MATERIALS || p->mat[i] == mat) {
-            dm_particle_mass(w, p->mat[i], p->r[i], &p->m[i], &p->iinv[i]);
-            p->im[i] = 1.0 / p->m[i];
-        }
+        if (mat == DM_ALL_MATERIALS || p->mat[i] == mat)
+            dm_particle_set_mass(w, i, dm_particle_fixed(p, i));
     return DEMILL_OK;
 }
 

@@ -131,9 +131,8 @@ demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const
             P->w[W * i + c] = P->wp[W * i + c] = P->t[W * i + c] = 0.0;
         P->theta[i] = 0.0;
         P->r[i] = radii[k];
-        dm_particle_mass(w, mat, radii[k], &P->m[i], &P->iinv[i]);
-        P->im[i] = 1.0 / P->m[i];
         P->mat[i] = (uint16_t)mat;
+        dm_particle_set_mass(w, i, false);
         P->hid[i] = dm_handles_issue(&w->ph, i);
         if (ids)
             ids[k] = dm_particle_id(w, i);
@@ -241,7 +240,8 @@ DEMILL_API int32_t demill_particle_field_size(int32_t field)
     case DEMILL_PARTICLE_TORQUE: return 3;
     case DEMILL_PARTICLE_RADIUS:
     case DEMILL_PARTICLE_MASS:
-    case DEMILL_PARTICLE_ANGLE: return 1;
+    case DEMILL_PARTICLE_ANGLE:
+    case DEMILL_PARTICLE_FIXED: return 1;
     default: return 0;
     }
 }
@@ -274,6 +274,7 @@ static void get_one(const demill_world *w, uint32_t i, int32_t field, double *ou
     case DEMILL_PARTICLE_RADIUS: out[0] = P->r[i]; return;
     case DEMILL_PARTICLE_MASS: out[0] = P->m[i]; return;
     case DEMILL_PARTICLE_ANGLE: out[0] = P->theta[i]; return;
+    case DEMILL_PARTICLE_FIXED: out[0] = dm_particle_fixed(P, i); return;
     }
     out[0] = out[1] = out[2] = 0.0;
     if (nsrc == 1)
@@ -282,24 +283,45 @@ static void get_one(const demill_world *w, uint32_t i, int32_t field, double *ou
         memcpy(out, src, (size_t)nsrc * sizeof *out);
 }
 
+/* A fixed particle's velocity or angular velocity can only be 0. */
+static demill_status check_at_rest(demill_world *w, uint32_t i, const double *in,
+                                   const char *what, const char *who)
+{
+    if (dm_particle_fixed(&w->p, i) && (in[0] != 0.0 || in[1] != 0.0 || in[2] != 0.0))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "%s: the particle is fixed; its %s can only be 0", who, what);
+    return DEMILL_OK;
+}
+
 /* A value for `field` of the particle in storage slot i. */
 static demill_status check_one(demill_world *w, uint32_t i, int32_t field, const double *in,
                                const char *who)
 {
     const int flat = w->dim == 2;
+    demill_status s;
     switch (field) {
     case DEMILL_PARTICLE_POSITION: return check_vec(w, in, "position", who, flat);
-    case DEMILL_PARTICLE_VELOCITY: return check_vec(w, in, "velocity", who, flat);
-    case DEMILL_PARTICLE_ANGULAR_VELOCITY: {
-        demill_status s = check_vec(w, in, "angular velocity", who, 0);
-        if (!s && flat && (in[0] != 0.0 || in[1] != 0.0))
+    case DEMILL_PARTICLE_VELOCITY:
+        if ((s = check_vec(w, in, "velocity", who, flat)))
+            return s;
+        return check_at_rest(w, i, in, "velocity", who);
+    case DEMILL_PARTICLE_ANGULAR_VELOCITY:
+        if ((s = check_vec(w, in, "angular velocity", who, 0)))
+            return s;
+        if (flat && (in[0] != 0.0 || in[1] != 0.0))
             return dm_fail(w, DEMILL_ERR_DIMENSION,
                            "%s: angular velocity has x or y components but the world is 2D "
                            "(only z is allowed)",
                            who);
-        return s;
-    }
+        return check_at_rest(w, i, in, "angular velocity", who);
     case DEMILL_PARTICLE_RADIUS: return check_radius(w, w->p.mat[i], in[0], who);
+    case DEMILL_PARTICLE_FIXED:
+        if (!isfinite(in[0]))
+            return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: fixed = %g is not finite", who, in[0]);
+        if (in[0] != 0.0 && in[0] != 1.0)
+            return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: fixed = %g, not 0 or 1", who,
+                           in[0]);
+        return DEMILL_OK;
     default:
         if (!isfinite(in[0]))
             return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: angle %g is not finite", who, in[0]);
@@ -322,11 +344,20 @@ static void set_one(demill_world *w, uint32_t i, int32_t field, const double *in
         break;
     case DEMILL_PARTICLE_RADIUS:
         P->r[i] = in[0];
-        dm_particle_mass(w, P->mat[i], in[0], &P->m[i], &P->iinv[i]);
-        P->im[i] = 1.0 / P->m[i];
+        dm_particle_set_mass(w, i, dm_particle_fixed(P, i));
         w->nlist_valid = false;
         break;
     case DEMILL_PARTICLE_ANGLE: P->theta[i] = in[0]; break;
+    case DEMILL_PARTICLE_FIXED:
+        if (in[0] != 0.0) { /* at rest, for good */
+            memset(P->v + D * i, 0, (size_t)D * sizeof *P->v);
+            memset(P->vp + D * i, 0, (size_t)D * sizeof *P->vp);
+            memset(P->w + W * i, 0, (size_t)W * sizeof *P->w);
+            memset(P->wp + W * i, 0, (size_t)W * sizeof *P->wp);
+        }
+        dm_particle_set_mass(w, i, in[0] != 0.0);
+        w->nlist_valid = false; /* the pairs it may have change */
+        break;
     }
     w->forces_valid = false;
 }

@@ -2,7 +2,7 @@
  * state (watchdog.c), snapshots and checkpoints (checkpoint.c).
  *
  * The copy holds everything a world is: parameters, materials and pairs,
- * particles in storage order, handles, walls, the drum, the contact lists
+ * particles in storage order, handles, walls, bodies, the drum, the contact lists
  * with their histories, tallies and counters. It leaves out what is derived
  * again before use (the neighbour grid's scratch, the per-pair results, the
  * wall-contact geometry, the refinement's scratch): the destination keeps its
@@ -22,8 +22,8 @@ typedef struct buffer {
     size_t bytes;
 } buffer;
 
-/* particles 15, handles 2 × 3, pairs, table, walls, spectrum 2, buckets 4 each */
-#define MAX_BUFFERS (15 + 6 + 3 + 2 + 2 * DM_KERNELS * 4)
+/* particles 15, handles 3 × 3, pairs, table, walls, bodies, spectrum 2, buckets 4 each */
+#define MAX_BUFFERS (15 + 9 + 4 + 2 + 2 * DM_KERNELS * 4)
 
 /* The buffers of state s (its pointers and sizes), into b; returns how many. */
 static size_t buffers_of(demill_world *s, buffer *b)
@@ -48,8 +48,8 @@ static size_t buffers_of(demill_world *s, buffer *b)
     ADD(P->iinv, n * sizeof(double));
     ADD(P->mat, n * sizeof(uint16_t));
     ADD(P->hid, n * sizeof(uint32_t));
-    dm_handles *h[2] = {&s->ph, &s->wh};
-    for (int c = 0; c < 2; c++) {
+    dm_handles *h[3] = {&s->ph, &s->wh, &s->bh};
+    for (int c = 0; c < 3; c++) {
         ADD(h[c]->slot, h[c]->cap * sizeof(uint32_t));
         ADD(h[c]->gen, h[c]->cap * sizeof(uint16_t));
         ADD(h[c]->free, h[c]->cap * sizeof(uint32_t));
@@ -57,6 +57,7 @@ static size_t buffers_of(demill_world *s, buffer *b)
     ADD(s->pairs, s->cap_pairs * sizeof *s->pairs);
     ADD(s->ptab, nm * nm * sizeof *s->ptab);
     ADD(s->walls, s->cap_walls * sizeof *s->walls);
+    ADD(s->bodies, s->cap_bodies * sizeof *s->bodies);
     dm_spectrum *sp = &s->drum.spectrum;
     ADD(sp->edges, (sp->nclasses ? sp->nclasses - 1 : 0) * sizeof(double));
     ADD(sp->counts, (sp->counts ? dm_spectrum_counters(sp) : 0) * sizeof(uint64_t));

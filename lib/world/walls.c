@@ -96,6 +96,10 @@ DEMILL_API demill_status demill_wall_set_motion(demill_world *w, demill_id id,
         return dm_fail(w, DEMILL_ERR_DIMENSION,
                        "angular_velocity has x or y components but the world is 2D");
     dm_wall *wall = &w->walls[slot];
+    if (wall->body)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "wall_set_motion: the wall is attached to body 0x%llx and moves with it",
+                       (unsigned long long)dm_body_id(w, wall->body - 1));
     dm_wall_rebase(wall, w->time, w->time);
     for (int c = 0; c < 3; c++) {
         if (centre)

@@ -48,14 +48,17 @@ void dm_watch_free(demill_world *w)
  * than the drum's move and nothing tallies their work. */
 static demill_status energies(demill_world *w, dm_watch_energy *e, int *unknown)
 {
-    double t[5];
+    double t[DM_ENERGIES];
     demill_status s = dm_energies(w, 1, t);
     const dm_tally *y = &w->tally;
-    e->kinetic = t[0] + t[1];
-    e->potential = t[2];
-    e->elastic = t[3] + t[4];
-    e->dissipated = y->diss_normal + y->diss_tangential + y->diss_friction + y->diss_rolling;
-    e->work = w->energy_tracking ? y->wall_work : w->drum.alive ? w->drum.energy_in : 0.0;
+    const double *b = t + 5;
+    e->kinetic = t[0] + t[1] + b[DM_BODY_KINETIC];
+    e->potential = t[2] + b[DM_BODY_POTENTIAL];
+    e->elastic = t[3] + t[4] + b[DM_BODY_ELASTIC];
+    e->dissipated = y->diss_normal + y->diss_tangential + y->diss_friction + y->diss_rolling +
+                    b[DM_BODY_DISSIPATED];
+    e->work = (w->energy_tracking ? y->wall_work : w->drum.alive ? w->drum.energy_in : 0.0) +
+              b[DM_BODY_WORK];
     *unknown = 0;
     for (uint32_t k = 0; k < w->nwalls && !w->energy_tracking; k++) {
         const dm_wall *wall = &w->walls[k];

@@ -60,7 +60,9 @@ DEMILL_API void demill_world_destroy(demill_world *w)
     dm_refine_free(w);
     dm_watch_free(w);
     dm_handles_free(&w->wh);
+    dm_handles_free(&w->bh);
     free(w->walls);
+    free(w->bodies);
     free(w->pairs);
     free(w->ptab);
     dm_tag_release(w->tag);

@@ -11,6 +11,7 @@
 #include "base/random.h"
 #include "base/status.h"
 #include "base/threads.h"
+#include "physics/bodies/bodies.h"
 #include "physics/broadphase/broadphase.h"
 #include "physics/contact/contact.h"
 #include "physics/geometry/geometry.h"
@@ -33,6 +34,7 @@ demill_id dm_particle_id(const demill_world *w, uint32_t storage);
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
 demill_id dm_material_id(const demill_world *w, uint32_t material);
 demill_id dm_drum_id(const demill_world *w);
+demill_id dm_body_id(const demill_world *w, uint32_t slot);
 
 /* ---- particles (particles.c, material.c) ------------------------------------------ */
 demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const double *positions,
@@ -84,6 +86,9 @@ demill_status dm_check_time_step(demill_world *w);
 demill_status dm_state_copy(demill_world *dst, const demill_world *src);
 demill_status dm_state_restore(demill_world *w, const demill_world *src);
 void dm_state_free(demill_world *s);
-demill_status dm_energies(demill_world *w, int stored, double e[5]);
+/* The energies of the state (energy.c): e[0..4] the particles' (see there),
+ * e[5 + DM_BODY_*] the bodies' summed. */
+#define DM_ENERGIES (5 + DM_BODY_ENERGIES)
+demill_status dm_energies(demill_world *w, int stored, double e[DM_ENERGIES]);
 
 #endif /* DM_WORLD_H */

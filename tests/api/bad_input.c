@@ -78,6 +78,7 @@ typedef struct scene {
     demill_id pid[MAXP]; /* every particle id ever added, in order */
     size_t np;
     demill_id gone_p[2], gone_wall; /* removed ids (setup_removed) */
+    demill_id body;                 /* a body the snapshot reads (setup_body) */
     unsigned nsnaps;
     int calls, failures;
     char ctx[256];
@@ -148,7 +149,9 @@ static void snap_take(scene *sc, snap *s)
     double *buf = calloc(3 * n + 3, sizeof *buf);
     demill_id *ids = calloc(n + 1, sizeof *ids);
     ck_assert(buf && ids);
-    for (int32_t f = DEMILL_PARTICLE_POSITION; f <= (sc->dim == 2 ? 8 : 7); f++) {
+    for (int32_t f = DEMILL_PARTICLE_POSITION; f <= DEMILL_PARTICLE_FIXED; f++) {
+        if (f == DEMILL_PARTICLE_ANGLE && sc->dim == 3)
+            continue;
         size_t size = (size_t)demill_particle_field_size(f);
         memset(buf, 0, (3 * n + 3) * sizeof *buf);
         cnt = 0;
@@ -192,8 +195,26 @@ static void snap_take(scene *sc, snap *s)
                 put_d(s, "wall", f, (size_t)(3 * k + c), st, v[c]);
         }
 
+    /* bodies */
+    size_t nb = 0;
+    st = demill_world_ids(w, DEMILL_KIND_BODY, NULL, 0, &nb);
+    put(s, "body count", 0, 0, st, nb);
+    if (sc->body) {
+        for (int32_t f = DEMILL_BODY_POSITION; f <= DEMILL_BODY_FORCE_EXTERNAL; f++) {
+            double v[3] = {0, 0, 0};
+            st = demill_body_get(w, sc->body, f, v);
+            for (int c = 0; c < 3; c++)
+                put_d(s, "body", f, (size_t)c, st, v[c]);
+        }
+        for (int32_t t = DEMILL_ENERGY_BODY_KINETIC; t <= DEMILL_ENERGY_BODY_WORK; t++) {
+            double v = 0.0;
+            st = demill_body_energy(w, sc->body, t, &v);
+            put_d(s, "body energy", t, 0, st, v);
+        }
+    }
+
     /* energies */
-    for (int32_t t = DEMILL_ENERGY_KINETIC_TRANSLATIONAL; t <= DEMILL_ENERGY_TOTAL; t++) {
+    for (int32_t t = DEMILL_ENERGY_KINETIC_TRANSLATIONAL; t <= DEMILL_ENERGY_BODY_WORK; t++) {
         double v = 0.0;
         st = demill_world_energy(w, t, &v);
         put_d(s, "energy", t, 0, st, v);
@@ -1124,7 +1145,7 @@ static void bad_particles_write(scene *sc)
         BAD(sc, DEMILL_ERR_READ_ONLY, demill_particles_write(w, ro[k], cur, m), "read");
         free(cur);
     }
-    static const int32_t unknown[] = {0, 9, 99, 100, 101, -1};
+    static const int32_t unknown[] = {0, 10, 99, 100, 101, -1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -1198,7 +1219,7 @@ static void bad_particle_set(scene *sc)
         ctx(sc, "particle_set read-only field %d", (int)ro[k]);
         BAD(sc, DEMILL_ERR_READ_ONLY, demill_particle_set(w, p, ro[k], cur), "read");
     }
-    static const int32_t unknown[] = {0, 9, 99, 100, 101, -1};
+    static const int32_t unknown[] = {0, 10, 99, 100, 101, -1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -1311,6 +1332,153 @@ static void bad_walls(scene *sc)
 START_TEST(wall_values)
 {
     both_dims(NULL, bad_walls, NULL);
+}
+END_TEST
+
+/* ------------------------------------------------------------------------ */
+/* Bodies and fixed particles                                                 */
+
+/* A body free along y on a spring, driven, with a plane wall x = 0.5 of its
+ * own; particle 0 (id order) fixed. */
+static void setup_body(scene *sc)
+{
+    demill_world *w = sc->w;
+    const double c[3] = {0, 0.1, 0}, p[3] = {0.5, 0, 0}, n[3] = {-1, 0, 0}, f[3] = {0, 1, 0};
+    const double one = 1.0;
+    DM_OK(w, demill_body_add(w, 0.3, c, DEMILL_BODY_AXIS_Y, 0, &sc->body));
+    DM_OK(w, demill_body_set_spring(w, sc->body, DEMILL_BODY_AXIS_Y, 1000, 1, 0.1));
+    DM_OK(w, demill_body_set_force(w, sc->body, f, 10, 0.1));
+    DM_OK(w, demill_wall_add_plane(w, sc->mat[0], p, n, &sc->wall[1]));
+    DM_OK(w, demill_body_attach_wall(w, sc->body, sc->wall[1]));
+    sc->nwall = 2;
+    DM_OK(w, demill_particle_set(w, id_at(sc, 0), DEMILL_PARTICLE_FIXED, &one));
+    DM_OK(w, demill_world_step(w, 10));
+}
+
+static void bad_bodies(scene *sc)
+{
+    demill_world *w = sc->w;
+    const demill_id b = sc->body;
+    const double c[3] = {0, 0, 0}, v1[3] = {0.1, 0, 0};
+    demill_id out;
+    double o[3];
+    ctx(sc, "body_add");
+    const double masses[3] = {0.0, -1.0, -INFINITY};
+    for (int k = 0; k < 3; k++)
+        BAD_ANY(sc, BIT(DEMILL_ERR_INVALID_VALUE) | BIT(DEMILL_ERR_NOT_FINITE),
+                demill_body_add(w, masses[k], c, DEMILL_BODY_AXIS_X, 0, &out), "mass");
+    BAD(sc, DEMILL_ERR_NOT_FINITE, demill_body_add(w, NAN, c, 1, 0, &out), "mass");
+    for (int k = 0; k < 3; k++) {
+        double bad[3] = {0, 0, 0};
+        bad[k] = NAN;
+        BAD(sc, DEMILL_ERR_NOT_FINITE, demill_body_add(w, 1.0, bad, 1, 0, &out), "centre");
+    }
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_add(w, 1.0, c, 8, 0, &out), "free_axes");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_add(w, 1.0, c, -1, 0, &out), "free_axes");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_add(w, 1.0, c, 1, 2, &out), "flags");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_body_add(w, 1.0, NULL, 1, 0, &out), "centre");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_body_add(w, 1.0, c, 1, 0, NULL), "out");
+    if (sc->dim == 2) {
+        const double cz[3] = {0, 0, 1};
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_body_add(w, 1.0, c, DEMILL_BODY_AXIS_Z, 0, &out),
+            "2D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_body_add(w, 1.0, cz, 1, 0, &out), "2D");
+    }
+
+    ctx(sc, "body_set_spring");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_body_set_spring(w, b, 2, -1, 0, 0), "stiffness");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_body_set_spring(w, b, 2, 1, -1, 0), "damping");
+    for (int k = 0; k < 3; k++) {
+        double v[3] = {1, 1, 0};
+        v[k] = NAN;
+        BAD(sc, DEMILL_ERR_NOT_FINITE, demill_body_set_spring(w, b, 2, v[0], v[1], v[2]),
+            "finite");
+        v[k] = INFINITY;
+        BAD(sc, DEMILL_ERR_NOT_FINITE, demill_body_set_spring(w, b, 2, v[0], v[1], v[2]),
+            "finite");
+    }
+    const int32_t axes[4] = {0, 3, 8, -2};
+    for (int k = 0; k < 4; k++)
+        BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_set_spring(w, b, axes[k], 1, 0, 0), "axis");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_body_set_spring(w, b, DEMILL_BODY_AXIS_X, 1, 0, 0), "does not move");
+    BAD(sc, sc->dim == 2 ? DEMILL_ERR_DIMENSION : DEMILL_ERR_INVALID_VALUE,
+        demill_body_set_spring(w, b, DEMILL_BODY_AXIS_Z, 1, 0, 0), "z");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_body_set_spring(w, sc->wall[1], 2, 1, 0, 0),
+        "body");
+
+    ctx(sc, "body_set_force");
+    for (int k = 0; k < 3; k++) {
+        double a[3] = {0, 1, 0};
+        a[k] = NAN;
+        BAD(sc, DEMILL_ERR_NOT_FINITE, demill_body_set_force(w, b, a, 10, 0), "amplitude");
+    }
+    BAD(sc, DEMILL_ERR_NOT_FINITE, demill_body_set_force(w, b, v1, NAN, 0), "frequency");
+    BAD(sc, DEMILL_ERR_NOT_FINITE, demill_body_set_force(w, b, v1, 10, INFINITY), "phase");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_body_set_force(w, b, v1, -1, 0), "frequency");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_body_set_force(w, b, NULL, 10, 0), "amplitude");
+    if (sc->dim == 2) {
+        const double az[3] = {0, 0, 1};
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_body_set_force(w, b, az, 10, 0), "2D");
+    }
+
+    ctx(sc, "body_attach_wall");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_body_attach_wall(w, b, sc->wall[1]), "already");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_body_attach_wall(w, b, sc->wall[0]), "moves");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_body_attach_wall(w, b, sc->pid[1]), "wall");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_body_attach_wall(w, sc->wall[0], sc->wall[1]),
+        "body");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_set_motion(w, sc->wall[1], v1, NULL, NULL),
+        "attached");
+
+    ctx(sc, "body_get, body_energy, body_remove");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_get(w, b, 0, o), "body field");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_get(w, b, 7, o), "body field");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_body_get(w, b, DEMILL_BODY_POSITION, NULL), "out");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_energy(w, b, DEMILL_ENERGY_TOTAL, o), "energy");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_energy(w, b, 18, o), "energy");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_body_energy(w, b, DEMILL_ENERGY_BODY_WORK, NULL),
+        "value");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_body_remove(w, sc->wall[1]), "body");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_body_get(w, DEMILL_ID_NONE, 1, o), "body");
+
+    ctx(sc, "fixed particles");
+    const demill_id fixed = id_at(sc, 0);
+    const double bad_flags[3] = {2.0, 0.5, -1.0};
+    for (int k = 0; k < 3; k++)
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_particle_set(w, fixed, DEMILL_PARTICLE_FIXED, bad_flags + k), "fixed");
+    const double nan1 = NAN;
+    BAD(sc, DEMILL_ERR_NOT_FINITE, demill_particle_set(w, fixed, DEMILL_PARTICLE_FIXED, &nan1),
+        "fixed");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_particle_set(w, fixed, DEMILL_PARTICLE_VELOCITY, v1),
+        "fixed");
+    const double spin[3] = {0, 0, 1};
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_particle_set(w, fixed, DEMILL_PARTICLE_ANGULAR_VELOCITY, spin), "fixed");
+    size_t n;
+    double *vel = read_field(sc, DEMILL_PARTICLE_VELOCITY, &n);
+    vel[0] = 0.5; /* particle 0, the fixed one */
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_particles_write(w, DEMILL_PARTICLE_VELOCITY, vel, n),
+        "particle 0", "fixed");
+    free(vel);
+
+    ctx(sc, "the iterative refinement with a body");
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT));
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_world_step(w, 1), "refinement", "bodies");
+}
+
+/* Choosing an integrator makes the forces be evaluated afresh: the twin
+ * chooses velocity Verlet too. */
+static void fix_integrator(scene *sc)
+{
+    DM_OK(sc->w, demill_world_set(sc->w, DEMILL_WORLD_INTEGRATOR,
+                                  DEMILL_INTEGRATOR_VELOCITY_VERLET));
+}
+
+START_TEST(body_values)
+{
+    both_dims(setup_body, bad_bodies, fix_integrator);
 }
 END_TEST
 
@@ -1549,7 +1717,7 @@ static void bad_reads(scene *sc)
         ctx(sc, "particles_read_ids field %d, out and count NULL", (int)f);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_particles_read_ids(w, f, NULL, n, NULL), "NULL");
     }
-    static const int32_t unknown_p[] = {0, 9, 99, 100, -1};
+    static const int32_t unknown_p[] = {0, 10, 99, 100, -1};
     for (size_t k = 0; k < sizeof unknown_p / sizeof unknown_p[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown_p[k]);
@@ -1618,7 +1786,7 @@ static void bad_reads(scene *sc)
         ctx(sc, "world_energy term %d into NULL", (int)t);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_world_energy(w, t, NULL), "NULL");
     }
-    static const int32_t unknown_e[] = {0, 13, 100, -1};
+    static const int32_t unknown_e[] = {0, 18, 100, -1};
     for (size_t k = 0; k < sizeof unknown_e / sizeof unknown_e[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown_e[k]);
@@ -1994,6 +2162,7 @@ int main(void)
     tcase_add_test(tc, particles_write_values);
     tcase_add_test(tc, particle_set_values);
     tcase_add_test(tc, wall_values);
+    tcase_add_test(tc, body_values);
     tcase_add_test(tc, removed_handles);
     tcase_add_test(tc, foreign_handles);
     tcase_add_test(tc, wrong_kind_and_none_handles);

@@ -133,3 +133,17 @@ dm_collision dm_test_bounce(demill_world *w, demill_id mat, double r, double v0,
     DM_OK(w, demill_wall_remove(w, plane));
     return o;
 }
+
+dm_collision dm_test_hit_fixed(demill_world *w, demill_id mat, double r, double v0, double dt,
+                               double phase)
+{
+    const double gap = (3.0 + phase) * v0 * dt, one = 1.0;
+    double x[6] = {-r - gap, 0, 0, r, 0, 0}, v[6] = {v0, 0, 0, 0, 0, 0}, rr[2] = {r, r};
+    demill_id ids[2];
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+    DM_OK(w, demill_particles_add(w, mat, 2, x, rr, v, 0, ids));
+    DM_OK(w, demill_particle_set(w, ids[1], DEMILL_PARTICLE_FIXED, &one));
+    const dm_collision o = measure(w, ids, 0, r, v0, dt, gap);
+    DM_OK(w, demill_particles_remove(w, 2, ids));
+    return o;
+}

@@ -73,4 +73,11 @@ demill_world *dm_test_chain(int n, double fraction, demill_id *ids);
 dm_collision dm_test_bounce(demill_world *w, demill_id mat, double r, double v0, double dt,
                             double phase);
 
+/* A sphere of material mat and radius r moving at v0 along x hits a fixed
+ * sphere of the same size and material head-on, from a gap that closes
+ * after (3 + phase) steps of dt; returns what dm_test_collide() returns.
+ * Both are removed afterwards. */
+dm_collision dm_test_hit_fixed(demill_world *w, demill_id mat, double r, double v0, double dt,
+                               double phase);
+
 #endif

@@ -194,6 +194,7 @@ static void scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t
     const double *x = P->x, *r = P->r, *xi = P->x + D * i;
     const double ri = r[i] + w->skin;
     const dm_pairparam *row = w->ptab + P->mat[i] * w->nmat_tab;
+    const bool fixed = dm_particle_fixed(P, i);
     uint32_t near[SCAN_BLOCK];
     for (uint32_t b0 = j0; b0 < j1; b0 += SCAN_BLOCK) {
         const uint32_t b1 = j1 - b0 < SCAN_BLOCK ? j1 : b0 + SCAN_BLOCK;
@@ -210,7 +211,8 @@ static void scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t
         }
         for (uint32_t q = 0; q < m; q++) {
             const int kern = row[P->mat[near[q]]].kernel;
-            if (kern >= 0)
+            /* two fixed particles do not touch */
+            if (kern >= 0 && (!fixed || !dm_particle_fixed(P, near[q])))
                 pairbuf_push(pb, i, near[q], kern);
         }
     }
@@ -282,7 +284,7 @@ static void search_range(demill_world *w, void *arg, int t, uint32_t begin, uint
     const uint32_t nm = w->nmat_tab;
     const double skin = w->skin;
     for (uint32_t i = start[c0], i1 = start[cell]; i < i1; i++)
-        for (uint32_t k = 0; k < w->nwalls; k++) {
+        for (uint32_t k = 0; k < w->nwalls && !dm_particle_fixed(P, i); k++) {
             const dm_wall *wall = &w->walls[k];
             if (!wall->kind || dm_wall_distance_bound(wall, P->x + D * i, D) >= P->r[i] + skin)
                 continue;

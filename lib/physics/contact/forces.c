@@ -111,7 +111,8 @@ static void sum_forces3(demill_world *w, void *arg, int t, uint32_t p0, uint32_t
 
 /* The walls' forces and torques (about their centres) from their contacts'
  * results, in pair-id order; with tally, their dissipation and the work
- * they deliver over dt. */
+ * they deliver over dt (but for the walls of bodies, whose energy the
+ * account holds: what they deliver comes from it). */
 DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_tally *t)
 {
     const int W = D == 3 ? 3 : 1, S = D + 2 * W;
@@ -145,9 +146,9 @@ DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_
                     wall->torque[z] += tw[c];
                     work -= tw[c] * wall->omega[z];
                 }
-                if (tally) {
+                if (tally) { /* a body's walls: work within the system (bodies.c) */
                     wall->dissipated += g->lost[gk];
-                    t->wall_work += work * dt;
+                    t->wall_work += wall->body ? 0.0 : work * dt;
                 }
             }
         }

@@ -137,7 +137,7 @@ DM_INLINE void dm_pp_kin(const int D, const int SPIN, const int ROLL, const dm_p
         for (int c = 0; c < W; c++)
             k->wrel[c] = wp[W * i + c] - wp[W * j + c];
     k->rstar = rad[i] * rad[j] / sum;
-    k->mstar = P->m[i] * P->m[j] / (P->m[i] + P->m[j]);
+    k->mstar = 1.0 / (P->im[i] + P->im[j]); /* a fixed particle's 1/m is 0 */
 }
 
 /* Particle-wall kinematics of a touching candidate, from its geometry gk. */

@@ -1,5 +1,6 @@
-/* geometry.h: walls with prescribed rigid motion, and the contact geometry
- * of particle-wall candidates (walls.c). Uses the base and the state. */
+/* geometry.h: walls with prescribed rigid motion or moved by a body, and
+ * the contact geometry of particle-wall candidates (walls.c). Uses the base
+ * and the state. */
 #ifndef DM_GEOMETRY_H
 #define DM_GEOMETRY_H
 
@@ -18,6 +19,12 @@ void dm_wall_rebase(dm_wall *wall, double now, double t0);
 void dm_walls_advance(demill_world *w, double time);
 /* Moves the world's clock to `time` without moving the walls. */
 void dm_walls_retime(demill_world *w, double time);
+/* A body's wall (wall->body): its pose and velocity from the body's. */
+void dm_wall_at_body(const demill_world *w, dm_wall *wall);
+/* Attaches a wall at rest to body `slot`, its current pose the reference the
+ * body moves; detaches it, leaving it at rest where it is. */
+void dm_wall_attach(demill_world *w, dm_wall *wall, uint32_t slot);
+void dm_wall_detach(demill_world *w, dm_wall *wall);
 
 /* Signed distance of x from the wall's surface (positive on the particle
  * side), and the unit normal from x into the wall. */

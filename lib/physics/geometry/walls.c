@@ -1,5 +1,6 @@
 /* walls.c: walls with prescribed rigid motion (docs/physics.md §7): their
  * exact kinematics and the contact geometry of each particle-wall candidate.
+ * A wall attached to a body (bodies/bodies.c) takes its pose from the body.
  * Kinds: planes (free walls, and the drum's end caps), the inside of the
  * drum's cylindrical shell, and prisms with a convex polygonal cross-section
  * (the lifters). Each kind contributes one closest-point function
@@ -75,12 +76,54 @@ void dm_wall_rebase(dm_wall *wall, double now, double t0)
     dm_wall_at(wall, t0);
 }
 
-/* Moves the world's clock to `time` without moving the walls. */
+/* Moves the world's clock to `time` without moving the walls (a body's
+ * walls do not follow the clock but their body). */
 void dm_walls_retime(demill_world *w, double time)
 {
     for (uint32_t k = 0; k < w->nwalls; k++)
-        if (w->walls[k].kind && !w->walls[k].drum_part)
+        if (w->walls[k].kind && !w->walls[k].drum_part && !w->walls[k].body)
             dm_wall_rebase(&w->walls[k], w->time, time);
+}
+
+/* A wall attached to a body: its reference shifted by the body's
+ * displacement since it was attached, moving with the body's velocity
+ * (bodies translate: rot stays the identity). */
+void dm_wall_at_body(const demill_world *w, dm_wall *wall)
+{
+    const dm_body *b = &w->bodies[wall->body - 1];
+    for (int c = 0; c < 3; c++) {
+        const double d = b->x[c] - wall->body_ref[c];
+        wall->c[c] = wall->c0[c] + d;
+        wall->p[c] = wall->p0[c] + d;
+        wall->n[c] = wall->n0[c];
+        wall->vel[c] = b->vp[c];
+        wall->omega[c] = 0.0;
+    }
+    memset(wall->rot, 0, sizeof wall->rot);
+    wall->rot[0] = wall->rot[4] = wall->rot[8] = 1.0;
+}
+
+/* Attaches a wall at rest to body `slot`: its current pose becomes its
+ * reference, which the body moves from now on. */
+void dm_wall_attach(demill_world *w, dm_wall *wall, uint32_t slot)
+{
+    dm_wall_rebase(wall, w->time, w->time);
+    wall->body = slot + 1;
+    memcpy(wall->body_ref, w->bodies[slot].x, sizeof wall->body_ref);
+    dm_wall_at_body(w, wall);
+}
+
+/* Detaches a wall from its body: it stays where the body left it, at rest. */
+void dm_wall_detach(demill_world *w, dm_wall *wall)
+{
+    memcpy(wall->p0, wall->p, sizeof wall->p);
+    memcpy(wall->n0, wall->n, sizeof wall->n);
+    memcpy(wall->c0, wall->c, sizeof wall->c);
+    memset(wall->vel, 0, sizeof wall->vel);
+    memset(wall->body_ref, 0, sizeof wall->body_ref);
+    wall->body = 0;
+    wall->t0 = w->time;
+    dm_wall_at(wall, w->time);
 }
 
 /* A drum wall at drum angle theta, turning at omega about the z axis. */
@@ -116,7 +159,8 @@ static void wall_at_drum(dm_wall *wall, double theta, double omega)
 }
 
 /* Moves every wall to `time`; the drum's walls to the drum's angle and speed,
- * which the drum has been moved to (dm_drum_advance). */
+ * which the drum has been moved to (dm_drum_advance), and the bodies' walls
+ * to their bodies' positions. */
 void dm_walls_advance(demill_world *w, double time)
 {
     const double theta = w->drum.theta, omega = w->drum.omega;
@@ -126,6 +170,8 @@ void dm_walls_advance(demill_world *w, double time)
             continue;
         if (wall->drum_part)
             wall_at_drum(wall, theta, omega);
+        else if (wall->body)
+            dm_wall_at_body(w, wall);
         else
             dm_wall_at(wall, time);
     }

@@ -2,7 +2,8 @@
  * dm_integrate(): velocity Verlet (default), symplectic Euler and the
  * iterative refinement (refine.c). Each step
  * moves the particles, advances the walls, rebuilds the neighbour lists when
- * the skin is used up, and evaluates the forces of the new state.
+ * the skin is used up, and evaluates the forces of the new state. Bodies
+ * (bodies.c) take the same half steps as the particles.
  *
  * Velocity Verlet here differs from the usual DEM form in one respect: the
  * dashpots and friction see the predicted end-of-step velocity v + a Δt rather
@@ -15,6 +16,7 @@
 
 #include "base/status.h"
 #include "base/threads.h"
+#include "physics/bodies/bodies.h"
 #include "physics/broadphase/broadphase.h"
 #include "physics/contact/contact.h"
 #include "physics/integrate/integrate.h"
@@ -207,6 +209,8 @@ static demill_status verlet(demill_world *w, uint64_t steps)
     for (uint64_t s = 0; s < steps; s++) {
         a.kick = s > 0;
         const double d2 = drift(w, d3 ? verlet_drift3 : verlet_drift2, &a);
+        if (w->nbodies)
+            dm_bodies_drift(w, w->dt, a.kick, 1);
         demill_status st = finish_step(w, d2, P->vp, P->wp, 0.5);
         if (st)
             return st;
@@ -214,6 +218,8 @@ static demill_status verlet(demill_world *w, uint64_t steps)
     a.kick = a.predict = 0;
     a.hth = 0.0;
     dm_parallel(w, P->n, d3 ? kick3 : kick2, &a);
+    if (w->nbodies)
+        dm_bodies_kick(w, a.h);
     return DEMILL_OK;
 }
 
@@ -224,6 +230,8 @@ static demill_status euler(demill_world *w, uint64_t steps)
     step_args a = {.dt = w->dt, .h = w->dt, .hth = w->dt, .rotation = w->rotation};
     for (uint64_t s = 0; s < steps; s++) {
         const double d2 = drift(w, d3 ? euler_drift3 : euler_drift2, &a);
+        if (w->nbodies)
+            dm_bodies_drift(w, w->dt, 0, 0);
         demill_status st = finish_step(w, d2, P->v, P->w, 1.0);
         if (st)
             return st;
@@ -240,6 +248,14 @@ demill_status dm_prepare_step(demill_world *w)
                        "world_step: at t = %.17g s a time step of %g s does not advance the "
                        "clock; set world.time nearer 0",
                        w->time, w->dt);
+    uint32_t bodies = 0;
+    for (uint32_t k = 0; k < w->nbodies; k++)
+        bodies += dm_body_live(w, k);
+    if (bodies && w->integrator == DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "world_step: the iterative refinement does not integrate bodies (the "
+                       "world has %u); use velocity Verlet or symplectic Euler",
+                       bodies);
     demill_status s = dm_resolve_pairs(w, true);
     if (s || (s = dm_drum_prepare(w)))
         return s;

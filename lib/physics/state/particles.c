@@ -104,3 +104,14 @@ void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, 
     *m = mass;
     *inv_i = 1.0 / inertia;
 }
+
+/* Sets particle i's mass from its material and radius, and its inverse mass
+ * and moment of inertia: 0 for a fixed particle, which no force moves. */
+void dm_particle_set_mass(demill_world *w, uint32_t i, bool fixed)
+{
+    dm_particles *P = &w->p;
+    dm_particle_mass(w, P->mat[i], P->r[i], &P->m[i], &P->iinv[i]);
+    P->im[i] = 1.0 / P->m[i];
+    if (fixed)
+        P->im[i] = P->iinv[i] = 0.0;
+}

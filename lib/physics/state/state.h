@@ -88,12 +88,37 @@ typedef struct dm_wall {
     /* results of the last force evaluation */
     double force[3], torque[3];
     double dissipated;     /* energy dissipated in contacts with the wall (tally) */
+    /* a wall attached to a body (bodies/bodies.c) moves with it: its pose is
+     * its reference (p0, n0, c0) shifted by the body's motion since body_ref */
+    uint32_t body;         /* body slot + 1; 0: not attached */
+    double body_ref[3];    /* the body's position when the wall was attached */
 } dm_wall;
 
 /* Wall kinds: a plane (half-space), the inside of a cylindrical shell about
  * the z axis, a prism along z with a convex polygonal cross-section. */
 enum { DM_WALL_PLANE = 1, DM_WALL_SHELL = 2, DM_WALL_PRISM = 3 };
 enum { DM_PART_NONE = 0, DM_PART_SHELL = 1, DM_PART_CAP = 2, DM_PART_LIFTER = 3 };
+
+/* ---- bodies (bodies/bodies.c) -------------------------------------------- */
+/* A rigid body moved by the particles on its walls, springs and dampers to
+ * the ground per axis, gravity and an external force F0 sin(2π f t + φ);
+ * it translates along its free axes (bit a: axis a), without rotation. */
+typedef struct dm_body {
+    uint32_t handle;       /* handle index; DM_FREE for a free slot */
+    int free_axes;         /* bit mask of the axes it moves along */
+    int gravity;           /* 1: gravity acts on it */
+    double mass;
+    double x[3], v[3];     /* position of its centre and velocity */
+    double vp[3];          /* the velocity its walls show the contacts (velocity
+                              Verlet: the predicted end-of-step velocity) */
+    double k[3], c[3], rest[3]; /* per axis: spring stiffness, damping, rest position */
+    double f0[3], freq, phase;  /* external force: amplitude, frequency, phase */
+    /* energy tallies: the position and the external and damper forces at the
+     * last force evaluation (trapezoidal rule), the external force's work and
+     * the dampers' dissipation since the body was added */
+    double x_tally[3], fe_tally[3], fd_tally[3];
+    double work, dissipated;
+} dm_body;
 
 /* ---- particles (state/particles.c) ------------------------------------- */
 /* Structure of arrays in storage order (sorted by cell at each neighbour
@@ -104,7 +129,7 @@ typedef struct dm_particles {
     double *vp;              /* D: predicted end-of-step velocity (velocity Verlet) */
     double *w, *t, *wp;      /* W per particle: angular velocity, torque, predicted ω */
     double *theta;           /* 2D rotation angle */
-    double *r, *m, *im, *iinv; /* radius, mass, 1/m, 1/I */
+    double *r, *m, *im, *iinv; /* radius, mass, 1/m, 1/I (both 0: a fixed particle) */
     uint16_t *mat;           /* material slot */
     uint32_t *hid;           /* handle index */
 } dm_particles;
@@ -354,6 +379,11 @@ struct demill_world {
     uint32_t nwalls, cap_walls;
     dm_handles wh;
 
+    /* bodies moved by the particles */
+    dm_body *bodies;
+    uint32_t nbodies, cap_bodies; /* slots in use (some may be free), room */
+    dm_handles bh;
+
     /* the mill drum (at most one) */
     dm_drum drum;
     uint16_t drum_gen;      /* generation of the drum id: drums removed so far
@@ -396,5 +426,13 @@ void dm_particles_free(demill_world *w);
 /* The mass and the inverse moment of inertia of a particle of material mat
  * and radius r (a sphere, or in 2D a disc of the world's thickness). */
 void dm_particle_mass(const demill_world *w, uint32_t mat, double r, double *m, double *inv_i);
+/* Sets particle i's mass from its material and radius, and its inverse mass
+ * and moment of inertia: 0 for a fixed particle, which no force moves. */
+void dm_particle_set_mass(demill_world *w, uint32_t i, bool fixed);
+/* Whether particle i is fixed (its inverse mass is 0). */
+static inline bool dm_particle_fixed(const dm_particles *P, uint32_t i)
+{
+    return P->im[i] == 0.0;
+}
 
 #endif /* DM_STATE_H */
