@@ -137,7 +137,10 @@ DM_INLINE void dm_pp_kin(const int D, const int SPIN, const int ROLL, const dm_p
         for (int c = 0; c < W; c++)
             k->wrel[c] = wp[W * i + c] - wp[W * j + c];
     k->rstar = rad[i] * rad[j] / sum;
-    k->mstar = 1.0 / (P->im[i] + P->im[j]); /* a fixed particle's 1/m is 0 */
+    /* against a fixed particle (1/m = 0), the moving one's mass: selects,
+     * which the kinematics loops vectorise */
+    const double mi = P->m[i], mj = P->m[j], both = mi * mj / (mi + mj);
+    k->mstar = P->im[i] == 0.0 ? mj : P->im[j] == 0.0 ? mi : both;
 }
 
 /* Particle-wall kinematics of a touching candidate, from its geometry gk. */
