@@ -122,6 +122,14 @@ PROTOTYPES = {
 #: VTK output, snapshots and checkpoints, object listing, grinding): bound
 #: when the library has them.
 OPTIONAL_PROTOTYPES = {
+    # body.h
+    "demill_body_add": (status, (WorldP, c_double, dptr, c_int32, c_uint32, idptr)),
+    "demill_body_remove": (status, (WorldP, id_t)),
+    "demill_body_set_spring": (status, (WorldP, id_t, c_int32, c_double, c_double, c_double)),
+    "demill_body_set_force": (status, (WorldP, id_t, dptr, c_double, c_double)),
+    "demill_body_attach_wall": (status, (WorldP, id_t, id_t)),
+    "demill_body_get": (status, (WorldP, id_t, c_int32, dptr)),
+    "demill_body_energy": (status, (WorldP, id_t, c_int32, dptr)),
     "demill_world_set_progress": (status, (WorldP, ProgressFn, c_void_p, c_uint64)),
     "demill_vtk_write_particles": (status, (WorldP, c_char_p)),
     "demill_vtk_write_walls": (status, (WorldP, c_char_p)),

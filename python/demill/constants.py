@@ -12,8 +12,9 @@ from enum import IntEnum, IntFlag
 __all__ = ["VERSION_MAJOR", "VERSION_MINOR", "VERSION_PATCH", "VERSION_NUMBER",
            "VERSION_STRING", "ID_NONE", "Status", "Kind", "Integrator", "WorldKey",
            "MaterialKey", "Normal", "Damping", "Tangential", "Rolling", "PairKey",
-           "ParticleField", "IdField", "AddFlag", "WallField", "ContactField", "Energy",
-           "DrumKey", "LifterField", "Sizes", "Fill", "Spectrum"]
+           "ParticleField", "IdField", "AddFlag", "WallField", "BodyAxis", "BodyFlag",
+           "BodyField", "ContactField", "Energy", "DrumKey", "LifterField", "Sizes", "Fill",
+           "Spectrum"]
 
 VERSION_MAJOR = 0
 VERSION_MINOR = 1
@@ -59,6 +60,7 @@ class Kind(IntEnum):
     PARTICLE = 2
     WALL = 3
     DRUM = 4
+    BODY = 5
 
 
 class Integrator(IntEnum):
@@ -172,6 +174,7 @@ class ParticleField(IntEnum):
     FORCE = 6
     TORQUE = 7
     ANGLE = 8
+    FIXED = 9
 
 
 class IdField(IntEnum):
@@ -197,6 +200,31 @@ class WallField(IntEnum):
     ANGULAR_VELOCITY = 5
     FORCE = 6
     TORQUE = 7
+
+
+class BodyAxis(IntFlag):
+    """Axes of a body, and bits of its free axes (``DEMILL_BODY_AXIS_*``)."""
+
+    X = 1
+    Y = 2
+    Z = 4
+
+
+class BodyFlag(IntFlag):
+    """Flags of ``World.add_body`` (``DEMILL_BODY_NO_GRAVITY``)."""
+
+    NO_GRAVITY = 1
+
+
+class BodyField(IntEnum):
+    """Body fields, 3 doubles each (``DEMILL_BODY_*``)."""
+
+    POSITION = 1
+    VELOCITY = 2
+    FORCE_PARTICLES = 3
+    FORCE_SPRING = 4
+    FORCE_DAMPER = 5
+    FORCE_EXTERNAL = 6
 
 
 class ContactField(IntEnum):
@@ -225,6 +253,11 @@ class Energy(IntEnum):
     DISSIPATED_ROLLING = 10
     DISSIPATED = 11
     TOTAL = 12
+    BODY_KINETIC = 13
+    BODY_ELASTIC = 14
+    BODY_POTENTIAL = 15
+    BODY_DISSIPATED = 16
+    BODY_WORK = 17
 
 
 class DrumKey(IntEnum):
@@ -314,6 +347,9 @@ C_PREFIXES = {
     IdField: "DEMILL_PARTICLE_",
     AddFlag: "DEMILL_ADD_",
     WallField: "DEMILL_WALL_",
+    BodyAxis: "DEMILL_BODY_AXIS_",
+    BodyFlag: "DEMILL_BODY_",
+    BodyField: "DEMILL_BODY_",
     ContactField: "DEMILL_CONTACT_",
     Energy: "DEMILL_ENERGY_",
     DrumKey: "DEMILL_DRUM_",

@@ -1,4 +1,4 @@
-"""Materials, material pairs, particles, walls and contacts of a world.
+"""Materials, material pairs, particles, walls, bodies and contacts of a world.
 
 Every object keeps its :class:`~demill.World` alive; none owns memory of its
 own (the world does), so they are cheap views that may be created at will.
@@ -12,8 +12,9 @@ import numpy as np
 from ._core import (Keyed, Param, as_id, doubles, first, output, ptr, read_counted, read_field,
                     vector)
 from ._lib import lib
-from .constants import (AddFlag, ContactField, Damping, IdField, Kind, MaterialKey, Normal,
-                        PairKey, ParticleField, Rolling, Tangential, WallField, WorldKey)
+from .constants import (AddFlag, BodyAxis, BodyField, ContactField, Damping, IdField, Kind,
+                        MaterialKey, Normal, PairKey, ParticleField, Rolling, Tangential,
+                        WallField, WorldKey)
 
 
 def id_array(ids):
@@ -131,6 +132,9 @@ class Particle(Handle, Keyed):
     torque = Param(ParticleField.TORQUE, None,
                    "Total torque at the last force evaluation, N m (3; read-only).")
     angle = Param(ParticleField.ANGLE, first, "2D only: rotation angle about z, rad.")
+    fixed = Param(ParticleField.FIXED, lambda v: bool(first(v)),
+                  "True: the particle never moves; it touches the moving particles as an "
+                  "infinitely heavy one.")
 
     def _get(self, field):
         return read_field(self.world, "demill_particle_get", self.id, int(field),
@@ -164,6 +168,7 @@ class Particles:
     forces = Param(ParticleField.FORCE, None, "Forces, N (n x 3; read-only).")
     torques = Param(ParticleField.TORQUE, None, "Torques, N m (n x 3; read-only).")
     angles = Param(ParticleField.ANGLE, None, "2D only: rotation angles, rad (n).")
+    fixed = Param(ParticleField.FIXED, None, "1 for a fixed particle, else 0 (n).")
 
     def __init__(self, world):
         self.world = world
@@ -264,6 +269,56 @@ class Wall(Handle, Keyed):
     def remove(self):
         """Removes the wall; its id becomes invalid."""
         self.world._call("demill_wall_remove", self.id)
+
+
+class Body(Handle):
+    """A rigid body the particles move (:meth:`World.add_body`): it
+    translates along its free axes, pushed by the particles on its walls,
+    held by a spring and a damper per axis and driven by an external force.
+    Its fields are read-only 3-vectors."""
+
+    __slots__ = ()
+    kind = Kind.BODY
+
+    position = Param(BodyField.POSITION, None, "Centre, m.")
+    velocity = Param(BodyField.VELOCITY, None, "Velocity, m/s.")
+    force_particles = Param(BodyField.FORCE_PARTICLES, None,
+                            "Force of the particles on its walls, N.")
+    force_spring = Param(BodyField.FORCE_SPRING, None, "Force of its springs, N.")
+    force_damper = Param(BodyField.FORCE_DAMPER, None, "Force of its dampers, N.")
+    force_external = Param(BodyField.FORCE_EXTERNAL, None, "The external force now, N.")
+
+    def _get(self, field):
+        return read_field(self.world, "demill_body_get", self.id, int(field))
+
+    def set_spring(self, axis, stiffness, damping=0.0, rest=None):
+        """Ties the body to the ground along a free ``axis``
+        (:class:`~demill.BodyAxis`): a force -stiffness (x - rest) -
+        damping v; ``rest`` None: the body's current position."""
+        axis = BodyAxis(axis)
+        if rest is None:
+            rest = float(self.position[axis.bit_length() - 1])
+        self.world._call("demill_body_set_spring", self.id, int(axis), float(stiffness),
+                         float(damping), float(rest))
+
+    def set_force(self, amplitude, frequency, phase=0.0):
+        """The external force amplitude sin(2π frequency t + phase), N."""
+        self.world._call("demill_body_set_force", self.id, ptr(vector(amplitude, "amplitude")),
+                         float(frequency), float(phase))
+
+    def attach(self, wall):
+        """Attaches a wall at rest: it moves with the body from now on."""
+        self.world._call("demill_body_attach_wall", self.id, as_id(wall))
+
+    def energy(self, term):
+        """One of the body's energy terms (``Energy.BODY_*``), J."""
+        v = ctypes.c_double()
+        self.world._call("demill_body_energy", self.id, int(term), ctypes.byref(v))
+        return v.value
+
+    def remove(self):
+        """Removes the body; its walls stay where they are, at rest."""
+        self.world._call("demill_body_remove", self.id)
 
 
 class Contacts:

@@ -10,10 +10,10 @@ import numpy as np
 from ._core import (Closable, Keyed, Param, VectorParam, as_id, check, configure, ptr,
                     read_counted, strerror, vector)
 from ._lib import ProgressFn, WorldP, lib
-from .constants import Energy, Integrator, Kind, Status, WorldKey
+from .constants import BodyFlag, Energy, Integrator, Kind, Status, WorldKey
 from .drum import Drum
 from .errors import WorldClosed
-from .objects import Contacts, Material, Pair, Particle, Particles, Wall, count
+from .objects import Body, Contacts, Material, Pair, Particle, Particles, Wall, count
 from .state import Snapshot, VtkSeries
 
 
@@ -247,6 +247,15 @@ class World(Closable, Keyed):
                    ctypes.byref(out))
         return Wall(self, out.value)
 
+    def add_body(self, mass, centre, free_axes, gravity=True):
+        """Adds a body of ``mass`` kg at ``centre`` that moves along
+        ``free_axes`` (:class:`~demill.BodyAxis`, or'ed); gravity acts on it
+        unless ``gravity`` is False. A :class:`Body`."""
+        out = ctypes.c_uint64()
+        self._call("demill_body_add", float(mass), ptr(vector(centre, "centre")), int(free_axes),
+                   0 if gravity else int(BodyFlag.NO_GRAVITY), ctypes.byref(out))
+        return Body(self, out.value)
+
     def add_drum(self, material, **params):
         """Creates the world's drum of the given wall material with
         parameters by name, e.g. ``world.add_drum(steel, diameter=0.3)``."""
@@ -270,6 +279,11 @@ class World(Closable, Keyed):
     def walls(self):
         """Every plane wall, as a list of :class:`Wall`."""
         return [Wall(self, i) for i in self.ids(Kind.WALL)]
+
+    @property
+    def bodies(self):
+        """Every body, as a list of :class:`Body`."""
+        return [Body(self, i) for i in self.ids(Kind.BODY)]
 
     @property
     def drum(self):
