@@ -4,6 +4,15 @@
  * A wall is not moved by the particles. Contact with a wall uses the contact
  * model of the pair (particle material, wall material) with R* = R and m* = m
  * of the particle. The drum of a mill joins these walls in a later version.
+ *
+ * A plane is the boundary of a half-space. The finite walls (cylinders,
+ * cones, discs and annuli, rectangles; 3D worlds only) are thin surfaces
+ * that particles touch from either side, at the exact closest point of the
+ * surface, its rims and edges included: a particle beyond a rim or an edge
+ * is pushed from the nearest point of the rim. A particle touches a wall at
+ * one point, except a capped cylinder or cone, whose side and caps are
+ * touched separately (a particle in the inner corner of a closed can feels
+ * the floor and the side); the rim is the side's.
  */
 #ifndef DEMILL_WALL_H
 #define DEMILL_WALL_H
@@ -14,7 +23,10 @@
 extern "C" {
 #endif
 
-/** Wall fields, read with demill_wall_get(). All are 3 doubles. */
+/** Wall fields, read with demill_wall_get(). All are 3 doubles. For a
+ *  finite wall, the point is its centre or the start of its axis and the
+ *  normal its unit normal or axis; a capped wall's force and torque include
+ *  its caps'. */
 enum {
     DEMILL_WALL_POINT = 1,            /**< a point on the plane, m (moves with the wall) */
     DEMILL_WALL_NORMAL = 2,           /**< unit normal, pointing to the side the particles are on */
@@ -22,7 +34,23 @@ enum {
     DEMILL_WALL_VELOCITY = 4,         /**< velocity of the centre, m/s */
     DEMILL_WALL_ANGULAR_VELOCITY = 5, /**< angular velocity about the centre, rad/s */
     DEMILL_WALL_FORCE = 6,            /**< force the particles exert on the wall at the last force evaluation, N */
-    DEMILL_WALL_TORQUE = 7            /**< torque the particles exert on the wall about its centre, N m */
+    DEMILL_WALL_TORQUE = 7,           /**< torque the particles exert on the wall about its centre, N m */
+    DEMILL_WALL_SURFACE_VELOCITY = 8  /**< the surface's velocity along itself (demill_wall_set_surface_velocity()), m/s */
+};
+
+/** Caps of demill_wall_add_cylinder() and demill_wall_add_cone(): which
+ *  ends are closed by a cap, a disc joined to the rim (flags, or'ed). */
+enum {
+    DEMILL_CAPS_NONE = 0,  /**< no cap: a tube open at both ends */
+    DEMILL_CAPS_START = 1, /**< a cap at `point`, the start of the axis */
+    DEMILL_CAPS_END = 2,   /**< a cap at `point` + `length` × axis */
+    DEMILL_CAPS_BOTH = 3   /**< both: a closed can */
+};
+
+/** Modes of demill_wall_set_harmonic(). */
+enum {
+    DEMILL_HARMONIC_TRANSLATION = 1, /**< the wall moves along the axis */
+    DEMILL_HARMONIC_ROTATION = 2     /**< the wall turns about the axis through its centre */
 };
 
 /** Adds a plane wall: the boundary of the solid half-space behind `point`,
@@ -43,13 +71,113 @@ DEMILL_API demill_status demill_wall_add_plane(demill_world *world, demill_id ma
                                                const double point[3], const double normal[3],
                                                demill_id *out);
 
+/** Adds a finite cone or frustum (a hopper): the surface of revolution
+ *  about the axis from `point` that has radius `radius_start` at `point`
+ *  and `radius_end` at `point` + `length` × axis (unit axis), the radius
+ *  varying linearly between; one radius may be 0 (a cone's apex). A thin
+ *  surface, touched from inside and outside; with `caps` its ends are
+ *  closed by caps (an end of radius 0 needs none). Its point is `point`, its
+ *  normal the unit axis, its centre of rotation `point`. 3D worlds only.
+ *  @param world        the world.
+ *  @param material     the wall's material.
+ *  @param point        the start of the axis, m.
+ *  @param axis         the axis's direction (need not be of unit length).
+ *  @param radius_start radius at the start, m (>= 0).
+ *  @param radius_end   radius at the end, m (>= 0, not both 0).
+ *  @param length       distance from start to end along the axis, m (> 0).
+ *  @param caps         DEMILL_CAPS_NONE, DEMILL_CAPS_START,
+ *                      DEMILL_CAPS_END or DEMILL_CAPS_BOTH.
+ *  @param[out] out     receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (zero axis, a
+ *          negative radius, both radii 0, length not positive, unknown
+ *          caps), DEMILL_ERR_DIMENSION (a 2D world) or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_wall_add_cone(demill_world *world, demill_id material,
+                                              const double point[3], const double axis[3],
+                                              double radius_start, double radius_end,
+                                              double length, int32_t caps, demill_id *out);
+
+/** Adds a finite cylinder of `radius` about the axis from `point` to
+ *  `point` + `length` × axis (unit axis): demill_wall_add_cone() with both
+ *  radii equal. A thin surface, touched from inside and outside, open or
+ *  closed by caps at either end. 3D worlds only.
+ *  @param world    the world.
+ *  @param material the wall's material.
+ *  @param point    the start of the axis, m.
+ *  @param axis     the axis's direction (need not be of unit length).
+ *  @param radius   the radius, m (> 0).
+ *  @param length   the length along the axis, m (> 0).
+ *  @param caps     DEMILL_CAPS_NONE, DEMILL_CAPS_START,
+ *                  DEMILL_CAPS_END or DEMILL_CAPS_BOTH.
+ *  @param[out] out receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (zero axis,
+ *          radius or length not positive, unknown caps),
+ *          DEMILL_ERR_DIMENSION (a 2D world) or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_wall_add_cylinder(demill_world *world, demill_id material,
+                                                  const double point[3], const double axis[3],
+                                                  double radius, double length, int32_t caps,
+                                                  demill_id *out);
+
+/** Adds a disc, or with `inner_radius` > 0 an annulus (an orifice plate):
+ *  the points of the plane through `centre` normal to `normal` whose
+ *  distance from `centre` lies between `inner_radius` and `outer_radius`.
+ *  A thin surface touched from both sides; both rims are edges. Its point
+ *  and centre of rotation are `centre`, its normal the unit normal. 3D
+ *  worlds only.
+ *  @param world        the world.
+ *  @param material     the wall's material.
+ *  @param centre       the centre, m.
+ *  @param normal       the plane's normal (need not be of unit length).
+ *  @param outer_radius the outer radius, m (> 0).
+ *  @param inner_radius the hole's radius, m (0 for a full disc, below
+ *                      outer_radius).
+ *  @param[out] out     receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (zero normal, a
+ *          radius not positive, inner >= outer), DEMILL_ERR_DIMENSION (a 2D
+ *          world) or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_wall_add_disc(demill_world *world, demill_id material,
+                                              const double centre[3], const double normal[3],
+                                              double outer_radius, double inner_radius,
+                                              demill_id *out);
+
+/** Adds a rectangle patch: the points centre + a u + b v of the plane
+ *  through `centre` normal to `normal`, |a| <= half_width, |b| <=
+ *  half_height, where u is the unit part of `direction` in the plane and v
+ *  = n × u. A thin surface touched from both sides; its edges and corners
+ *  push from their nearest point. Its point and centre of rotation are
+ *  `centre`, its normal the unit normal. 3D worlds only.
+ *  @param world       the world.
+ *  @param material    the wall's material.
+ *  @param centre      the centre, m.
+ *  @param normal      the plane's normal (need not be of unit length).
+ *  @param direction   the direction of the half-width in the plane (its
+ *                     part along the normal is ignored).
+ *  @param half_width  half the extent along u, m (> 0).
+ *  @param half_height half the extent along v, m (> 0).
+ *  @param[out] out    receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (zero normal or
+ *          direction, a direction parallel to the normal, a half-width not
+ *          positive), DEMILL_ERR_DIMENSION (a 2D world) or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_wall_add_rectangle(demill_world *world, demill_id material,
+                                                   const double centre[3],
+                                                   const double normal[3],
+                                                   const double direction[3],
+                                                   double half_width, double half_height,
+                                                   demill_id *out);
+
 /** Removes a wall. Its id becomes invalid; contacts with it end.
  *  @param world the world.
  *  @param wall  the wall's id.
  *  @return DEMILL_OK or DEMILL_ERR_INVALID_HANDLE. */
 DEMILL_API demill_status demill_wall_remove(demill_world *world, demill_id wall);
 
-/** Sets the wall's rigid motion from now on: its centre of rotation is
+/** Sets the wall's rigid motion from now on (in place of a harmonic motion,
+ *  demill_wall_set_harmonic()): its centre of rotation is
  *  `centre` and moves with `velocity`, and the wall turns about it with
  *  `angular_velocity`. Any pointer may be NULL: NULL velocity or angular
  *  velocity means zero, NULL centre keeps the current centre. Positions are
@@ -67,6 +195,48 @@ DEMILL_API demill_status demill_wall_set_motion(demill_world *world, demill_id w
                                                 const double velocity[3],
                                                 const double angular_velocity[3],
                                                 const double centre[3]);
+
+/** Sets a harmonic motion from now on, in place of any other motion: with
+ *  s(t) = amplitude × sin(2π × frequency × t + phase), t the world's time
+ *  since this call, the wall's centre moves by s along `axis`
+ *  (DEMILL_HARMONIC_TRANSLATION, amplitude in m), or the wall turns by the
+ *  angle s about `axis` through its centre (DEMILL_HARMONIC_ROTATION,
+ *  amplitude in rad). The wall's pose at this call is the pose at s = 0
+ *  (with a phase whose sine is not 0, the wall moves to s(0) at once).
+ *  Positions are exact at every time (no drift), and the contacts see the
+ *  exact velocity ds/dt. demill_wall_set_motion() ends it, the wall staying
+ *  where it is. In 2D a translation's axis must have z = 0 and a rotation's
+ *  be along z.
+ *  @param world     the world.
+ *  @param wall      the wall's id.
+ *  @param mode      DEMILL_HARMONIC_TRANSLATION or DEMILL_HARMONIC_ROTATION.
+ *  @param axis      the direction of the motion or of the rotation's axis
+ *                   (need not be of unit length).
+ *  @param amplitude the amplitude, m or rad.
+ *  @param frequency the frequency, Hz (> 0).
+ *  @param phase     the phase at this call, rad.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY (mode),
+ *          DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_INVALID_VALUE (zero axis, frequency not positive) or
+ *          DEMILL_ERR_DIMENSION. */
+DEMILL_API demill_status demill_wall_set_harmonic(demill_world *world, demill_id wall,
+                                                  int32_t mode, const double axis[3],
+                                                  double amplitude, double frequency,
+                                                  double phase);
+
+/** Sets the velocity with which the wall's surface moves along itself (a
+ *  conveyor belt), while its geometry stays put: at a contact, the part of
+ *  `velocity` tangent to the surface there is added to the wall's velocity.
+ *  The velocity is given in the wall's current orientation and turns with
+ *  the wall afterwards. Any wall kind; the wall's work on the particles
+ *  counts in the energy account.
+ *  @param world    the world.
+ *  @param wall     the wall's id.
+ *  @param velocity the surface velocity, m/s, or NULL for 0 (in 2D z = 0).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE or
+ *          DEMILL_ERR_DIMENSION. */
+DEMILL_API demill_status demill_wall_set_surface_velocity(demill_world *world, demill_id wall,
+                                                          const double velocity[3]);
 
 /** Reads a wall field.
  *  @param world    the world.

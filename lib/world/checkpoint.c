@@ -89,8 +89,9 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 /* ---- the bytes of a state --------------------------------------------------- */
 
 #define CK_MAGIC "DEMILLCK"
-#define CK_FORMAT 2u          /* the format this library writes and the newest it reads;
-                                 2 adds the impacts on an ore to the drum's spectrum */
+#define CK_FORMAT 3u          /* the format this library writes and the newest it reads;
+                                 2 adds the impacts on an ore to the drum's spectrum, 3
+                                 the finite walls, harmonic motion and surface velocity */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -290,6 +291,22 @@ static void transfer_wall(io *s, dm_wall *wl)
                          &wl->dissipated};
     const size_t len[] = {2 * DM_MAX_POLY, 2 * DM_MAX_POLY, 4 * DM_MAX_POLY, 2, 2, 1, 1, 3, 3, 3,
                           3, 3, 1, 3, 3, 3, 9, 3, 9, 3, 3, 1};
+    for (size_t k = 0; k < sizeof len / sizeof *len; k++)
+        io_f64(s, f[k], len[k]);
+}
+
+/* A wall's finite shape, its caps, its harmonic motion and its surface
+ * velocity (format 3). */
+static void transfer_wall_finite(io *s, dm_wall *wl)
+{
+    io_int(s, &wl->own);
+    io_u32(s, &wl->parent, 1);
+    io_u32(s, wl->parts, 2);
+    io_int(s, &wl->harmonic);
+    io_int(s, &wl->surface);
+    double *const f[] = {wl->seg,   wl->nb,     wl->e0,      &wl->bh,   wl->h_axis,
+                         &wl->h_amp, &wl->h_freq, &wl->h_phase, &wl->h_t0, wl->surf0};
+    const size_t len[] = {4, 4, 3, 1, 3, 1, 1, 1, 1, 3};
     for (size_t k = 0; k < sizeof len / sizeof *len; k++)
         io_f64(s, f[k], len[k]);
 }
@@ -495,6 +512,11 @@ static void transfer(io *s, demill_world *w)
     for (uint32_t k = 0; k < w->nwalls && !s->status; k++)
         transfer_wall(s, &w->walls[k]);
     transfer_handles(s, &w->wh, "wall handles");
+    if (s->format >= 3) {
+        io_section(s, "WFIN");
+        for (uint32_t k = 0; k < w->nwalls && !s->status; k++)
+            transfer_wall_finite(s, &w->walls[k]);
+    }
 
     io_section(s, "DRUM");
     io_u16(s, &w->drum_gen);
@@ -616,6 +638,41 @@ static demill_status check_particles(demill_world *t)
     return DEMILL_OK;
 }
 
+/* A wall's finite shape, caps and motions are what the API makes: a cap
+ * names a live wall that names it back, shares its kind and material; a
+ * harmonic motion has a unit axis and a positive frequency; every value is
+ * finite. */
+static bool finite_wall_ok(const demill_world *t, uint32_t k)
+{
+    const dm_wall *wl = &t->walls[k];
+    const double v[] = {wl->bh, wl->h_amp, wl->h_freq, wl->h_phase, wl->h_t0};
+    bool ok = all_finite(wl->seg, 4) && all_finite(wl->nb, 4) && all_finite(wl->e0, 3) &&
+              all_finite(v, 5) && all_finite(wl->h_axis, 3) && all_finite(wl->surf0, 3) &&
+              wl->own >= 0 && wl->own <= 3 && (wl->surface == 0 || wl->surface == 1) &&
+              wl->harmonic >= 0 && wl->harmonic <= DM_HARMONIC_ROTATE;
+    if (wl->harmonic) {
+        const double *a = wl->h_axis;
+        ok &= wl->h_freq > 0.0 && fabs(a[0] * a[0] + a[1] * a[1] + a[2] * a[2] - 1.0) < 1e-9;
+    }
+    if (wl->kind == DM_WALL_REVOLVED)
+        ok &= wl->seg[0] >= 0.0 && wl->seg[2] >= 0.0 &&
+              (wl->seg[0] != wl->seg[2] || wl->seg[1] != wl->seg[3]);
+    if (wl->kind == DM_WALL_RECT)
+        ok &= wl->seg[0] > 0.0 && wl->seg[1] > 0.0;
+    if (wl->parent) {
+        const uint32_t p = wl->parent - 1;
+        ok &= p < t->nwalls && p != k && t->walls[p].kind == wl->kind &&
+              t->walls[p].material == wl->material && !t->walls[p].parent &&
+              (t->walls[p].parts[0] == k + 1 || t->walls[p].parts[1] == k + 1) &&
+              !wl->parts[0] && !wl->parts[1];
+    }
+    for (int q = 0; q < 2; q++) {
+        const uint32_t c = wl->parts[q];
+        ok &= !c || (c - 1 < t->nwalls && t->walls[c - 1].kind && t->walls[c - 1].parent == k + 1);
+    }
+    return ok;
+}
+
 static demill_status check_walls(demill_world *t)
 {
     const dm_drum *d = &t->drum;
@@ -624,9 +681,12 @@ static demill_status check_walls(demill_world *t)
         const dm_wall *wl = &t->walls[k];
         if (!wl->kind)
             continue;
-        bool ok = wl->kind >= DM_WALL_PLANE && wl->kind <= DM_WALL_PRISM &&
-                  wl->material < t->nmat && wl->npoly >= 0 && wl->npoly <= DM_MAX_POLY;
-        if (wl->drum_part) {
+        bool ok = wl->kind >= DM_WALL_PLANE && wl->kind <= DM_WALL_RECT &&
+                  wl->material < t->nmat && wl->npoly >= 0 && wl->npoly <= DM_MAX_POLY &&
+                  finite_wall_ok(t, k);
+        if (wl->parent) {
+            ok &= wl->handle == DM_FREE && !wl->drum_part;
+        } else if (wl->drum_part) {
             drum++;
             bool listed = false;
             for (uint32_t q = 0; q < d->nwall; q++)
@@ -982,7 +1042,7 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         n = w->drum.alive;
     else
         for (uint32_t k = 0; k < w->nwalls; k++)
-            n += w->walls[k].kind && !w->walls[k].drum_part;
+            n += w->walls[k].kind && !w->walls[k].drum_part && !w->walls[k].parent;
     if (count)
         *count = n;
     if (!out)
@@ -995,7 +1055,7 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
             out[m] = dm_material_id(w, m);
     } else if (kind == DEMILL_KIND_WALL) {
         for (uint32_t k = 0, q = 0; k < w->nwalls; k++)
-            if (w->walls[k].kind && !w->walls[k].drum_part)
+            if (w->walls[k].kind && !w->walls[k].drum_part && !w->walls[k].parent)
                 out[q++] = dm_wall_id(w, k);
     } else if (n) { /* the drum */
         out[0] = dm_drum_id(w);

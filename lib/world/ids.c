@@ -61,11 +61,14 @@ demill_id dm_particle_id(const demill_world *w, uint32_t storage)
     return dm_id_make(w->tag, DEMILL_KIND_PARTICLE, w->ph.gen[h], h);
 }
 
-/* The id of a wall slot: the wall's own id, or the drum's for its walls. */
+/* The id of a wall slot: the wall's own id, the drum's for its walls, a
+ * capped wall's for its caps. */
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot)
 {
     if (w->walls[wall_slot].drum_part)
         return dm_drum_id(w);
+    if (w->walls[wall_slot].parent)
+        wall_slot = w->walls[wall_slot].parent - 1;
     uint32_t h = w->walls[wall_slot].handle;
     return dm_id_make(w->tag, DEMILL_KIND_WALL, w->wh.gen[h], h);
 }

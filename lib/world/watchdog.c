@@ -61,7 +61,8 @@ static demill_status energies(demill_world *w, dm_watch_energy *e, int *unknown)
         const dm_wall *wall = &w->walls[k];
         if (wall->kind && !wall->drum_part)
             for (int c = 0; c < 3; c++)
-                *unknown |= wall->vel[c] != 0.0 || wall->omega[c] != 0.0;
+                *unknown |= wall->vel[c] != 0.0 || wall->omega[c] != 0.0 || wall->harmonic ||
+                            wall->surface;
     }
     return s;
 }

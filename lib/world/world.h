@@ -29,7 +29,8 @@ demill_status dm_resolve(const demill_world *w, demill_id id, int kind, const ch
 demill_status dm_enter(const demill_world *w, demill_id id, int kind, const char *what,
                        uint32_t *slot);
 demill_id dm_particle_id(const demill_world *w, uint32_t storage);
-/* The id of a wall slot: the wall's own id, or the drum's for its walls. */
+/* The id of a wall slot: the wall's own id, the drum's for its walls, a
+ * capped wall's for its caps. */
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
 demill_id dm_material_id(const demill_world *w, uint32_t material);
 demill_id dm_drum_id(const demill_world *w);

@@ -119,8 +119,8 @@ PROTOTYPES = {
 }
 
 #: Functions newer than the oldest library this binding supports (progress,
-#: VTK output, snapshots and checkpoints, object listing, grinding): bound
-#: when the library has them.
+#: VTK output, snapshots and checkpoints, object listing, finite walls and
+#: wall motions, grinding): bound when the library has them.
 OPTIONAL_PROTOTYPES = {
     "demill_world_set_progress": (status, (WorldP, ProgressFn, c_void_p, c_uint64)),
     "demill_vtk_write_particles": (status, (WorldP, c_char_p)),
@@ -136,6 +136,17 @@ OPTIONAL_PROTOTYPES = {
     "demill_world_save_buffer": (status, (WorldP, c_void_p, c_size_t, sizeptr)),
     "demill_world_load_buffer": (status, (WorldP, c_void_p, c_size_t)),
     "demill_world_ids": (status, (WorldP, c_int32, idptr, c_size_t, sizeptr)),
+    # wall.h: finite walls, harmonic motion, surface velocity
+    "demill_wall_add_cylinder": (status, (WorldP, id_t, dptr, dptr, c_double, c_double, c_int32,
+                                          idptr)),
+    "demill_wall_add_cone": (status, (WorldP, id_t, dptr, dptr, c_double, c_double, c_double,
+                                      c_int32, idptr)),
+    "demill_wall_add_disc": (status, (WorldP, id_t, dptr, dptr, c_double, c_double, idptr)),
+    "demill_wall_add_rectangle": (status, (WorldP, id_t, dptr, dptr, dptr, c_double, c_double,
+                                           idptr)),
+    "demill_wall_set_harmonic": (status, (WorldP, id_t, c_int32, dptr, c_double, c_double,
+                                          c_double)),
+    "demill_wall_set_surface_velocity": (status, (WorldP, id_t, dptr)),
     # grinding.h
     "demill_grinding_create": (status, (c_double, c_uint32, POINTER(GrindingP))),
     "demill_grinding_destroy": (None, (GrindingP,)),

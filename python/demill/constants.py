@@ -12,7 +12,8 @@ from enum import IntEnum, IntFlag
 __all__ = ["VERSION_MAJOR", "VERSION_MINOR", "VERSION_PATCH", "VERSION_NUMBER",
            "VERSION_STRING", "ID_NONE", "Status", "Kind", "Integrator", "WorldKey",
            "MaterialKey", "Normal", "Damping", "Tangential", "Rolling", "PairKey",
-           "ParticleField", "IdField", "AddFlag", "WallField", "ContactField", "Energy",
+           "ParticleField", "IdField", "AddFlag", "WallField", "Caps", "Harmonic",
+           "ContactField", "Energy",
            "DrumKey", "LifterField", "Sizes", "Fill", "Spectrum"]
 
 VERSION_MAJOR = 0
@@ -197,6 +198,23 @@ class WallField(IntEnum):
     ANGULAR_VELOCITY = 5
     FORCE = 6
     TORQUE = 7
+    SURFACE_VELOCITY = 8
+
+
+class Caps(IntEnum):
+    """Caps of a finite cylinder or cone (``DEMILL_CAPS_*``): START | END is BOTH."""
+
+    NONE = 0
+    START = 1
+    END = 2
+    BOTH = 3
+
+
+class Harmonic(IntEnum):
+    """Modes of a wall's harmonic motion (``DEMILL_HARMONIC_*``)."""
+
+    TRANSLATION = 1
+    ROTATION = 2
 
 
 class ContactField(IntEnum):
@@ -314,6 +332,8 @@ C_PREFIXES = {
     IdField: "DEMILL_PARTICLE_",
     AddFlag: "DEMILL_ADD_",
     WallField: "DEMILL_WALL_",
+    Caps: "DEMILL_CAPS_",
+    Harmonic: "DEMILL_HARMONIC_",
     ContactField: "DEMILL_CONTACT_",
     Energy: "DEMILL_ENERGY_",
     DrumKey: "DEMILL_DRUM_",

@@ -10,7 +10,7 @@ import numpy as np
 from ._core import (Closable, Keyed, Param, VectorParam, as_id, check, configure, ptr,
                     read_counted, strerror, vector)
 from ._lib import ProgressFn, WorldP, lib
-from .constants import Energy, Integrator, Kind, Status, WorldKey
+from .constants import Caps, Energy, Integrator, Kind, Status, WorldKey
 from .drum import Drum
 from .errors import WorldClosed
 from .objects import Contacts, Material, Pair, Particle, Particles, Wall, count
@@ -247,6 +247,46 @@ class World(Closable, Keyed):
                    ctypes.byref(out))
         return Wall(self, out.value)
 
+    def _add_wall(self, function, material, *args):
+        out = ctypes.c_uint64()
+        self._call(function, as_id(material), *args, ctypes.byref(out))
+        return Wall(self, out.value)
+
+    def add_cylinder(self, material, point, axis, radius, length, caps=Caps.NONE):
+        """Adds a finite cylinder of ``radius`` about the axis from
+        ``point`` over ``length`` along ``axis``, a thin surface touched
+        from both sides, closed at the ends ``caps`` names
+        (:class:`~demill.Caps`); a :class:`Wall`. 3D only."""
+        return self._add_wall("demill_wall_add_cylinder", material,
+                              ptr(vector(point, "point")), ptr(vector(axis, "axis")),
+                              float(radius), float(length), int(caps))
+
+    def add_cone(self, material, point, axis, radius_start, radius_end, length,
+                 caps=Caps.NONE):
+        """Adds a cone or frustum: radius ``radius_start`` at ``point`` and
+        ``radius_end`` at ``length`` along ``axis`` (one may be 0), closed
+        at the ends ``caps`` names; a :class:`Wall`. 3D only."""
+        return self._add_wall("demill_wall_add_cone", material,
+                              ptr(vector(point, "point")), ptr(vector(axis, "axis")),
+                              float(radius_start), float(radius_end), float(length), int(caps))
+
+    def add_disc(self, material, centre, normal, outer_radius, inner_radius=0.0):
+        """Adds a disc, or an annulus with a hole of ``inner_radius`` (an
+        orifice plate), touched from both sides; a :class:`Wall`. 3D only."""
+        return self._add_wall("demill_wall_add_disc", material,
+                              ptr(vector(centre, "centre")), ptr(vector(normal, "normal")),
+                              float(outer_radius), float(inner_radius))
+
+    def add_rectangle(self, material, centre, normal, direction, half_width, half_height):
+        """Adds a rectangle patch about ``centre`` normal to ``normal``,
+        ``half_width`` along ``direction`` (its part in the plane) and
+        ``half_height`` across it, touched from both sides; a
+        :class:`Wall`. 3D only."""
+        return self._add_wall("demill_wall_add_rectangle", material,
+                              ptr(vector(centre, "centre")), ptr(vector(normal, "normal")),
+                              ptr(vector(direction, "direction")), float(half_width),
+                              float(half_height))
+
     def add_drum(self, material, **params):
         """Creates the world's drum of the given wall material with
         parameters by name, e.g. ``world.add_drum(steel, diameter=0.3)``."""
@@ -268,7 +308,7 @@ class World(Closable, Keyed):
 
     @property
     def walls(self):
-        """Every plane wall, as a list of :class:`Wall`."""
+        """Every wall, as a list of :class:`Wall`."""
         return [Wall(self, i) for i in self.ids(Kind.WALL)]
 
     @property

@@ -9,7 +9,7 @@ import numpy as np
 from helpers import linear_contact_time, linear_world, sphere_mass
 
 import demill
-from demill import Damping, Energy, Integrator, Normal
+from demill import Damping, Energy, Integrator, Normal, Tangential
 
 
 class FreeFall(unittest.TestCase):
@@ -182,6 +182,51 @@ class Walls(unittest.TestCase):
             wall.remove()
             with self.assertRaises(demill.InvalidHandle):
                 wall.point
+
+
+class FiniteWalls(unittest.TestCase):
+    def test_closest_points_and_motions(self):
+        """A sphere of radius 0.01 held 0.007 from a face (the linear law,
+        k = 5e4 N/m) feels k (r - d) = 150 N along the face's normal; 0.005
+        from a rim along a 3-4-5 direction, 250 N along it. A harmonic
+        translation puts the wall at A sin(2πft) and gives it the velocity
+        2πfA cos(2πft); a surface velocity reads back as set."""
+        w, m = linear_world(3)
+        w.pair(m, m, damping=demill.Damping.NONE, tangential=Tangential.NONE)
+        r, k = 0.01, 5e4
+        walls = [w.add_cylinder(m, (0, 0, 0), (0, 0, 1), 0.1, 0.2, demill.Caps.END),
+                 w.add_cone(m, (1, 0, 0), (0, 0, 1), 0.0, 0.1, 0.1),
+                 w.add_disc(m, (2, 0, 0), (0, 0, 1), 0.1, 0.05),
+                 w.add_rectangle(m, (3, 0, 0), (0, 1, 0), (1, 0, 0), 0.1, 0.05)]
+        cases = [((0.05, 0, 0.2 - 0.007), (0, 0, -150)),         # the cylinder's cap
+                 ((0.103, 0, 0.204), (150, 0, 200)),             # its convex rim
+                 ((2.047, 0, 0.004), (-150, 0, 200)),            # the annulus's hole rim
+                 ((3.02, 0.007, 0.01), (0, 150, 0))]             # the rectangle's face
+        for x, f in cases:
+            (pid,) = w.particles.add(m, [x], r)
+            w.step(0)
+            np.testing.assert_allclose(w.particle(pid).force, f, atol=1e-9 * k * r)
+            w.particles.remove([pid])
+        self.assertEqual(len(w.walls), 4)
+        dt, n, a, freq = 1e-4, 37, 0.002, 5.0
+        w.time_step = dt
+        rect = walls[3]
+        rect.set_harmonic(demill.Harmonic.TRANSLATION, (0, 2, 0), a, freq)
+        rect.set_surface_velocity((0.5, 0, 0))
+        w.step(n)
+        t, om = n * dt, 2 * math.pi * freq
+        np.testing.assert_allclose(rect.centre, (3, a * math.sin(om * t), 0), atol=1e-15)
+        np.testing.assert_allclose(rect.velocity, (0, a * om * math.cos(om * t), 0), atol=1e-14)
+        np.testing.assert_array_equal(rect.surface_velocity, (0.5, 0, 0))
+        with self.assertRaises(demill.InvalidValue):
+            w.add_disc(m, (0, 0, 0), (0, 0, 1), 0.1, 0.1)
+        with self.assertRaises(demill.UnknownKey):
+            rect.set_harmonic(7, (0, 1, 0), a, freq)
+        w.close()
+        w2, m2 = linear_world(2)
+        with self.assertRaises(demill.DimensionError):
+            w2.add_cylinder(m2, (0, 0, 0), (0, 1, 0), 0.1, 0.2)
+        w2.close()
 
 
 class TimeStepGuide(unittest.TestCase):

@@ -1295,7 +1295,7 @@ static void bad_walls(scene *sc)
             "angular");
         BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_set_motion(w, wall, v0, w0, cz), "centre");
     }
-    static const int32_t unknown[] = {0, 8, 99, -1};
+    static const int32_t unknown[] = {0, 9, 99, -1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown[k]);

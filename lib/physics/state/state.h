@@ -88,11 +88,35 @@ typedef struct dm_wall {
     /* results of the last force evaluation */
     double force[3], torque[3];
     double dissipated;     /* energy dissipated in contacts with the wall (tally) */
+    /* finite walls (DM_WALL_REVOLVED, DM_WALL_RECT), thin surfaces given in
+     * the reference frame about the point p0 and the unit axis or normal n0 */
+    double seg[4];         /* REVOLVED: the meridian segment turned about the axis,
+                              from (rho, h) = (seg[0], seg[1]) to (seg[2], seg[3]);
+                              RECT: half-widths along e0 and along n0 × e0 */
+    double nb[4];          /* REVOLVED: at each end, the direction (rho, h) in which
+                              the face sharing it (a cap) leaves it; 0 0: none */
+    int own;               /* REVOLVED: bit k: end k is a rim of this face */
+    double e0[3];          /* RECT: unit in-plane direction, reference frame */
+    double bh;             /* bounding sphere: centre p + bh n, radius brad */
+    uint32_t parent;       /* a cap: slot + 1 of the wall it closes; 0: none */
+    uint32_t parts[2];     /* slots + 1 of its caps; 0: none */
+    /* harmonic motion (replaces the rigid motion while set) and surface velocity */
+    int harmonic;          /* DM_HARMONIC_*, 0: the rigid motion of vel and omega */
+    double h_axis[3], h_amp, h_freq, h_phase, h_t0;
+    int surface;           /* 1: surf0 is set */
+    double surf0[3];       /* surface velocity, reference frame */
 } dm_wall;
 
 /* Wall kinds: a plane (half-space), the inside of a cylindrical shell about
- * the z axis, a prism along z with a convex polygonal cross-section. */
-enum { DM_WALL_PLANE = 1, DM_WALL_SHELL = 2, DM_WALL_PRISM = 3 };
+ * the z axis, a prism along z with a convex polygonal cross-section, the
+ * surface swept by a segment turned about an axis (finite cylinder, cone,
+ * disc, annulus, cap), a rectangle. */
+enum {
+    DM_WALL_PLANE = 1, DM_WALL_SHELL = 2, DM_WALL_PRISM = 3, DM_WALL_REVOLVED = 4,
+    DM_WALL_RECT = 5
+};
+/* Harmonic motions: the centre moves along h_axis, or the wall turns about it. */
+enum { DM_HARMONIC_TRANSLATE = 1, DM_HARMONIC_ROTATE = 2 };
 enum { DM_PART_NONE = 0, DM_PART_SHELL = 1, DM_PART_CAP = 2, DM_PART_LIFTER = 3 };
 
 /* ---- particles (state/particles.c) ------------------------------------- */
