@@ -131,16 +131,18 @@ static void revolved_face(dm_wall *wall, double r0, double h0, double r1, double
     dm_wall_finite_bound(wall);
 }
 
-DEMILL_API demill_status demill_wall_add_cone(demill_world *w, demill_id material,
-                                              const double point[3], const double axis[3],
-                                              double radius_start, double radius_end,
-                                              double length, int32_t caps, demill_id *out)
+/* A cone, or with `cylinder` set a cylinder (radius_start = radius_end,
+ * named radius), for the function fn. */
+static demill_status add_revolved(demill_world *w, const char *fn, int cylinder,
+                                  demill_id material, const double *point, const double *axis,
+                                  double radius_start, double radius_end, double length,
+                                  int32_t caps, demill_id *out)
 {
-    const char *fn = "wall_add_cone";
     uint32_t mat, slots[3] = {0, 0, 0};
     double u[3];
     demill_status s = wall_enter(w, fn, material, 1, point, axis, "axis", out, &mat, u);
-    if (s || (s = check_length(w, fn, radius_start, "radius_start", 1)) ||
+    if (s || (s = check_length(w, fn, radius_start, cylinder ? "radius" : "radius_start",
+                               !cylinder)) ||
         (s = check_length(w, fn, radius_end, "radius_end", 1)) ||
         (s = check_length(w, fn, length, "length", 0)))
         return s;
@@ -167,12 +169,22 @@ DEMILL_API demill_status demill_wall_add_cone(demill_world *w, demill_id materia
     return DEMILL_OK;
 }
 
+DEMILL_API demill_status demill_wall_add_cone(demill_world *w, demill_id material,
+                                              const double point[3], const double axis[3],
+                                              double radius_start, double radius_end,
+                                              double length, int32_t caps, demill_id *out)
+{
+    return add_revolved(w, "wall_add_cone", 0, material, point, axis, radius_start, radius_end,
+                        length, caps, out);
+}
+
 DEMILL_API demill_status demill_wall_add_cylinder(demill_world *w, demill_id material,
                                                   const double point[3], const double axis[3],
                                                   double radius, double length, int32_t caps,
                                                   demill_id *out)
 {
-    return demill_wall_add_cone(w, material, point, axis, radius, radius, length, caps, out);
+    return add_revolved(w, "wall_add_cylinder", 1, material, point, axis, radius, radius, length,
+                        caps, out);
 }
 
 DEMILL_API demill_status demill_wall_add_disc(demill_world *w, demill_id material,

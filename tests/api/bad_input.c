@@ -1314,6 +1314,149 @@ START_TEST(wall_values)
 }
 END_TEST
 
+/* The finite walls' constructors (3D only), harmonic motion and surface
+ * velocity: every bad value refused with its code and a message naming it,
+ * the world unchanged. */
+static void bad_finite_walls(scene *sc)
+{
+    demill_world *w = sc->w;
+    const int flat = sc->dim == 2;
+    const demill_id mat = sc->mat[1], wall = sc->wall[0];
+    const double p[3] = {0.3, 0.05, 0}, a[3] = {0, 1, 0}, x[3] = {1, 0, 0};
+    demill_id out = DEMILL_ID_NONE;
+    if (flat) {
+        ctx(sc, "finite walls in 2D");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_wall_add_cylinder(w, mat, p, a, 0.1, 0.2, DEMILL_CAPS_NONE, &out), "3D");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_wall_add_cone(w, mat, p, a, 0.1, 0.0, 0.2, DEMILL_CAPS_NONE, &out), "3D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_add_disc(w, mat, p, a, 0.1, 0.0, &out), "3D");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_wall_add_rectangle(w, mat, p, a, x, 0.1, 0.1, &out), "3D");
+    } else {
+        for (int c = 0; c < 3; c++)
+            for (int j = 0; j < 3; j++) {
+                double pb[3], ab[3];
+                memcpy(pb, p, sizeof pb);
+                memcpy(ab, a, sizeof ab);
+                pb[c] = ab[(c + 1) % 3] = nonfinite[j];
+                ctx(sc, "finite walls: point[%d] = %g", c, nonfinite[j]);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_cylinder(w, mat, pb, a, 0.1, 0.2, DEMILL_CAPS_NONE, &out),
+                    "point", NONFINITE);
+                BAD(sc, DEMILL_ERR_NOT_FINITE, demill_wall_add_disc(w, mat, pb, a, 0.1, 0, &out),
+                    "point", NONFINITE);
+                ctx(sc, "finite walls: axis[%d] = %g", (c + 1) % 3, nonfinite[j]);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_cone(w, mat, p, ab, 0.1, 0, 0.2, DEMILL_CAPS_NONE, &out),
+                    "axis", NONFINITE);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_rectangle(w, mat, p, a, ab, 0.1, 0.1, &out), "direction",
+                    NONFINITE);
+                ctx(sc, "finite walls: a size of %g", nonfinite[j]);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_cylinder(w, mat, p, a, nonfinite[j], 0.2, 0, &out),
+                    "radius", NONFINITE);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_disc(w, mat, p, a, 0.1, nonfinite[j], &out), "inner",
+                    NONFINITE);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_rectangle(w, mat, p, a, x, 0.1, nonfinite[j], &out),
+                    "half_height", NONFINITE);
+            }
+        const double zero[3] = {0, 0, 0}, up[3] = {0, 5, 0};
+        ctx(sc, "finite walls: bad shapes");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_wall_add_cylinder(w, mat, p, zero, 0.1, 0.2, 0, &out), "axis", "zero");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_cylinder(w, mat, p, a, -0.1, 0.2, 0, &out),
+            "radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_cylinder(w, mat, p, a, 0.0, 0.2, 0, &out),
+            "radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_cylinder(w, mat, p, a, 0.1, 0.0, 0, &out),
+            "length");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_cylinder(w, mat, p, a, 0.1, -1, 0, &out),
+            "length");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_cylinder(w, mat, p, a, 0.1, 0.2, 4, &out),
+            "caps");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_wall_add_cone(w, mat, p, a, 0.1, -0.01, 0.2, 0, &out), "radius_end");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_disc(w, mat, p, zero, 0.1, 0, &out),
+            "normal", "zero");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_disc(w, mat, p, a, 0.1, 0.1, &out),
+            "inner_radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_disc(w, mat, p, a, 0.1, 0.2, &out),
+            "inner_radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_disc(w, mat, p, a, 0.0, 0.0, &out),
+            "outer_radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_disc(w, mat, p, a, 0.1, -0.1, &out),
+            "inner_radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_rectangle(w, mat, p, a, up, 0.1, 0.1, &out),
+            "parallel");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_wall_add_rectangle(w, mat, p, a, zero, 0.1, 0.1, &out), "direction");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_rectangle(w, mat, p, a, x, 0.0, 0.1, &out),
+            "half_width");
+        ctx(sc, "finite walls: NULL arguments");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_cylinder(w, mat, NULL, a, 0.1, 0.2, 0, &out),
+            "point");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_cone(w, mat, p, NULL, 0.1, 0, 0.2, 0, &out),
+            "axis");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_disc(w, mat, p, a, 0.1, 0, NULL), "out");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_rectangle(w, mat, p, a, NULL, 0.1, 0.1, &out),
+            "direction");
+    }
+
+    /* harmonic motion */
+    const double z[3] = {0, 0, 1}, zero[3] = {0, 0, 0};
+    ctx(sc, "wall_set_harmonic bad mode, axis, values");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_wall_set_harmonic(w, wall, 0, a, 1e-3, 10, 0), "mode");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_wall_set_harmonic(w, wall, 3, a, 1e-3, 10, 0), "mode");
+    BAD(sc, DEMILL_ERR_NULL_POINTER,
+        demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, NULL, 1e-3, 10, 0), "axis");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, zero, 1e-3, 10, 0), "axis");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, a, 1e-3, 0, 0),
+        "frequency");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_ROTATION, z, 1e-3, -5, 0), "frequency");
+    for (int j = 0; j < 3; j++) {
+        ctx(sc, "wall_set_harmonic with %g", nonfinite[j]);
+        BAD(sc, DEMILL_ERR_NOT_FINITE,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, a, nonfinite[j], 10, 0),
+            "amplitude", NONFINITE);
+        BAD(sc, DEMILL_ERR_NOT_FINITE,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, a, 1e-3, nonfinite[j], 0),
+            "frequency", NONFINITE);
+        BAD(sc, DEMILL_ERR_NOT_FINITE,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_ROTATION, z, 1e-3, 10, nonfinite[j]),
+            "phase", NONFINITE);
+        const double an[3] = {nonfinite[j], 1, 0};
+        BAD(sc, DEMILL_ERR_NOT_FINITE,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, an, 1e-3, 10, 0),
+            "axis", NONFINITE);
+        const double un[3] = {0.1, nonfinite[j], 0};
+        ctx(sc, "wall_set_surface_velocity with %g", nonfinite[j]);
+        BAD(sc, DEMILL_ERR_NOT_FINITE, demill_wall_set_surface_velocity(w, wall, un), "velocity",
+            NONFINITE);
+    }
+    if (flat) {
+        ctx(sc, "wall motions out of the plane in 2D");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, z, 1e-3, 10, 0), "axis");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_ROTATION, a, 1e-3, 10, 0), "z");
+        const double uz[3] = {0.1, 0, 0.1};
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_set_surface_velocity(w, wall, uz), "velocity");
+    }
+}
+
+START_TEST(finite_wall_values)
+{
+    both_dims(NULL, bad_finite_walls, NULL);
+}
+END_TEST
+
 /* ------------------------------------------------------------------------ */
 /* Handles: removed, foreign, wrong kind, none                                */
 
@@ -1994,6 +2137,7 @@ int main(void)
     tcase_add_test(tc, particles_write_values);
     tcase_add_test(tc, particle_set_values);
     tcase_add_test(tc, wall_values);
+    tcase_add_test(tc, finite_wall_values);
     tcase_add_test(tc, removed_handles);
     tcase_add_test(tc, foreign_handles);
     tcase_add_test(tc, wrong_kind_and_none_handles);

@@ -10,7 +10,9 @@
  * every part of the state: a 3D mill with lifters turning up to speed over a
  * ramp, Hertz-Mindlin contacts with rolling friction, a collision spectrum
  * and particles removed (free handles); a 2D box of discs with a moving
- * piston wall, linear contacts, on each of the three integrators.
+ * piston wall, linear contacts, on each of the three integrators; finite
+ * walls of every kind (a capped cylinder, an annulus, a rectangle, a cone)
+ * in harmonic, rigid and belt motion, with balls thrown at each.
  *
  * Snapshots: restoring a snapshot and stepping repeats the first run
  * bitwise, in the same world and in another one (of the other dimension,
@@ -27,6 +29,7 @@
  * steps. (tests/fuzz/ runs the loader under libFuzzer for longer.)
  */
 #define _POSIX_C_SOURCE 200809L /* getpid */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -108,14 +111,70 @@ static demill_world *box2d(int integrator)
     return w;
 }
 
+/* Finite walls in every motion: a can (a cylinder capped below) vibrating
+ * up and down whose surface moves as a belt, an orifice plate (annulus)
+ * rocking about its axis, a tilted rectangle rocking about its normal and
+ * a hopper (cone) turning, with balls thrown at each. */
+static demill_world *walls3d(void)
+{
+    demill_world *w;
+    demill_id balls, liner, can, plate, shelf, hopper;
+    ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+    dm_test_mill_materials(w, &balls, &liner);
+    const double o[3] = {0, 0, 0}, y[3] = {0, 1, 0}, x[3] = {1, 0, 0}, belt[3] = {0.5, 0, 0.2};
+    const double ring[3] = {0, 0.06, 0}, top[3] = {0, 0.07, 0}, mid[3] = {0.01, 0.03, 0};
+    const double tilt[3] = {0.3, 1, 0}, spin[3] = {0, 20, 0};
+    DM_OK(w, demill_wall_add_cylinder(w, liner, o, y, 0.05, 0.1, DEMILL_CAPS_START, &can));
+    DM_OK(w, demill_wall_set_harmonic(w, can, DEMILL_HARMONIC_TRANSLATION, y, 5e-4, 30, 0.3));
+    DM_OK(w, demill_wall_set_surface_velocity(w, can, belt));
+    DM_OK(w, demill_wall_add_disc(w, liner, ring, y, 0.05, 0.02, &plate));
+    DM_OK(w, demill_wall_set_harmonic(w, plate, DEMILL_HARMONIC_ROTATION, y, 0.2, 10, 0));
+    DM_OK(w, demill_wall_add_rectangle(w, liner, mid, tilt, x, 0.02, 0.02, &shelf));
+    DM_OK(w, demill_wall_set_harmonic(w, shelf, DEMILL_HARMONIC_ROTATION, tilt, 0.1, 15, 1));
+    DM_OK(w, demill_wall_add_cone(w, liner, top, y, 0.02, 0.05, 0.03, DEMILL_CAPS_NONE,
+                                  &hopper));
+    DM_OK(w, demill_wall_set_motion(w, hopper, NULL, spin, NULL));
+    enum { N = 22 };
+    double p[3 * N], v[3 * N], r[N];
+    for (int k = 0; k < N; k++) {
+        const double a = 2 * 3.14159265358979 * k / 6;
+        r[k] = 0.004;
+        v[3 * k] = v[3 * k + 2] = 0;
+        v[3 * k + 1] = -0.3;
+        if (k < 9) { /* on the can's floor */
+            p[3 * k] = 0.012 * (k % 3 - 1) - 0.015;
+            p[3 * k + 1] = 0.0042;
+            p[3 * k + 2] = 0.012 * (k / 3 - 1);
+        } else if (k < 15) { /* above the plate */
+            p[3 * k] = 0.035 * cos(a);
+            p[3 * k + 1] = 0.0655;
+            p[3 * k + 2] = 0.035 * sin(a);
+        } else if (k < 21) { /* in the hopper, thrown outwards */
+            p[3 * k] = 0.026 * cos(a);
+            p[3 * k + 1] = 0.085;
+            p[3 * k + 2] = 0.026 * sin(a);
+            v[3 * k] = 0.5 * cos(a);
+            v[3 * k + 2] = 0.5 * sin(a);
+        } else { /* onto the shelf */
+            p[3 * k] = 0.01;
+            p[3 * k + 1] = 0.0375;
+            p[3 * k + 2] = 0;
+        }
+    }
+    DM_OK(w, demill_particles_add(w, balls, N, p, r, v, DEMILL_ADD_NO_OVERLAP, NULL));
+    return w;
+}
+
 static demill_world *scene(int which)
 {
     static const int integrators[3] = {DEMILL_INTEGRATOR_VELOCITY_VERLET,
                                        DEMILL_INTEGRATOR_SYMPLECTIC_EULER,
                                        DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT};
+    if (which == 4)
+        return walls3d();
     return which == 0 ? mill3d(DEMILL_INTEGRATOR_VELOCITY_VERLET) : box2d(integrators[which - 1]);
 }
-#define SCENES 4
+#define SCENES 5
 #define HALF 2500 /* n steps: 0.025 s, with many neighbour rebuilds and contacts */
 
 /* ------------------------------------------------------------------------ */
@@ -261,7 +320,8 @@ START_TEST(snapshot_restores_bitwise)
     same_bytes(first, again, "the run repeated from the snapshot");
 
     /* into another world, of the other dimension, whose ids then name it */
-    const int dim = _i == 0 ? 3 : 2;
+    const int steel = _i == 0 || _i == 4; /* the 3D scenes, of the mill's materials */
+    const int dim = steel ? 3 : 2;
     ck_assert_int_eq(demill_world_create(5 - dim, &other), DEMILL_OK);
     DM_OK(other, demill_snapshot_restore(other, snap));
     double d;
@@ -277,12 +337,12 @@ START_TEST(snapshot_restores_bitwise)
     DM_OK(other, demill_world_ids(other, DEMILL_KIND_PARTICLE, NULL, 0, &np));
     DM_OK(w, demill_world_get(w, DEMILL_WORLD_PARTICLE_COUNT, &d));
     ck_assert_uint_eq(np, (size_t)d);
-    ck_assert_uint_eq(nm, _i == 0 ? 2 : 1);
+    ck_assert_uint_eq(nm, steel ? 2 : 1);
     ck_assert_uint_eq(nd, _i == 0 ? 1 : 0);
-    ck_assert_uint_eq(nw, _i == 0 ? 0 : 4);
+    ck_assert_uint_eq(nw, _i == 0 ? 0 : 4); /* a capped wall is one wall */
     double density;
     DM_OK(other, demill_material_get(other, ids[0], DEMILL_MATERIAL_DENSITY, &density));
-    ck_assert(density == (_i == 0 ? 7800 : 2500));
+    ck_assert(density == (steel ? 7800 : 2500));
     if (_i == 0) {
         demill_id drum, mine;
         DM_OK(other, demill_world_ids(other, DEMILL_KIND_DRUM, &drum, 1, NULL));
