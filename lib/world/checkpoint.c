@@ -638,7 +638,8 @@ static demill_status check_particles(demill_world *t)
     return DEMILL_OK;
 }
 
-/* A wall's finite shape, caps and motions are what the API makes: a cap
+/* A wall's finite shape, caps and motions are what the API makes: a unit
+ * axis or normal (and a rectangle's unit direction in its plane); a cap
  * names a live wall that names it back, shares its kind and material; a
  * harmonic motion has a unit axis and a positive frequency; every value is
  * finite. */
@@ -654,11 +655,18 @@ static bool finite_wall_ok(const demill_world *t, uint32_t k)
         const double *a = wl->h_axis;
         ok &= wl->h_freq > 0.0 && fabs(a[0] * a[0] + a[1] * a[1] + a[2] * a[2] - 1.0) < 1e-9;
     }
+    const double *n = wl->n0, *e = wl->e0;
+    const bool finite = wl->kind == DM_WALL_REVOLVED || wl->kind == DM_WALL_RECT;
+    if (finite) /* a unit axis or normal, and a bounding sphere */
+        ok &= all_finite(n, 3) && fabs(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1.0) < 1e-9 &&
+              isfinite(wl->brad) && wl->brad >= 0.0;
     if (wl->kind == DM_WALL_REVOLVED)
         ok &= wl->seg[0] >= 0.0 && wl->seg[2] >= 0.0 &&
               (wl->seg[0] != wl->seg[2] || wl->seg[1] != wl->seg[3]);
-    if (wl->kind == DM_WALL_RECT)
-        ok &= wl->seg[0] > 0.0 && wl->seg[1] > 0.0;
+    if (wl->kind == DM_WALL_RECT) /* and a unit direction in its plane */
+        ok &= wl->seg[0] > 0.0 && wl->seg[1] > 0.0 &&
+              fabs(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] - 1.0) < 1e-9 &&
+              fabs(e[0] * n[0] + e[1] * n[1] + e[2] * n[2]) < 1e-9;
     if (wl->parent) {
         const uint32_t p = wl->parent - 1;
         ok &= p < t->nwalls && p != k && t->walls[p].kind == wl->kind &&
