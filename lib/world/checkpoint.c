@@ -89,8 +89,9 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 /* ---- the bytes of a state --------------------------------------------------- */
 
 #define CK_MAGIC "DEMILLCK"
-#define CK_FORMAT 2u          /* the format this library writes and the newest it reads;
-                                 2 adds the impacts on an ore to the drum's spectrum */
+#define CK_FORMAT 3u          /* the format this library writes and the newest it reads;
+                                 2 adds the impacts on an ore to the drum's spectrum,
+                                 3 a material per part of the drum */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -297,7 +298,12 @@ static void transfer_wall(io *s, dm_wall *wl)
 static void transfer_drum(io *s, dm_drum *d, int dim)
 {
     io_bool(s, &d->alive);
-    io_u32(s, &d->material, 1);
+    if (s->format >= 3) {
+        io_u32(s, d->material, 3);
+    } else { /* one material for the whole drum */
+        io_u32(s, d->material, 1);
+        d->material[1] = d->material[2] = d->material[0];
+    }
     io_f64(s, &d->diameter, 1);
     io_f64(s, &d->length, 1);
     io_f64(s, &d->porosity, 1);
@@ -641,7 +647,10 @@ static demill_status check_walls(demill_world *t)
         if (!ok)
             return dm_fail(t, DEMILL_ERR_FORMAT, "wall slot %u is inconsistent", k);
     }
-    if (drum != d->nwall || (d->nwall && (!d->alive || d->material >= t->nmat)))
+    bool materials = true;
+    for (int q = 0; q < 3; q++)
+        materials &= d->material[q] < t->nmat;
+    if (drum != d->nwall || (d->nwall && (!d->alive || !materials)))
         return dm_fail(t, DEMILL_ERR_FORMAT, "the drum lists %u walls, %u found", d->nwall, drum);
     /* a drum's walls are its shell, its end caps (3D) and its lifters in order */
     const uint32_t caps = t->dim == 3 ? 2 : 0;
@@ -655,7 +664,7 @@ static demill_status check_walls(demill_world *t)
                                     : wl->drum_part == DM_PART_LIFTER &&
                                           wl->kind == DM_WALL_PRISM &&
                                           wl->lifter == (int)(q - 1 - caps);
-        if (!ok)
+        if (!ok || wl->material != d->material[wl->drum_part - 1])
             return dm_fail(t, DEMILL_ERR_FORMAT, "drum wall %u is not the part it should be", q);
     }
     for (uint32_t k = 0; k < t->wh.n; k++)

@@ -102,6 +102,8 @@ PROTOTYPES = {
     "demill_drum_remove": (status, (WorldP, id_t)),
     "demill_drum_set": (status, (WorldP, id_t, c_int32, c_double)),
     "demill_drum_get": (status, (WorldP, id_t, c_int32, dptr)),
+    "demill_drum_set_material": (status, (WorldP, id_t, c_int32, id_t)),
+    "demill_drum_get_material": (status, (WorldP, id_t, c_int32, idptr)),
     "demill_drum_add_lifter": (status, (WorldP, id_t, c_double, c_double, c_double, c_double)),
     "demill_drum_lifter_get": (status, (WorldP, id_t, c_uint32, c_int32, dptr)),
     "demill_drum_fill": (status, (WorldP, id_t, id_t, c_int32, dptr, c_size_t, c_int32, c_double,

@@ -13,7 +13,7 @@ __all__ = ["VERSION_MAJOR", "VERSION_MINOR", "VERSION_PATCH", "VERSION_NUMBER",
            "VERSION_STRING", "ID_NONE", "Status", "Kind", "Integrator", "WorldKey",
            "MaterialKey", "Normal", "Damping", "Tangential", "Rolling", "PairKey",
            "ParticleField", "IdField", "AddFlag", "WallField", "ContactField", "Energy",
-           "DrumKey", "LifterField", "Sizes", "Fill", "Spectrum"]
+           "DrumKey", "DrumPart", "LifterField", "Sizes", "Fill", "Spectrum"]
 
 VERSION_MAJOR = 0
 VERSION_MINOR = 1
@@ -263,6 +263,17 @@ class DrumKey(IntEnum):
     ENERGY_DISSIPATED = 466
     DISSIPATION_MEAN = 467
     LIFTER_COUNT = 468
+    FORCE_X = 469
+    FORCE_Y = 470
+    FORCE_Z = 471
+
+
+class DrumPart(IntEnum):
+    """Parts of the drum, each with a material (``DEMILL_DRUM_PART_*``)."""
+
+    SHELL = 1
+    CAPS = 2
+    LIFTERS = 3
 
 
 class LifterField(IntEnum):
@@ -317,6 +328,7 @@ C_PREFIXES = {
     ContactField: "DEMILL_CONTACT_",
     Energy: "DEMILL_ENERGY_",
     DrumKey: "DEMILL_DRUM_",
+    DrumPart: "DEMILL_DRUM_PART_",
     LifterField: "DEMILL_LIFTER_",
     Sizes: "DEMILL_SIZES_",
     Fill: "DEMILL_FILL_",

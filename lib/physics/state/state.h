@@ -93,6 +93,7 @@ typedef struct dm_wall {
 /* Wall kinds: a plane (half-space), the inside of a cylindrical shell about
  * the z axis, a prism along z with a convex polygonal cross-section. */
 enum { DM_WALL_PLANE = 1, DM_WALL_SHELL = 2, DM_WALL_PRISM = 3 };
+/* The drum's parts, numbered as DEMILL_DRUM_PART_* */
 enum { DM_PART_NONE = 0, DM_PART_SHELL = 1, DM_PART_CAP = 2, DM_PART_LIFTER = 3 };
 
 /* ---- particles (state/particles.c) ------------------------------------- */
@@ -232,7 +233,8 @@ typedef struct dm_spectrum {
 
 typedef struct dm_drum {
     bool alive;
-    uint32_t material;
+    uint32_t material[3];   /* material slot of each part: shell, caps, lifters
+                               (index DM_PART_* - 1) */
     double diameter, length, porosity;
     /* the evenly spaced lifters, and the lifters in use */
     uint32_t even_count;
