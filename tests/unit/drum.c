@@ -1659,6 +1659,43 @@ START_TEST(part_materials)
 }
 END_TEST
 
+/* The charge angles of a charge of balls and fines, at rest (the angles are
+ * read from positions). One ball of d = 10 mm at radius 0.14 m in the middle
+ * of each 5° bin from φ = -40° to 120° (32 bins), in the default drum (R =
+ * 0.15, no lifters: the ring is 0.13 < r < 0.15), and 20 fines of d = 1 mm in
+ * each of the 6 bins from 0° to 30°. The balls fill the ring from -40° to
+ * 120°, which is the charge: toe -40°, shoulder 120°. Counted by number the
+ * six bins of fines (21 each) would set the threshold at 10.5 and the charge
+ * would be 0° to 30°; by volume each of them holds 1.02 balls. */
+START_TEST(charge_angles_weigh_by_volume)
+{
+    for (int dim = 2; dim <= 3; dim++) {
+        scene s = drum_scene(dim, DEMILL_DAMPING_NONE);
+        demill_world *w = s.w;
+        const double deg = M_PI / 180.0;
+        double x[3 * (32 + 120)] = {0}, r[32 + 120];
+        int n = 0;
+        for (int k = 0; k < 32; k++, n++) {
+            const double phi = (-37.5 + 5.0 * k) * deg;
+            x[3 * n] = 0.14 * sin(phi);
+            x[3 * n + 1] = -0.14 * cos(phi);
+            r[n] = 0.005;
+        }
+        for (int b = 0; b < 6; b++)
+            for (int k = 0; k < 20; k++, n++) { /* 5 angles x 4 radii, 2 mm apart */
+                const double phi = (5.0 * b + 0.5 + 1.0 * (k % 5)) * deg, rho = 0.132 + 0.002 * (k / 5);
+                x[3 * n] = rho * sin(phi);
+                x[3 * n + 1] = -rho * cos(phi);
+                r[n] = 0.0005;
+            }
+        DM_OK(w, demill_particles_add(w, s.mat, (size_t)n, x, r, NULL, 0, NULL));
+        NEAR(drum_get(w, s.drum, DEMILL_DRUM_TOE_ANGLE), -40.0 * deg, 1e-12);
+        NEAR(drum_get(w, s.drum, DEMILL_DRUM_SHOULDER_ANGLE), 120.0 * deg, 1e-12);
+        demill_world_destroy(w);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("drum");
@@ -1667,6 +1704,7 @@ int main(void)
     tcase_add_test(geo, geometry_rectangular_lifter);
     tcase_add_test(geo, geometry_inclined_lifter);
     tcase_add_test(geo, geometry_turned_drum);
+    tcase_add_test(geo, charge_angles_weigh_by_volume);
     suite_add_tcase(s, geo);
     TCase *speed = tcase_create("speed");
     tcase_add_test(speed, speed_views);
@@ -1696,6 +1734,7 @@ int main(void)
     tcase_add_test(lift, lifter_force_pressed_particle);
     tcase_add_test(lift, lifter_force_resting_particle);
     tcase_add_test(lift, part_materials);
+
     suite_add_tcase(s, lift);
     return dm_test_run(s);
 }
