@@ -290,18 +290,16 @@ int dm_wgeom_reserve(demill_world *w)
     return 0;
 }
 
-/* Stores the geometry of wall candidate q of particle i: overlap delta,
- * unit normal n from the particle into the wall, and from them the contact
- * point and the wall's velocity there. */
-void dm_wgeom_store(demill_world *w, uint32_t q, uint32_t i, const dm_wall *wall, double delta,
-                    const double *n)
+/* Stores the geometry of wall candidate q of a particle at x of radius r:
+ * overlap delta, unit normal n from the particle into the wall, and from
+ * them the contact point and the wall's velocity there (static, so that
+ * dm_wgeom_range() inlines it: a library's exported function is not). */
+static inline void wgeom_store(dm_wgeom *g, int D, uint32_t q, const double *x, double r,
+                               const dm_wall *wall, double delta, const double *n)
 {
-    dm_wgeom *g = &w->wg;
-    const int D = w->dim;
-    const double *x = w->p.x + D * i;
     double *nrm = g->nrm + D * q, *cp = g->cp + D * q, *vw = g->vw + D * q;
     g->delta[q] = delta;
-    double arm = w->p.r[i] - 0.5 * delta, rel[3] = {0.0, 0.0, 0.0};
+    double arm = r - 0.5 * delta, rel[3] = {0.0, 0.0, 0.0};
     for (int c = 0; c < D; c++) {
         nrm[c] = n[c];
         cp[c] = x[c] + arm * nrm[c];
@@ -314,11 +312,18 @@ void dm_wgeom_store(demill_world *w, uint32_t q, uint32_t i, const dm_wall *wall
         vw[c] = wall->vel[c] + spin[c];
 }
 
+void dm_wgeom_store(demill_world *w, uint32_t q, uint32_t i, const dm_wall *wall, double delta,
+                    const double *n)
+{
+    wgeom_store(&w->wg, w->dim, q, w->p.x + w->dim * i, w->p.r[i], wall, delta, n);
+}
+
 /* Contact geometry of candidates p0 .. p1-1 of a particle-wall bucket whose
  * first candidate has index g0 in w->wg (room reserved by the neighbour
  * build), but for mesh candidates: dm_wgeom_meshes() has done those. */
 void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p0, uint32_t p1)
 {
+    dm_wgeom *g = &w->wg;
     const int D = w->dim;
     const dm_particles *P = &w->p;
     for (uint32_t p = p0; p < p1; p++) {
@@ -326,9 +331,10 @@ void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p
         const dm_wall *wall = &w->walls[b->j[p]];
         if (wall->mesh)
             continue;
+        const double *x = P->x + D * i;
         double n[3];
-        const double delta = P->r[i] - dm_wall_closest(wall, P->x + D * i, D, n);
-        dm_wgeom_store(w, g0 + p, i, wall, delta, n);
+        const double delta = P->r[i] - dm_wall_closest(wall, x, D, n);
+        wgeom_store(g, D, g0 + p, x, P->r[i], wall, delta, n);
     }
 }
 
