@@ -91,7 +91,8 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 #define CK_MAGIC "DEMILLCK"
 #define CK_FORMAT 3u          /* the format this library writes and the newest it reads;
                                  2 adds the impacts on an ore to the drum's spectrum,
-                                 3 a material per part of the drum */
+                                 3 a material per part of the drum and the walls'
+                                 meshes (section MESH) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -405,6 +406,62 @@ static void transfer_bucket(io *s, dm_bucket *b, int kernel, int dim, bool event
     io_f64_array(s, &b->hist, (size_t)b->n * hs, (size_t)b->n * hs);
 }
 
+/* The meshes of the mesh walls (their vertices, elements and frame; the rest
+ * is built again from them, as when they were added) and the mesh element
+ * of every particle-wall pair; before format 3, no mesh and elements 0. */
+static void transfer_meshes(io *s, demill_world *w)
+{
+    if (s->format < 3) {
+        for (int k = 0; k < DM_KERNELS && s->reading && !s->status; k++) {
+            dm_bucket *b = &w->pw.b[k];
+            if (!(b->t = calloc(b->n ? b->n : 1, sizeof *b->t)))
+                io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory");
+        }
+        return;
+    }
+    io_section(s, "MESH");
+    for (uint32_t k = 0; k < w->nwalls && !s->status; k++) {
+        dm_wall *wl = &w->walls[k];
+        if (wl->kind != DM_WALL_MESH)
+            continue;
+        dm_trimesh none = {.nel = w->dim}, *m = s->reading ? &none : wl->mesh;
+        uint32_t nel = (uint32_t)m->nel;
+        io_u32(s, &nel, 1);
+        if (s->reading && !s->status && nel != (uint32_t)w->dim)
+            io_fail(s, DEMILL_ERR_FORMAT, "wall %u: a mesh of %u-vertex elements in a %dD world",
+                    k, nel, w->dim);
+        io_count(s, &m->nv, UINT32_MAX, "mesh vertices");
+        io_count(s, &m->nt, UINT32_MAX / 3, "mesh elements");
+        if (s->reading && !s->status && !m->nt)
+            io_fail(s, DEMILL_ERR_FORMAT, "wall %u: a mesh without elements", k);
+        io_f64_array(s, &m->v, 3 * (size_t)m->nv, 3 * (size_t)m->nv);
+        io_array(s, &m->el, (size_t)nel * m->nt, (size_t)nel * m->nt, sizeof *m->el);
+        io_f64(s, m->frame_rot, 9);
+        io_f64(s, m->frame_off, 3);
+        if (!s->reading)
+            continue;
+        for (size_t q = 0; q < (size_t)nel * m->nt && !s->status; q++)
+            if (m->el[q] >= m->nv)
+                io_fail(s, DEMILL_ERR_FORMAT, "wall %u: element %zu names vertex %u of %u", k,
+                        q / nel, m->el[q], m->nv);
+        for (size_t t = 0; t < m->nt && !s->status; t++)
+            if (dm_trimesh_degenerate((int)nel, m->v, m->el, t))
+                io_fail(s, DEMILL_ERR_FORMAT, "wall %u: element %zu is degenerate", k, t);
+        if (!s->status && !(wl->mesh = dm_trimesh_build((int)nel, m->nv, m->v, m->nt, m->el)))
+            io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory");
+        if (!s->status) {
+            memcpy(wl->mesh->frame_rot, m->frame_rot, sizeof m->frame_rot);
+            memcpy(wl->mesh->frame_off, m->frame_off, sizeof m->frame_off);
+        }
+        free(m->v);
+        free(m->el);
+    }
+    for (int k = 0; k < DM_KERNELS && !s->status; k++) {
+        dm_bucket *b = &w->pw.b[k];
+        io_array(s, &b->t, b->n, b->n, sizeof *b->t);
+    }
+}
+
 /* Walks every field of state w. Reading, w starts zeroed (with its pointers
  * NULL) and the arrays are allocated as they are read. */
 static void transfer(io *s, demill_world *w)
@@ -511,6 +568,7 @@ static void transfer(io *s, demill_world *w)
         for (int k = 0; k < DM_KERNELS; k++)
             transfer_bucket(s, side ? &w->pw.b[k] : &w->pp.b[k], k, w->dim, w->events,
                             w->nlist_valid);
+    transfer_meshes(s, w);
     io_section(s, "END.");
 }
 
@@ -630,7 +688,8 @@ static demill_status check_walls(demill_world *t)
         const dm_wall *wl = &t->walls[k];
         if (!wl->kind)
             continue;
-        bool ok = wl->kind >= DM_WALL_PLANE && wl->kind <= DM_WALL_PRISM &&
+        bool ok = wl->kind >= DM_WALL_PLANE && wl->kind <= DM_WALL_MESH &&
+                  (wl->kind == DM_WALL_MESH) == (wl->mesh != NULL) &&
                   wl->material < t->nmat && wl->npoly >= 0 && wl->npoly <= DM_MAX_POLY;
         if (wl->drum_part) {
             drum++;
@@ -730,7 +789,8 @@ static demill_status check_contacts(demill_world *t)
                     ok = j < P->n && i < j && dm_pair_kernel(t, P->mat[i], P->mat[j]) == k;
                 else if (ok)
                     ok = j < t->nwalls && t->walls[j].kind &&
-                         dm_pair_kernel(t, P->mat[i], t->walls[j].material) == k;
+                         dm_pair_kernel(t, P->mat[i], t->walls[j].material) == k &&
+                         b->t[q] < (t->walls[j].mesh ? t->walls[j].mesh->nt : 1);
                 if (!ok)
                     return dm_fail(t, DEMILL_ERR_FORMAT, "%s contact %u of list %d joins %u and %u",
                                    side ? "particle-wall" : "particle-particle", q, k, i, j);

@@ -121,8 +121,8 @@ PROTOTYPES = {
 }
 
 #: Functions newer than the oldest library this binding supports (progress,
-#: VTK output, snapshots and checkpoints, object listing, grinding): bound
-#: when the library has them.
+#: VTK output, snapshots and checkpoints, object listing, mesh walls,
+#: grinding): bound when the library has them.
 OPTIONAL_PROTOTYPES = {
     "demill_world_set_progress": (status, (WorldP, ProgressFn, c_void_p, c_uint64)),
     "demill_vtk_write_particles": (status, (WorldP, c_char_p)),
@@ -138,6 +138,10 @@ OPTIONAL_PROTOTYPES = {
     "demill_world_save_buffer": (status, (WorldP, c_void_p, c_size_t, sizeptr)),
     "demill_world_load_buffer": (status, (WorldP, c_void_p, c_size_t)),
     "demill_world_ids": (status, (WorldP, c_int32, idptr, c_size_t, sizeptr)),
+    "demill_wall_add_mesh": (status, (WorldP, id_t, c_size_t, dptr, c_size_t, POINTER(c_uint32),
+                                      idptr)),
+    "demill_wall_add_polyline": (status, (WorldP, id_t, c_size_t, dptr, c_int32, idptr)),
+    "demill_wall_mesh_info": (status, (WorldP, id_t, sizeptr, sizeptr)),
     # grinding.h
     "demill_grinding_create": (status, (c_double, c_uint32, POINTER(GrindingP))),
     "demill_grinding_destroy": (None, (GrindingP,)),

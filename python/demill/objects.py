@@ -234,8 +234,9 @@ class Particles:
 
 
 class Wall(Handle, Keyed):
-    """A plane wall (:meth:`World.add_plane`). Its fields are read-only
-    3-vectors; :meth:`set_motion` moves it."""
+    """A wall: a plane (:meth:`World.add_plane`), a triangle mesh
+    (:meth:`World.add_mesh`) or a polyline (:meth:`World.add_polyline`). Its
+    fields are read-only 3-vectors; :meth:`set_motion` moves it."""
 
     __slots__ = ()
     kind = Kind.WALL
@@ -260,6 +261,13 @@ class Wall(Handle, Keyed):
                                              (angular_velocity, "angular_velocity"),
                                              (centre, "centre")))
         self.world._call("demill_wall_set_motion", self.id, ptr(v), ptr(w), ptr(c))
+
+    @property
+    def mesh_size(self):
+        """A mesh's or polyline's (vertices, triangles or segments)."""
+        nv, ne = ctypes.c_size_t(), ctypes.c_size_t()
+        self.world._call("demill_wall_mesh_info", self.id, ctypes.byref(nv), ctypes.byref(ne))
+        return nv.value, ne.value
 
     def remove(self):
         """Removes the wall; its id becomes invalid."""

@@ -7,7 +7,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._core import (Closable, Keyed, Param, VectorParam, as_id, check, configure, ptr,
+from ._core import (Closable, Keyed, Param, VectorParam, as_id, check, configure, doubles, ptr,
                     read_counted, strerror, vector)
 from ._lib import ProgressFn, WorldP, lib
 from .constants import Energy, Integrator, Kind, Status, WorldKey
@@ -247,6 +247,32 @@ class World(Closable, Keyed):
                    ctypes.byref(out))
         return Wall(self, out.value)
 
+    def add_mesh(self, material, vertices, triangles):
+        """Adds a triangle-mesh wall (3D): ``vertices`` n x 3 (m),
+        ``triangles`` m x 3 vertex indices from 0. Particles touch it from
+        both sides. A :class:`Wall`."""
+        v = doubles(vertices, (-1, 3), "vertices")
+        t = np.ascontiguousarray(triangles, dtype=np.uint32)
+        if t.ndim != 2 or t.shape[1] != 3:
+            raise ValueError(f"triangles: expected an array of shape n x 3, got {t.shape}")
+        out = ctypes.c_uint64()
+        self._call("demill_wall_add_mesh", as_id(material), v.shape[0], ptr(v), t.shape[0],
+                   t.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32)), ctypes.byref(out))
+        return Wall(self, out.value)
+
+    def add_polyline(self, material, points, closed=False):
+        """Adds a polyline wall (2D): the segments between consecutive
+        ``points`` (n x 2, or n x 3 with z = 0, m), and back to the first if
+        ``closed``. Particles touch it from both sides. A :class:`Wall`."""
+        p = doubles(points, None, "points")
+        if p.ndim == 2 and p.shape[1] == 2:
+            p = np.hstack([p, np.zeros((p.shape[0], 1))])
+        p = doubles(p, (-1, 3), "points")
+        out = ctypes.c_uint64()
+        self._call("demill_wall_add_polyline", as_id(material), p.shape[0], ptr(p),
+                   1 if closed else 0, ctypes.byref(out))
+        return Wall(self, out.value)
+
     def add_drum(self, material, **params):
         """Creates the world's drum of the given wall material with
         parameters by name, e.g. ``world.add_drum(steel, diameter=0.3)``."""
@@ -268,7 +294,7 @@ class World(Closable, Keyed):
 
     @property
     def walls(self):
-        """Every plane wall, as a list of :class:`Wall`."""
+        """Every wall (planes, meshes, polylines), as a list of :class:`Wall`."""
         return [Wall(self, i) for i in self.ids(Kind.WALL)]
 
     @property

@@ -58,6 +58,37 @@ typedef struct dm_pairparam {
 } dm_pairparam;
 
 /* ---- walls (geometry/walls.c) ------------------------------------------- */
+/* A node of a mesh's bounding-volume hierarchy: the box of its elements; an
+ * inner node's children are nodes first and first + 1, a leaf's elements
+ * order[first .. first + count - 1]. */
+typedef struct dm_bvh_node {
+    double lo[3], hi[3];
+    uint32_t first, count; /* count 0: an inner node */
+} dm_bvh_node;
+
+/* A triangle mesh (3D) or a polyline (2D) wall (geometry/mesh.c): elements
+ * (triangles or segments) in the mesh's own frame, which frame_rot and
+ * frame_off place in the wall's reference frame (X = frame_rot V + frame_off),
+ * with what the contact rule needs: unit normals, the edges (triangles) and
+ * the elements incident to each edge and vertex (CSR, in increasing element
+ * order, so the first is the owner), and an AABB tree over the elements. */
+typedef struct dm_trimesh {
+    size_t bytes;           /* the one block holding the mesh and its arrays */
+    int nel;                /* vertices per element: 3 (triangles) or 2 (segments) */
+    uint32_t nv, nt, ne;    /* vertices, elements, edges (triangles only) */
+    double *v;              /* 3 per vertex */
+    uint32_t *el;           /* nel vertex indices per element */
+    double *nrm;            /* 3 per element: unit normal (right hand; 2D: (e_y, -e_x)/|e|) */
+    uint32_t *el_edge;      /* 3 per triangle: its edge from vertex k to k + 1 */
+    uint32_t *edge_start, *edge_el; /* ne + 1, and the triangles incident to each edge */
+    uint32_t *vert_start, *vert_el; /* nv + 1, and the elements incident to each vertex */
+    dm_bvh_node *node;      /* the tree, node 0 its root */
+    uint32_t nnodes;
+    uint32_t *order;        /* elements in leaf order */
+    double frame_rot[9], frame_off[3];
+    double bs_centre[3], bs_radius; /* a sphere about every vertex, in the mesh's frame */
+} dm_trimesh;
+
 #define DM_MAX_POLY 8 /* vertices of a lifter's cross-section, at most */
 
 typedef struct dm_wall {
@@ -88,11 +119,13 @@ typedef struct dm_wall {
     /* results of the last force evaluation */
     double force[3], torque[3];
     double dissipated;     /* energy dissipated in contacts with the wall (tally) */
+    dm_trimesh *mesh;      /* DM_WALL_MESH: its mesh (owned), else NULL */
 } dm_wall;
 
 /* Wall kinds: a plane (half-space), the inside of a cylindrical shell about
- * the z axis, a prism along z with a convex polygonal cross-section. */
-enum { DM_WALL_PLANE = 1, DM_WALL_SHELL = 2, DM_WALL_PRISM = 3 };
+ * the z axis, a prism along z with a convex polygonal cross-section, a
+ * triangle mesh (3D) or polyline (2D), a thin surface touched from both sides. */
+enum { DM_WALL_PLANE = 1, DM_WALL_SHELL = 2, DM_WALL_PRISM = 3, DM_WALL_MESH = 4 };
 /* The drum's parts, numbered as DEMILL_DRUM_PART_* */
 enum { DM_PART_NONE = 0, DM_PART_SHELL = 1, DM_PART_CAP = 2, DM_PART_LIFTER = 3 };
 
@@ -117,6 +150,8 @@ typedef struct dm_bucket {
     int hs;                  /* history doubles per pair */
     uint32_t n, cap;
     uint32_t *i, *j;         /* for walls: i = particle, j = wall slot */
+    uint32_t *t;             /* walls only (NULL for particle pairs): the mesh element, 0
+                                for other walls */
     double *hist;            /* zeros unless on */
     uint8_t *on;             /* 1: touching at the last step */
     uint32_t base;           /* pair id of the first pair (see dm_results) */
@@ -133,7 +168,7 @@ typedef struct dm_clist {
 /* The pairs one range of the neighbour search found, in the order found;
  * k is the kernel, plus DM_KERNELS for particle-wall pairs. */
 typedef struct dm_pairbuf {
-    uint32_t *i, *j;
+    uint32_t *i, *j, *t;               /* t: the mesh element of a particle-wall pair */
     uint8_t *k;
     uint32_t n, cap;
     bool failed;                       /* out of memory */
@@ -147,7 +182,7 @@ typedef struct dm_grid {
     uint32_t cap;
     double *scratch;          /* 3 doubles per particle */
     /* contacts whose history is carried over a build */
-    uint32_t *ci, *cj;
+    uint32_t *ci, *cj, *ct;   /* ct: mesh element (particle-wall), else 0 */
     uint16_t *ck;             /* kernel (pp) or kernel + DM_KERNELS (pw) */
     double *ch;               /* DM_MAX_HIST doubles each */
     uint32_t nc, ccap;
