@@ -20,7 +20,7 @@
  * demill_drum_spectrum() reads the same 48 counters, the drum records no
  * impacts (format 1 has none: DEMILL_ERR_INVALID_VALUE), 500 more steps run
  * and leave every counter at least what it was (counters only count up),
- * and the world saves and reloads in today's format, 2. */
+ * and the world saves and reloads in today's format, 3. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -82,7 +82,7 @@ START_TEST(format_1_loads_with_its_spectrum)
     unsigned char *b = malloc(n);
     ck_assert_ptr_nonnull(b);
     DM_OK(w, demill_world_save_buffer(w, b, n, &n));
-    ck_assert_uint_eq(b[8] | b[9] << 8 | b[10] << 16 | (uint32_t)b[11] << 24, 2);
+    ck_assert_uint_eq(b[8] | b[9] << 8 | b[10] << 16 | (uint32_t)b[11] << 24, 3);
     demill_world *v;
     ck_assert_int_eq(demill_world_create(3, &v), DEMILL_OK);
     DM_OK(v, demill_world_load_buffer(v, b, n));

@@ -393,9 +393,9 @@ START_TEST(truncated_and_corrupt_checkpoints_are_refused)
                 "a corrupted byte");
     }
     memcpy(bad, good.b, good.n);
-    const uint32_t newer = 3;
+    const uint32_t newer = 4;
     memcpy(bad + 8, &newer, 4);
-    refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "format version 3", "a newer format");
+    refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "format version 4", "a newer format");
     memcpy(bad, good.b, good.n);
     memcpy(bad + good.n, "trailing", 8);
     refused(target, before, bad, good.n + 8, DEMILL_ERR_FORMAT, "trailing", "trailing bytes");
