@@ -278,12 +278,16 @@ DEMILL_API demill_status demill_drum_lifter_get(demill_world *world, demill_id d
 
 /** Fills the drum with particles of one material: sizes from a distribution
  *  (DEMILL_SIZES_*, with `params`), as many as the target (DEMILL_FILL_*,
- *  `value`) asks. Particles are placed on a jittered lattice of the largest
- *  diameter inside the drum, from the bottom up, clear of the walls and of
- *  every particle already there; the placement depends only on the
- *  arguments, the drum and the particles already present, so the same call
- *  gives the same charge. Call it once per material (balls, then ore), then
- *  let the charge settle (demill_world_settle()).
+ *  `value`) asks. It is demill_fill_region() (demill/insert.h) with the
+ *  region DEMILL_REGION_DRUM: particles are placed one at a time, in a
+ *  seeded random order of sizes, each at the lowest free place among random
+ *  candidates in a layer that rises from the bottom of the drum as it fills,
+ *  clear of the walls and of every particle already there, so that wide
+ *  size distributions (a 50/50 charge of 10 and 20 mm balls, the 285 balls
+ *  of Bond's test) fill as readily as one size. The placement depends only
+ *  on the arguments, the drum and the particles already present, so the
+ *  same call gives the same charge. Call it once per material (balls, then
+ *  ore), then let the charge settle (demill_world_settle()).
  *  @param world        the world.
  *  @param drum         the drum's id.
  *  @param material     the particles' material.
@@ -301,9 +305,8 @@ DEMILL_API demill_status demill_drum_lifter_get(demill_world *world, demill_id d
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_UNKNOWN_KEY, DEMILL_ERR_NOT_FINITE,
  *          DEMILL_ERR_INVALID_VALUE (bad distribution or target; a target
- *          of more particles than a world holds, about 1.07e9; particles so
- *          small against the drum that the placement lattice has more than
- *          2^30 sites; the charge does not fit: nothing is added),
+ *          of more particles than a world holds, about 1.07e9; the charge
+ *          does not fit: nothing is added),
  *          DEMILL_ERR_BUFFER_TOO_SMALL or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_drum_fill(demill_world *world, demill_id drum, demill_id material,
                                           int32_t distribution, const double *params,

@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "demill/insert.h"
 #include "world/world.h"
 
 /* ---- snapshots -------------------------------------------------------------- */
@@ -91,8 +92,8 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 #define CK_MAGIC "DEMILLCK"
 #define CK_FORMAT 3u          /* the format this library writes and the newest it reads;
                                  2 adds the impacts on an ore to the drum's spectrum,
-                                 3 a material per part of the drum and the walls'
-                                 meshes (section MESH) */
+                                 3 a material per part of the drum, the walls'
+                                 meshes (section MESH), the feeds and outlets (FLOW) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -382,6 +383,68 @@ static void transfer_drum(io *s, dm_drum *d, int dim)
     io_array(s, &sp->counts, counters, counters, sizeof *sp->counts);
 }
 
+/* A time that may be infinite (a feed's stop), but not NaN. */
+static void io_time(io *s, double *v)
+{
+    io_bytes(s, v, sizeof *v);
+    if (!s->status && isnan(*v))
+        io_fail(s, s->reading ? DEMILL_ERR_FORMAT : DEMILL_ERR_UNSTABLE,
+                "section %s: a time is NaN", s->section);
+}
+
+static void transfer_region(io *s, dm_region *r)
+{
+    io_int(s, &r->kind);
+    io_f64(s, r->p, 7);
+}
+
+/* The feeds and outlets (format 3). */
+static void transfer_flows(io *s, dm_flows *f)
+{
+    io_section(s, "FLOW");
+    io_count(s, &f->nfeeds, DM_MAX_FEEDS, "feeds");
+    io_count(s, &f->noutlets, DM_MAX_OUTLETS, "outlets");
+    io_u32(s, &f->live, 1);
+    io_f64(s, &f->energy, 1);
+    for (uint32_t k = 0; k < f->nfeeds && !s->status; k++) {
+        dm_feed *e = &f->feeds[k];
+        io_bool(s, &e->id.alive);
+        io_u16(s, &e->id.gen);
+        io_u32(s, &e->material, 1);
+        transfer_region(s, &e->region);
+        io_count(s, &e->sizes.n, DM_SIZE_CLASSES, "feed size classes");
+        io_f64(s, e->sizes.lo, DM_SIZE_CLASSES);
+        io_f64(s, e->sizes.hi, DM_SIZE_CLASSES);
+        io_f64(s, e->sizes.fraction, DM_SIZE_CLASSES);
+        io_f64(s, e->number, DM_SIZE_CLASSES);
+        io_f64(s, &e->rate, 1);
+        io_f64(s, e->vel, 3);
+        io_f64(s, &e->t_start, 1);
+        io_time(s, &e->t_stop);
+        for (int q = 0; q < 4; q++)
+            io_u64(s, &e->rng.s[q]);
+        io_f64(s, &e->next_d, 1);
+        io_f64(s, &e->mass, 1);
+        io_u64(s, &e->count);
+    }
+    for (uint32_t k = 0; k < f->noutlets && !s->status; k++) {
+        dm_outlet *o = &f->outlets[k];
+        io_bool(s, &o->id.alive);
+        io_u16(s, &o->id.gen);
+        transfer_region(s, &o->region);
+        io_count(s, &o->nedges, DM_OUTLET_CLASSES - 1, "outlet class edges");
+        io_f64(s, o->edges, DM_OUTLET_CLASSES - 1);
+        for (int q = 0; q < DM_OUTLET_CLASSES; q++)
+            io_u64(s, &o->count[q]);
+        io_f64(s, o->mass, DM_OUTLET_CLASSES);
+        double *const v[] = {&o->interval, &o->t_next, &o->interval_mass, &o->last_mass};
+        for (int q = 0; q < 4; q++)
+            io_f64(s, v[q], 1);
+        io_u64(s, &o->interval_count);
+        io_u64(s, &o->last_count);
+    }
+}
+
 /* A contact list: its kernel's history slots, and one more for the
  * collision spectrum while one is recorded (events); after the spectrum was
  * started or stopped the lists keep their old layout until they are rebuilt
@@ -569,10 +632,54 @@ static void transfer(io *s, demill_world *w)
             transfer_bucket(s, side ? &w->pw.b[k] : &w->pp.b[k], k, w->dim, w->events,
                             w->nlist_valid);
     transfer_meshes(s, w);
+    if (s->format >= 3)
+        transfer_flows(s, &w->flows);
     io_section(s, "END.");
 }
 
 /* ---- checking what was read ------------------------------------------------- */
+
+/* Feeds and outlets as their API makes them: a region the API would take,
+ * sizes, rates and classes in their bounds, the live count right. */
+static demill_status check_flows(demill_world *t)
+{
+    const dm_flows *f = &t->flows;
+    uint32_t live = 0;
+    for (uint32_t k = 0; k < f->nfeeds + f->noutlets; k++) {
+        const bool feed = k < f->nfeeds;
+        const dm_feed *e = feed ? &f->feeds[k] : NULL;
+        const dm_outlet *o = feed ? NULL : &f->outlets[k - f->nfeeds];
+        const dm_flow_slot id = feed ? e->id : o->id;
+        const dm_region *r = feed ? &e->region : &o->region;
+        dm_region parsed;
+        bool ok = id.alive || id.gen > 0;
+        live += id.alive;
+        if (id.alive) {
+            ok &= dm_region_parse(t, "checkpoint", r->kind, r->p,
+                                  r->kind == DEMILL_REGION_DRUM ? 0
+                                  : r->kind == DEMILL_REGION_CYLINDER ? 7 : 6,
+                                  feed, &parsed) == DEMILL_OK;
+            if (feed) {
+                ok &= e->material < t->nmat && e->sizes.n >= 1 && e->rate > 0.0 &&
+                      e->t_stop > e->t_start && e->next_d > 0.0 && e->mass >= 0.0;
+                for (uint32_t q = 0; q < e->sizes.n; q++)
+                    ok &= e->sizes.lo[q] > 0.0 && e->sizes.hi[q] >= e->sizes.lo[q] &&
+                          e->number[q] >= 0.0 && e->number[q] <= 1.0;
+            } else {
+                ok &= o->interval > 0.0;
+                for (uint32_t q = 0; q < o->nedges; q++)
+                    ok &= o->edges[q] > (q ? o->edges[q - 1] : 0.0);
+            }
+        }
+        if (!ok)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "%s %u is inconsistent", feed ? "feed" : "outlet",
+                           feed ? k : k - f->nfeeds);
+    }
+    if (live != f->live)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "%u feeds and outlets alive, %u counted", live,
+                       f->live);
+    return DEMILL_OK;
+}
 
 /* Checks a value against the bounds demill_*_set() would check; read-only
  * keys pass. */
@@ -883,7 +990,7 @@ static demill_status decode(demill_world *t, const uint8_t *b, size_t size)
         return dm_fail(t, s.status, "%s", s.why);
     demill_status st;
     if ((st = check_params(t)) || (st = check_particles(t)) || (st = check_walls(t)) ||
-        (st = check_drum(t)) || (st = check_contacts(t)))
+        (st = check_drum(t)) || (st = check_contacts(t)) || (st = check_flows(t)))
         return st == DEMILL_ERR_OUT_OF_MEMORY ? st : DEMILL_ERR_FORMAT;
     for (uint32_t i = 0; i < t->p.n; i++)
         t->mat_particles[t->p.mat[i]]++;
@@ -1039,7 +1146,7 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         return s;
     if (kind == DEMILL_KIND_PARTICLE)
         return demill_particles_read_ids(w, DEMILL_PARTICLE_ID, out, capacity, count);
-    if (kind != DEMILL_KIND_MATERIAL && kind != DEMILL_KIND_WALL && kind != DEMILL_KIND_DRUM)
+    if (kind < DEMILL_KIND_MATERIAL || kind > DEMILL_KIND_OUTLET)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_ids: %d is not a kind of object",
                        (int)kind);
     if (!out && !count)
@@ -1049,6 +1156,12 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         n = w->nmat;
     else if (kind == DEMILL_KIND_DRUM)
         n = w->drum.alive;
+    else if (kind == DEMILL_KIND_FEED)
+        for (uint32_t k = 0; k < w->flows.nfeeds; k++)
+            n += w->flows.feeds[k].id.alive;
+    else if (kind == DEMILL_KIND_OUTLET)
+        for (uint32_t k = 0; k < w->flows.noutlets; k++)
+            n += w->flows.outlets[k].id.alive;
     else
         for (uint32_t k = 0; k < w->nwalls; k++)
             n += w->walls[k].kind && !w->walls[k].drum_part;
@@ -1066,6 +1179,14 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         for (uint32_t k = 0, q = 0; k < w->nwalls; k++)
             if (w->walls[k].kind && !w->walls[k].drum_part)
                 out[q++] = dm_wall_id(w, k);
+    } else if (kind == DEMILL_KIND_FEED) {
+        for (uint32_t k = 0, q = 0; k < w->flows.nfeeds; k++)
+            if (w->flows.feeds[k].id.alive)
+                out[q++] = dm_feed_id(w, k);
+    } else if (kind == DEMILL_KIND_OUTLET) {
+        for (uint32_t k = 0, q = 0; k < w->flows.noutlets; k++)
+            if (w->flows.outlets[k].id.alive)
+                out[q++] = dm_outlet_id(w, k);
     } else if (n) { /* the drum */
         out[0] = dm_drum_id(w);
     }

@@ -13,7 +13,7 @@ __all__ = ["VERSION_MAJOR", "VERSION_MINOR", "VERSION_PATCH", "VERSION_NUMBER",
            "VERSION_STRING", "ID_NONE", "Status", "Kind", "Integrator", "WorldKey",
            "MaterialKey", "Normal", "Damping", "Tangential", "Rolling", "PairKey",
            "ParticleField", "IdField", "AddFlag", "WallField", "ContactField", "Energy",
-           "DrumKey", "DrumPart", "LifterField", "Sizes", "Fill", "Spectrum"]
+           "DrumKey", "DrumPart", "LifterField", "Sizes", "Fill", "Region", "Spectrum"]
 
 VERSION_MAJOR = 0
 VERSION_MINOR = 1
@@ -59,6 +59,8 @@ class Kind(IntEnum):
     PARTICLE = 2
     WALL = 3
     DRUM = 4
+    FEED = 5
+    OUTLET = 6
 
 
 class Integrator(IntEnum):
@@ -225,6 +227,7 @@ class Energy(IntEnum):
     DISSIPATED_ROLLING = 10
     DISSIPATED = 11
     TOTAL = 12
+    FLOW = 13
 
 
 class DrumKey(IntEnum):
@@ -302,6 +305,16 @@ class Fill(IntEnum):
     FRACTION = 3
 
 
+class Region(IntEnum):
+    """Kinds of region of ``World.fill_region``, feeds and outlets
+    (``DEMILL_REGION_*``)."""
+
+    BOX = 1
+    CYLINDER = 2
+    HALF_SPACE = 3
+    DRUM = 4
+
+
 class Spectrum(IntEnum):
     """Kinds of wall in the collision spectrum (``DEMILL_SPECTRUM_*``)."""
 
@@ -332,6 +345,7 @@ C_PREFIXES = {
     LifterField: "DEMILL_LIFTER_",
     Sizes: "DEMILL_SIZES_",
     Fill: "DEMILL_FILL_",
+    Region: "DEMILL_REGION_",
     Spectrum: "DEMILL_SPECTRUM_",
 }
 

@@ -12,7 +12,8 @@ from ._core import (Closable, Keyed, Param, VectorParam, as_id, check, configure
 from ._lib import ProgressFn, WorldP, lib
 from .constants import Energy, Integrator, Kind, Status, WorldKey
 from .drum import Drum
-from .errors import WorldClosed
+from .errors import BufferTooSmall, WorldClosed
+from .flows import Feed, Outlet
 from .objects import Contacts, Material, Pair, Particle, Particles, Wall, count
 from .state import Snapshot, VtkSeries
 
@@ -280,6 +281,60 @@ class World(Closable, Keyed):
         self._call("demill_drum_create", as_id(material),
                    ctypes.byref(out))
         return configure(Drum(self, out.value), params)
+
+    def fill_region(self, region, region_params, material, distribution, params, target, value,
+                    seed=1):
+        """Fills a region (:class:`~demill.Region` and its numbers) with
+        particles of one material, as :meth:`Drum.fill` fills the drum, and
+        returns their ids (uint64 array)."""
+        r = doubles(region_params).reshape(-1)
+        p = doubles(params).reshape(-1)
+        args = (int(region), ptr(r), r.size, as_id(material), int(distribution), ptr(p), p.size,
+                int(target), float(value), count(seed, "seed"))
+        need = ctypes.c_size_t()
+        probe = np.empty(1, dtype=np.uint64)
+        try:  # capacity 0 asks for the number of particles, adding none
+            self._call("demill_fill_region", *args, ptr(probe), 0, ctypes.byref(need))
+        except BufferTooSmall:
+            pass
+        ids = np.empty(need.value, dtype=np.uint64)
+        added = ctypes.c_size_t()
+        self._call("demill_fill_region", *args, ptr(ids), ids.size, ctypes.byref(added))
+        return ids[:added.value]
+
+    def add_feed(self, region, region_params, material, distribution, params, mass_rate,
+                 velocity=(0, 0, 0), start=0.0, stop=float("inf"), seed=1):
+        """A :class:`Feed` inserting particles of ``material`` into a region
+        at ``mass_rate`` kg/s from ``start`` to ``stop`` s."""
+        r = doubles(region_params).reshape(-1)
+        p = doubles(params).reshape(-1)
+        out = ctypes.c_uint64()
+        self._call("demill_feed_create", int(region), ptr(r), r.size, as_id(material),
+                   int(distribution), ptr(p), p.size, float(mass_rate),
+                   ptr(vector(velocity, "velocity")), float(start), float(stop),
+                   count(seed, "seed"), ctypes.byref(out))
+        return Feed(self, out.value)
+
+    def add_outlet(self, region, region_params, edges=(), interval=1.0):
+        """An :class:`Outlet` removing the particles whose centre enters a
+        region, counted in size classes of diameter below each of ``edges``
+        (m) and above the last, with rates over ``interval`` s."""
+        r = doubles(region_params).reshape(-1)
+        e = doubles(edges).reshape(-1)
+        out = ctypes.c_uint64()
+        self._call("demill_outlet_create", int(region), ptr(r), r.size, e.size,
+                   ptr(e) if e.size else None, float(interval), ctypes.byref(out))
+        return Outlet(self, out.value)
+
+    @property
+    def feeds(self):
+        """Every feed, as a list of :class:`Feed`."""
+        return [Feed(self, i) for i in self.ids(Kind.FEED)]
+
+    @property
+    def outlets(self):
+        """Every outlet, as a list of :class:`Outlet`."""
+        return [Outlet(self, i) for i in self.ids(Kind.OUTLET)]
 
     def ids(self, kind):
         """The ids of every live object of a :class:`~demill.Kind`."""

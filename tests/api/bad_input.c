@@ -1716,7 +1716,7 @@ static void bad_reads(scene *sc)
         ctx(sc, "world_energy term %d into NULL", (int)t);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_world_energy(w, t, NULL), "NULL");
     }
-    static const int32_t unknown_e[] = {0, 13, 100, -1};
+    static const int32_t unknown_e[] = {0, 14, 100, -1};
     for (size_t k = 0; k < sizeof unknown_e / sizeof unknown_e[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown_e[k]);

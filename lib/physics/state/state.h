@@ -11,6 +11,7 @@
 #include <math.h>
 
 #include "base/handles.h"
+#include "base/random.h"
 
 #define DM_MAX_MATERIALS 256
 
@@ -348,6 +349,70 @@ typedef struct dm_progress {
     uint64_t every;         /* steps between reports */
 } dm_progress;
 
+/* ---- regions, feeds and outlets (the world layer's: world/region.c, world/flows.c) ---- */
+#define DM_SIZE_CLASSES 32   /* size classes of a distribution, at most */
+#define DM_MAX_FEEDS 16
+#define DM_MAX_OUTLETS 16
+#define DM_OUTLET_CLASSES 32 /* size classes an outlet counts, at most */
+
+/* A region of space (DEMILL_REGION_*) and its parameters as the API gave them. */
+typedef struct dm_region {
+    int kind;
+    double p[7];
+} dm_region;
+
+/* A size distribution as classes: diameters in [lo, hi] (log-uniform within
+ * a class; lo = hi for a discrete size) and mass fractions summing to 1. */
+typedef struct dm_sizes {
+    uint32_t n;
+    double lo[DM_SIZE_CLASSES], hi[DM_SIZE_CLASSES], fraction[DM_SIZE_CLASSES];
+} dm_sizes;
+
+/* The slot of a feed or an outlet: alive, and the generation of its id
+ * (DM_GEN_LAST: retired). */
+typedef struct dm_flow_slot {
+    bool alive;
+    uint16_t gen;
+} dm_flow_slot;
+
+/* A feed: particles of one material inserted into a region at a mass rate. */
+typedef struct dm_feed {
+    dm_flow_slot id;
+    uint32_t material;
+    dm_region region;
+    dm_sizes sizes;
+    double number[DM_SIZE_CLASSES]; /* cumulative number fractions of the classes */
+    double rate, vel[3], t_start, t_stop;
+    dm_rng rng;             /* sizes and positions */
+    double next_d;          /* diameter of the next particle to insert */
+    double mass;            /* inserted so far, kg */
+    uint64_t count;
+} dm_feed;
+
+/* An outlet: particles whose centre is in its region are removed at the end
+ * of a step and counted per size class. */
+typedef struct dm_outlet {
+    dm_flow_slot id;
+    dm_region region;
+    uint32_t nedges;        /* classes: nedges + 1 */
+    double edges[DM_OUTLET_CLASSES - 1];
+    uint64_t count[DM_OUTLET_CLASSES];
+    double mass[DM_OUTLET_CLASSES];
+    double interval;        /* of the rate, s */
+    double t_next;          /* the end of the current interval */
+    double interval_mass, last_mass; /* removed in the current and the last interval */
+    uint64_t interval_count, last_count;
+} dm_outlet;
+
+typedef struct dm_flows {
+    uint32_t nfeeds, noutlets; /* slots in use or retired: the ids' indices */
+    uint32_t live;             /* feeds and outlets alive */
+    dm_feed feeds[DM_MAX_FEEDS];
+    dm_outlet outlets[DM_MAX_OUTLETS];
+    double energy;          /* kinetic and potential energy brought in by feeds less
+                               what outlets took out, J */
+} dm_flows;
+
 /* ---- the world ------------------------------------------------------------- */
 struct demill_world {
     dm_base base;           /* first: the base layer's part (lib/base/base.h) */
@@ -408,6 +473,8 @@ struct demill_world {
 
     dm_tally tally;
     bool events;            /* contacts keep their dissipated energy (spectrum) */
+
+    dm_flows flows;         /* feeds and outlets */
 };
 
 /* |g| */
