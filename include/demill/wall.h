@@ -72,6 +72,46 @@ DEMILL_API demill_status demill_wall_add_mesh(demill_world *world, demill_id mat
                                               size_t n_triangles, const uint32_t *triangles,
                                               demill_id *out);
 
+/** Adds a triangle-mesh wall (demill_wall_add_mesh()) from the bytes of an
+ *  STL file, ASCII or binary (binary when the size is 84 + 50 n bytes).
+ *  Each point x of the file is placed at A (scale x) + t, with `transform`
+ *  = {A row by row, t} (12 doubles; NULL for none), so a CAD file in
+ *  millimetres takes scale 0.001. Points exactly equal after that are one
+ *  vertex, so the triangles of a closed or smooth surface share their edges.
+ *  The facets' normals in the file are not used: a mesh is touched from
+ *  both sides. docs/geometry.md lists what is read and each error.
+ *  @param world     the world (3D).
+ *  @param material  the wall's material.
+ *  @param bytes     the file's bytes.
+ *  @param size      their number.
+ *  @param scale     the scale factor, finite and > 0.
+ *  @param transform the affine placement after scaling, or NULL.
+ *  @param[out] out  receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_DIMENSION (a 2D world), DEMILL_ERR_FORMAT (not a usable
+ *          STL file: empty, foreign, truncated, malformed, a coordinate not
+ *          finite, a triangle of zero area, no triangle; the message names
+ *          the triangle and its line or byte), DEMILL_ERR_INVALID_VALUE (a
+ *          scale or transform that is not finite, or a singular transform)
+ *          or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_wall_add_stl(demill_world *world, demill_id material,
+                                             const void *bytes, size_t size, double scale,
+                                             const double transform[12], demill_id *out);
+
+/** Adds a triangle-mesh wall from an STL file (demill_wall_add_stl() on the
+ *  file's bytes; messages start with the path).
+ *  @param world     the world (3D).
+ *  @param material  the wall's material.
+ *  @param path      the file.
+ *  @param scale     the scale factor, finite and > 0.
+ *  @param transform the affine placement after scaling, or NULL.
+ *  @param[out] out  receives the wall's id.
+ *  @return the codes of demill_wall_add_stl(), and DEMILL_ERR_IO when the
+ *          file cannot be read. */
+DEMILL_API demill_status demill_wall_load_stl(demill_world *world, demill_id material,
+                                              const char *path, double scale,
+                                              const double transform[12], demill_id *out);
+
 /** Adds a polyline wall (2D worlds): the segments between consecutive
  *  points, and from the last back to the first if `closed`. Like a mesh in
  *  3D (demill_wall_add_mesh()), it is a thin wall touched from both sides,

@@ -1099,38 +1099,11 @@ DEMILL_API demill_status demill_world_load(demill_world *w, const char *path)
         return s;
     if (!path)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_load: path is NULL");
-    errno = 0;
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return dm_fail(w, DEMILL_ERR_IO, "world_load: %s: %s", path,
-                       errno ? strerror(errno) : "cannot open");
-    uint8_t *b = NULL;
-    size_t n = 0, cap = 0;
-    bool ok = true;
-    for (;;) {
-        if (n == cap) {
-            cap = dm_grown_capacity(cap, cap + 65536);
-            uint8_t *nb = realloc(b, cap);
-            if (!nb) {
-                free(b);
-                fclose(f);
-                return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "world_load: %s: out of memory", path);
-            }
-            b = nb;
-        }
-        const size_t got = fread(b + n, 1, cap - n, f);
-        n += got;
-        if (got == 0) {
-            ok = !ferror(f);
-            break;
-        }
-    }
-    const int e = errno;
-    fclose(f);
-    if (!ok)
-        s = dm_fail(w, DEMILL_ERR_IO, "world_load: %s: %s", path, e ? strerror(e) : "read failed");
-    else
-        s = load(w, b, n, path);
+    uint8_t *b;
+    size_t n;
+    if ((s = dm_read_file(w, "world_load", path, &b, &n)))
+        return s;
+    s = load(w, b, n, path);
     free(b);
     return s;
 }

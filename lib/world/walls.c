@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "physics/io/io.h"
 #include "world/world.h"
 
 static demill_status check_vec3(demill_world *w, const double *v, const char *what, int flat)
@@ -134,6 +135,63 @@ DEMILL_API demill_status demill_wall_add_mesh(demill_world *w, demill_id materia
                        n_triangles, n_vertices, UINT32_MAX / 3, UINT32_MAX);
     return add_mesh(w, mat, 3, n_vertices, vertices, n_triangles, triangles, "wall_add_mesh",
                     "triangle", out);
+}
+
+/* An STL file's bytes as a mesh wall; `name` (the path, or "STL bytes")
+ * starts the messages of a bad file. */
+static demill_status add_stl(demill_world *w, demill_id material, const char *fn,
+                             const char *name, const void *bytes, size_t size, double scale,
+                             const double *xf, demill_id *out)
+{
+    dm_stl_mesh m;
+    char err[256];
+    demill_status s = dm_stl_parse(bytes, size, scale, xf, &m, err, sizeof err);
+    if (s)
+        return dm_fail(w, s, "%s: %s: %s", fn, name, err);
+    s = demill_wall_add_mesh(w, material, m.nv, m.v, m.nt, m.tri, out);
+    dm_stl_free(&m);
+    return s;
+}
+
+/* The checks every STL call makes before reading a byte. */
+static demill_status stl_checks(demill_world *w, demill_id material, const char *fn,
+                                const void *input, const char *what, demill_id *out)
+{
+    uint32_t mat;
+    demill_status s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mat);
+    if (s)
+        return s;
+    if (!input || !out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "%s: %s is NULL", fn, !input ? what : "out");
+    if (w->dim != 3)
+        return dm_fail(w, DEMILL_ERR_DIMENSION, "%s: a triangle mesh needs a 3D world", fn);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_wall_add_stl(demill_world *w, demill_id material,
+                                             const void *bytes, size_t size, double scale,
+                                             const double transform[12], demill_id *out)
+{
+    demill_status s = stl_checks(w, material, "wall_add_stl", bytes, "bytes", out);
+    return s ? s
+             : add_stl(w, material, "wall_add_stl", "STL bytes", bytes, size, scale, transform,
+                       out);
+}
+
+DEMILL_API demill_status demill_wall_load_stl(demill_world *w, demill_id material,
+                                              const char *path, double scale,
+                                              const double transform[12], demill_id *out)
+{
+    demill_status s = stl_checks(w, material, "wall_load_stl", path, "path", out);
+    if (s)
+        return s;
+    uint8_t *b;
+    size_t n;
+    if ((s = dm_read_file(w, "wall_load_stl", path, &b, &n)))
+        return s;
+    s = add_stl(w, material, "wall_load_stl", path, b, n, scale, transform, out);
+    free(b);
+    return s;
 }
 
 DEMILL_API demill_status demill_wall_add_polyline(demill_world *w, demill_id material,

@@ -123,6 +123,11 @@ demill_status dm_progress_steps(demill_world *w, uint64_t steps);
 demill_status dm_watched_steps(demill_world *w, uint64_t steps);
 /* DEMILL_ERR_UNSTABLE unless every position, velocity and spin is finite. */
 demill_status dm_check_finite(demill_world *w);
+/* Reads the whole file at path into *bytes (malloc'd, *size bytes; the
+ * caller frees it). Fails with DEMILL_ERR_IO or DEMILL_ERR_OUT_OF_MEMORY,
+ * the message starting with fn and path. */
+demill_status dm_read_file(demill_world *w, const char *fn, const char *path, uint8_t **bytes,
+                           size_t *size);
 void dm_watch_free(demill_world *w);
 /* DEMILL_ERR_UNSTABLE, naming the pair, unless the time step is within the
  * stability limit of every pair of materials that can meet. */

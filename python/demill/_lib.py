@@ -140,6 +140,8 @@ OPTIONAL_PROTOTYPES = {
     "demill_world_ids": (status, (WorldP, c_int32, idptr, c_size_t, sizeptr)),
     "demill_wall_add_mesh": (status, (WorldP, id_t, c_size_t, dptr, c_size_t, POINTER(c_uint32),
                                       idptr)),
+    "demill_wall_add_stl": (status, (WorldP, id_t, c_void_p, c_size_t, c_double, dptr, idptr)),
+    "demill_wall_load_stl": (status, (WorldP, id_t, c_char_p, c_double, dptr, idptr)),
     "demill_wall_add_polyline": (status, (WorldP, id_t, c_size_t, dptr, c_int32, idptr)),
     "demill_wall_mesh_info": (status, (WorldP, id_t, sizeptr, sizeptr)),
     # insert.h

@@ -261,6 +261,28 @@ class World(Closable, Keyed):
                    t.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32)), ctypes.byref(out))
         return Wall(self, out.value)
 
+    def add_stl(self, material, source, scale=1.0, transform=None):
+        """Adds a triangle-mesh wall (3D) from an STL file, ASCII or binary:
+        ``source`` is its path (``str`` or ``os.PathLike``) or its bytes.
+        Each point x becomes A (scale x) + t with ``transform`` = (A, t), A
+        3 x 3 and t of 3 (None: none); ``scale=0.001`` for a file in mm. A
+        :class:`Wall`."""
+        xf = None
+        if transform is not None:
+            a, t = transform
+            xf = doubles(np.concatenate([np.ravel(doubles(a, (3, 3), "transform A")),
+                                         doubles(t, (3,), "transform t")]), (12,), "transform")
+        out = ctypes.c_uint64()
+        xp = ptr(xf) if xf is not None else None
+        if isinstance(source, (bytes, bytearray, memoryview)):
+            data = bytes(source)
+            self._call("demill_wall_add_stl", as_id(material), data, len(data), float(scale),
+                       xp, ctypes.byref(out))
+        else:
+            self._call("demill_wall_load_stl", as_id(material), os.fsencode(source),
+                       float(scale), xp, ctypes.byref(out))
+        return Wall(self, out.value)
+
     def add_polyline(self, material, points, closed=False):
         """Adds a polyline wall (2D): the segments between consecutive
         ``points`` (n x 2, or n x 3 with z = 0, m), and back to the first if

@@ -3,6 +3,8 @@ binary collisions of known restitution, Hooke's law in a contact, the
 energy account, masses and exact wall motion."""
 
 import math
+import os
+import tempfile
 import unittest
 
 import numpy as np
@@ -224,6 +226,31 @@ class MeshWalls(unittest.TestCase):
         verts = [(-1, 0, -1), (1, 0, -1), (1, 0, 1), (-1, 0, 1)]
         tris = [(0, 1, 2), (0, 2, 3)]
         self.settle_on(3, lambda w, m: w.add_mesh(m, verts, tris))
+
+    def test_stl_floor_carries_the_weight(self):
+        """The same square as an ASCII STL file in mm (scale 0.001), from
+        its path and from its bytes, shifted by the transform's t."""
+        text = "solid floor\n"
+        for tri in ((0, 1, 2), (0, 2, 3)):
+            corners = [(-1000, -500, -1000), (1000, -500, -1000), (1000, -500, 1000),
+                       (-1000, -500, 1000)]
+            text += " facet normal 0 1 0\n  outer loop\n"
+            text += "".join("   vertex %g %g %g\n" % corners[k] for k in tri)
+            text += "  endloop\n endfacet\n"
+        text += "endsolid floor\n"
+        shift = (np.eye(3), (0, 0.5, 0))
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "floor.stl")
+            with open(path, "w") as f:
+                f.write(text)
+            self.settle_on(3, lambda w, m: w.add_stl(m, path, 0.001, shift))
+            with demill.World(3) as w:
+                with self.assertRaisesRegex(demill.FileError, "nothing.stl"):
+                    w.add_stl(w.material(), os.path.join(tmp, "nothing.stl"))
+        self.settle_on(3, lambda w, m: w.add_stl(m, text.encode(), 0.001, shift))
+        with demill.World(3) as w:
+            with self.assertRaisesRegex(demill.FormatError, "line 3"):
+                w.add_stl(w.material(), text.replace("outer", "inner").encode())
 
     def test_polyline_floor_carries_the_weight(self):
         pts = [(-1, 0), (0, 0), (1, 0)]

@@ -13,8 +13,17 @@
  * the winding must be reversed so the volume stays positive. Welding must
  * join exactly equal points only. Every bad input must give its error
  * naming the triangle or line, with nothing left in the mesh.
- * Internal test: it links the static library and calls the reader. */
+ * Internal test: it links the static library and calls the reader.
+ *
+ * Through the API, demill_wall_add_stl() and demill_wall_load_stl() make a
+ * mesh wall of the cube scaled to 0.1 m: 8 vertices and 12 triangles, and a
+ * ball of radius 0.01 m pressed by 1e-4 m onto its floor (y = 0) from
+ * inside, away from edges, feels k δ = 1e5 × 1e-4 = 10 N along +y, as on a
+ * plane; a bad file is refused with its path and triangle named, and the
+ * world keeps its walls. */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, fdopen */
 #include <ctype.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -451,6 +460,78 @@ START_TEST(test_bad_placement)
 }
 END_TEST
 
+/* The number of walls of w. */
+static size_t wall_count(demill_world *w)
+{
+    size_t n = 0;
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_WALL, NULL, 0, &n));
+    return n;
+}
+
+START_TEST(test_wall_from_stl)
+{
+    demill_id mat, wall, again;
+    demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_NONE, &mat);
+    DM_OK(w, demill_pair_set(w, mat, mat, DEMILL_PAIR_NORMAL_STIFFNESS, 1e5));
+    size_t n, nv, nt;
+    uint8_t *bin = dm_test_stl_binary("cube", dm_test_cube, 12, NULL, &n);
+    DM_OK(w, demill_wall_add_stl(w, mat, bin, n, 0.1, NULL, &wall));
+    DM_OK(w, demill_wall_mesh_info(w, wall, &nv, &nt));
+    ck_assert_uint_eq(nv, 8);
+    ck_assert_uint_eq(nt, 12);
+    const double x[3] = {0.05, 0.01 - 1e-4, 0.05}, r = 0.01;
+    DM_OK(w, demill_particles_add(w, mat, 1, x, &r, NULL, 0, NULL));
+    DM_OK(w, demill_world_step(w, 0));
+    double f[3];
+    DM_OK(w, demill_wall_get(w, wall, DEMILL_WALL_FORCE, f));
+    ck_assert_msg(fabs(f[0]) < 1e-12 && fabs(f[1] + 10.0) < 1e-9 && fabs(f[2]) < 1e-12,
+                  "force on the floor (%g, %g, %g), expected (0, -10, 0)", f[0], f[1], f[2]);
+
+    char path[] = "/tmp/demill-stl-XXXXXX";
+    const int fd = mkstemp(path);
+    ck_assert_int_ge(fd, 0);
+    FILE *file = fdopen(fd, "wb");
+    size_t na;
+    uint8_t *ascii = dm_test_stl_ascii("cube", dm_test_cube, 12, NULL, &na);
+    ck_assert_uint_eq(fwrite(ascii, 1, na, file), na);
+    fclose(file);
+    const double shift[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1.0, 0, 0};
+    DM_OK(w, demill_wall_load_stl(w, mat, path, 0.1, shift, &again));
+    DM_OK(w, demill_wall_mesh_info(w, again, &nv, &nt));
+    ck_assert_uint_eq(nv + nt, 20);
+    ck_assert_uint_eq(wall_count(w), 2);
+
+    /* refused, the world keeping its two walls */
+    bin[84 + 50 * 3 + 12] = 0xff; /* triangle 4's first x: a NaN */
+    bin[84 + 50 * 3 + 15] = 0x7f;
+    bin[84 + 50 * 3 + 14] = 0xff;
+    ck_assert_int_eq(demill_wall_add_stl(w, mat, bin, n, 0.1, NULL, &again), DEMILL_ERR_FORMAT);
+    ck_assert_ptr_nonnull(strstr(demill_world_last_error(w), "triangle 4"));
+    ascii[0] = 'X';
+    file = fopen(path, "wb");
+    ck_assert_uint_eq(fwrite(ascii, 1, na, file), na);
+    fclose(file);
+    ck_assert_int_eq(demill_wall_load_stl(w, mat, path, 0.1, NULL, &again), DEMILL_ERR_FORMAT);
+    ck_assert_ptr_nonnull(strstr(demill_world_last_error(w), path));
+    remove(path);
+    ck_assert_int_eq(demill_wall_load_stl(w, mat, path, 0.1, NULL, &again), DEMILL_ERR_IO);
+    ck_assert_ptr_nonnull(strstr(demill_world_last_error(w), path));
+    ck_assert_int_eq(demill_wall_add_stl(w, mat, ascii, na, -1.0, NULL, &again),
+                     DEMILL_ERR_INVALID_VALUE);
+    ck_assert_int_eq(demill_wall_load_stl(w, mat, NULL, 0.1, NULL, &again),
+                     DEMILL_ERR_NULL_POINTER);
+    ck_assert_uint_eq(wall_count(w), 2);
+    demill_world_destroy(w);
+
+    demill_world *flat = dm_test_world(2, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_NONE, &mat);
+    ck_assert_int_eq(demill_wall_add_stl(flat, mat, bin, n, 0.1, NULL, &again),
+                     DEMILL_ERR_DIMENSION);
+    demill_world_destroy(flat);
+    free(bin);
+    free(ascii);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("stl");
@@ -467,6 +548,7 @@ int main(void)
     tcase_add_test(tc, test_not_stl);
     tcase_add_test(tc, test_zero_area);
     tcase_add_test(tc, test_bad_placement);
+    tcase_add_test(tc, test_wall_from_stl);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }
