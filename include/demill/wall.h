@@ -106,8 +106,10 @@ DEMILL_API demill_status demill_wall_add_stl(demill_world *world, demill_id mate
  *  @param scale     the scale factor, finite and > 0.
  *  @param transform the affine placement after scaling, or NULL.
  *  @param[out] out  receives the wall's id.
- *  @return the codes of demill_wall_add_stl(), and DEMILL_ERR_IO when the
- *          file cannot be read. */
+ *  @return DEMILL_OK, DEMILL_ERR_IO (the file cannot be read), or an error
+ *          of demill_wall_add_stl(): DEMILL_ERR_INVALID_HANDLE,
+ *          DEMILL_ERR_NULL_POINTER, DEMILL_ERR_DIMENSION, DEMILL_ERR_FORMAT,
+ *          DEMILL_ERR_INVALID_VALUE or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_wall_load_stl(demill_world *world, demill_id material,
                                               const char *path, double scale,
                                               const double transform[12], demill_id *out);
