@@ -145,7 +145,9 @@ enum {
     DEMILL_KIND_MATERIAL = 1, /**< a material (demill_material_create()) */
     DEMILL_KIND_PARTICLE = 2, /**< a particle (demill_particles_add()) */
     DEMILL_KIND_WALL = 3,     /**< a wall (demill_wall_add_plane()) */
-    DEMILL_KIND_DRUM = 4      /**< a drum (demill_drum_create()) */
+    DEMILL_KIND_DRUM = 4,     /**< a drum (demill_drum_create()) */
+    DEMILL_KIND_FEED = 5,     /**< a feed (demill_feed_create()) */
+    DEMILL_KIND_OUTLET = 6    /**< an outlet (demill_outlet_create()) */
 };
 
 /** The kind of object an id names, without checking that the object still

@@ -81,10 +81,16 @@ enum {
     DEMILL_ENERGY_DISSIPATED_FRICTION = 9,   /**< by sliding friction (slip at the Coulomb cap) */
     DEMILL_ENERGY_DISSIPATED_ROLLING = 10,   /**< by rolling resistance */
     DEMILL_ENERGY_DISSIPATED = 11,           /**< sum of terms 7 to 10 */
-    /** Balance: kinetic + potential + elastic + dissipated - wall work. It
-     *  stays constant up to integration error between changes made through
-     *  the API (adding, removing or writing particles). */
-    DEMILL_ENERGY_TOTAL = 12
+    /** Balance: kinetic + potential + elastic + dissipated - wall work -
+     *  DEMILL_ENERGY_FLOW. It stays constant up to integration error
+     *  between changes made through the API (adding, removing or writing
+     *  particles); an outlet also takes out the elastic energy of the
+     *  contacts of the particles it removes, which it does not count. */
+    DEMILL_ENERGY_TOTAL = 12,
+    /** Brought in by feeds less taken out by outlets: the kinetic and
+     *  potential energy of the particles they inserted and removed, at the
+     *  moment they did (demill/insert.h). */
+    DEMILL_ENERGY_FLOW = 13
 };
 
 /** Reads one energy term of the world. The terms that include the energy

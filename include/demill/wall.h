@@ -3,7 +3,9 @@
  *
  * A wall is not moved by the particles. Contact with a wall uses the contact
  * model of the pair (particle material, wall material) with R* = R and m* = m
- * of the particle. The drum of a mill joins these walls in a later version.
+ * of the particle. Walls are planes, triangle meshes (3D) and polylines (2D),
+ * and in 3D the finite walls; the drum of a mill (demill/drum.h) has walls
+ * of its own.
  *
  * A plane is the boundary of a half-space. The finite walls (cylinders,
  * cones, discs and annuli, rectangles; 3D worlds only) are thin surfaces
@@ -28,8 +30,8 @@ extern "C" {
  *  normal its unit normal or axis; a capped wall's force and torque include
  *  its caps'. */
 enum {
-    DEMILL_WALL_POINT = 1,            /**< a point on the plane, m (moves with the wall) */
-    DEMILL_WALL_NORMAL = 2,           /**< unit normal, pointing to the side the particles are on */
+    DEMILL_WALL_POINT = 1,            /**< a point on the plane, m (moves with the wall); of a mesh or polyline, where the origin of its coordinates is now */
+    DEMILL_WALL_NORMAL = 2,           /**< unit normal, pointing to the side the particles are on; zero for a mesh or polyline */
     DEMILL_WALL_CENTRE = 3,           /**< centre of rotation, m (moves with the wall's velocity) */
     DEMILL_WALL_VELOCITY = 4,         /**< velocity of the centre, m/s */
     DEMILL_WALL_ANGULAR_VELOCITY = 5, /**< angular velocity about the centre, rad/s */
@@ -169,6 +171,107 @@ DEMILL_API demill_status demill_wall_add_rectangle(demill_world *world, demill_i
                                                    const double direction[3],
                                                    double half_width, double half_height,
                                                    demill_id *out);
+
+/** Adds a triangle-mesh wall (3D worlds): a thin surface made of the given
+ *  triangles, which particles touch from **both** sides (a chute, a hopper,
+ *  a box of triangles: the winding of the triangles does not matter). The
+ *  mesh is one rigid wall of one material. A sphere touching a flat or
+ *  smooth region of the mesh feels one force, as on the true surface: one
+ *  contact per local minimum of its distance to the mesh, found at a face,
+ *  an edge or a vertex (docs/geometry.md); its contact history follows it
+ *  from triangle to triangle. Triangles may be of any size, and edges may be
+ *  shared by more than two triangles.
+ *  The wall is at rest until demill_wall_set_motion() is called; its centre
+ *  of rotation is the origin of the vertices' coordinates.
+ *  @param world       the world.
+ *  @param material    the wall's material.
+ *  @param n_vertices  number of vertices.
+ *  @param vertices    3 doubles (x, y, z) per vertex, m.
+ *  @param n_triangles number of triangles, at least 1.
+ *  @param triangles   3 vertex indices (from 0) per triangle.
+ *  @param[out] out    receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_DIMENSION (a 2D world), DEMILL_ERR_NOT_FINITE (a
+ *          vertex, named), DEMILL_ERR_INVALID_VALUE (no triangle, an index
+ *          out of range or a triangle of zero area, named) or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_wall_add_mesh(demill_world *world, demill_id material,
+                                              size_t n_vertices, const double *vertices,
+                                              size_t n_triangles, const uint32_t *triangles,
+                                              demill_id *out);
+
+/** Adds a triangle-mesh wall (demill_wall_add_mesh()) from the bytes of an
+ *  STL file, ASCII or binary (binary when the size is 84 + 50 n bytes).
+ *  Each point x of the file is placed at A (scale x) + t, with `transform`
+ *  = {A row by row, t} (12 doubles; NULL for none), so a CAD file in
+ *  millimetres takes scale 0.001. Points exactly equal after that are one
+ *  vertex, so the triangles of a closed or smooth surface share their edges.
+ *  The facets' normals in the file are not used: a mesh is touched from
+ *  both sides. docs/geometry.md lists what is read and each error.
+ *  @param world     the world (3D).
+ *  @param material  the wall's material.
+ *  @param bytes     the file's bytes.
+ *  @param size      their number.
+ *  @param scale     the scale factor, finite and > 0.
+ *  @param transform the affine placement after scaling, or NULL.
+ *  @param[out] out  receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_DIMENSION (a 2D world), DEMILL_ERR_FORMAT (not a usable
+ *          STL file: empty, foreign, truncated, malformed, a coordinate not
+ *          finite, a triangle of zero area, no triangle; the message names
+ *          the triangle and its line or byte), DEMILL_ERR_INVALID_VALUE (a
+ *          scale or transform that is not finite, or a singular transform)
+ *          or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_wall_add_stl(demill_world *world, demill_id material,
+                                             const void *bytes, size_t size, double scale,
+                                             const double transform[12], demill_id *out);
+
+/** Adds a triangle-mesh wall from an STL file (demill_wall_add_stl() on the
+ *  file's bytes; messages start with the path).
+ *  @param world     the world (3D).
+ *  @param material  the wall's material.
+ *  @param path      the file.
+ *  @param scale     the scale factor, finite and > 0.
+ *  @param transform the affine placement after scaling, or NULL.
+ *  @param[out] out  receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_IO (the file cannot be read), or an error
+ *          of demill_wall_add_stl(): DEMILL_ERR_INVALID_HANDLE,
+ *          DEMILL_ERR_NULL_POINTER, DEMILL_ERR_DIMENSION, DEMILL_ERR_FORMAT,
+ *          DEMILL_ERR_INVALID_VALUE or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_wall_load_stl(demill_world *world, demill_id material,
+                                              const char *path, double scale,
+                                              const double transform[12], demill_id *out);
+
+/** Adds a polyline wall (2D worlds): the segments between consecutive
+ *  points, and from the last back to the first if `closed`. Like a mesh in
+ *  3D (demill_wall_add_mesh()), it is a thin wall touched from both sides,
+ *  with one contact per local minimum of the distance.
+ *  The wall is at rest until demill_wall_set_motion() is called; its centre
+ *  of rotation is the origin.
+ *  @param world    the world.
+ *  @param material the wall's material.
+ *  @param n_points number of points: at least 2 (open) or 3 (closed).
+ *  @param points   3 doubles per point, m, z = 0.
+ *  @param closed   1: a closed loop; 0: an open line.
+ *  @param[out] out receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_DIMENSION (a 3D world, or a point with z != 0),
+ *          DEMILL_ERR_NOT_FINITE (a point, named), DEMILL_ERR_INVALID_VALUE
+ *          (too few points, closed not 0 or 1, a segment of zero length,
+ *          named) or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_wall_add_polyline(demill_world *world, demill_id material,
+                                                  size_t n_points, const double *points,
+                                                  int closed, demill_id *out);
+
+/** The size of a mesh or polyline wall.
+ *  @param world            the world.
+ *  @param wall             the wall's id.
+ *  @param[out] n_vertices  receives its number of vertices (points).
+ *  @param[out] n_elements  receives its number of triangles (segments).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER or
+ *          DEMILL_ERR_INVALID_VALUE (the wall is not a mesh or a polyline). */
+DEMILL_API demill_status demill_wall_mesh_info(const demill_world *world, demill_id wall,
+                                               size_t *n_vertices, size_t *n_elements);
 
 /** Removes a wall. Its id becomes invalid; contacts with it end.
  *  @param world the world.

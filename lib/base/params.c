@@ -104,6 +104,9 @@ static const param_info params[] = {
     {DEMILL_DRUM_ENERGY_DISSIPATED, "drum.energy_dissipated", "J", 0, 1e300, 0, READ_ONLY},
     {DEMILL_DRUM_DISSIPATION_MEAN, "drum.dissipation_mean", "W", -1e300, 1e300, 0, READ_ONLY},
     {DEMILL_DRUM_LIFTER_COUNT, "drum.lifter_count", "1", 0, 64, 0, WHOLE | READ_ONLY},
+    {DEMILL_DRUM_FORCE_X, "drum.force_x", "N", -1e300, 1e300, 0, READ_ONLY},
+    {DEMILL_DRUM_FORCE_Y, "drum.force_y", "N", -1e300, 1e300, 0, READ_ONLY},
+    {DEMILL_DRUM_FORCE_Z, "drum.force_z", "N", -1e300, 1e300, 0, READ_ONLY},
 };
 
 static const param_info *find(int32_t key)

@@ -33,7 +33,7 @@ DEMILL_API demill_status demill_drum_create(demill_world *w, demill_id material,
     dm_drum saved = w->drum;
     dm_drum *d = &w->drum;
     memset(d, 0, sizeof *d);
-    d->material = mat;
+    d->material[0] = d->material[1] = d->material[2] = mat;
     d->diameter = param_default(DEMILL_DRUM_DIAMETER);
     d->length = param_default(DEMILL_DRUM_LENGTH);
     d->lifter_h = param_default(DEMILL_DRUM_LIFTER_HEIGHT);
@@ -160,6 +160,59 @@ DEMILL_API demill_status demill_drum_add_lifter(demill_world *w, demill_id drum,
     return DEMILL_OK;
 }
 
+/* The drum's part, checked: its index in dm_drum.material. */
+static demill_status drum_part(demill_world *w, int32_t part, const char *fn, int *index)
+{
+    if (part < DEMILL_DRUM_PART_SHELL || part > DEMILL_DRUM_PART_LIFTERS)
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "%s: %d is not a part of the drum", fn,
+                       (int)part);
+    if (part == DEMILL_DRUM_PART_CAPS && w->dim == 2)
+        return dm_fail(w, DEMILL_ERR_DIMENSION, "%s: a 2D drum has no end caps", fn);
+    *index = part - 1;
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_set_material(demill_world *w, demill_id drum, int32_t part,
+                                                  demill_id material)
+{
+    uint32_t slot, mat;
+    int q = 0;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s || (s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mat)) ||
+        (s = drum_part(w, part, "drum_set_material", &q)))
+        return s;
+    dm_drum *d = &w->drum;
+    d->material[q] = mat;
+    for (uint32_t k = 0; k < d->nwall; k++) {
+        dm_wall *wall = &w->walls[d->wall_slot[k]];
+        if (wall->drum_part != part || wall->material == mat)
+            continue;
+        dm_clist_drop_wall(w, d->wall_slot[k]);
+        w->mat_walls[wall->material]--;
+        w->mat_walls[mat]++;
+        wall->material = mat;
+        w->ptab_dirty = true;
+        w->nlist_valid = false;
+        w->forces_valid = false;
+    }
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_get_material(demill_world *w, demill_id drum, int32_t part,
+                                                  demill_id *out)
+{
+    uint32_t slot;
+    int q = 0;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s || (s = drum_part(w, part, "drum_get_material", &q)))
+        return s;
+    if (!out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_get_material: out is NULL");
+    *out = dm_material_id(w, w->drum.material[q]);
+    return DEMILL_OK;
+}
+
 DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_t key,
                                          double *value)
 {
@@ -191,8 +244,8 @@ DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_
     case DEMILL_DRUM_CURRENT_SPEED: *value = d->omega; break;
     case DEMILL_DRUM_ANGLE: *value = d->theta; break;
     case DEMILL_DRUM_REVOLUTIONS: *value = (double)d->revolutions; break;
-    case DEMILL_DRUM_TORQUE: *value = dm_drum_torque(w); break;
-    case DEMILL_DRUM_POWER: *value = -dm_drum_torque(w) * d->omega; break;
+    case DEMILL_DRUM_TORQUE: *value = dm_drum_load(w, NULL); break;
+    case DEMILL_DRUM_POWER: *value = -dm_drum_load(w, NULL) * d->omega; break;
     case DEMILL_DRUM_POWER_MEAN: *value = d->mean_power; break;
     case DEMILL_DRUM_POWER_CM: *value = dm_drum_power_cm(w, d->omega); break;
     case DEMILL_DRUM_POWER_CM_MEAN: *value = d->mean_power_cm; break;
@@ -208,6 +261,14 @@ DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_
     case DEMILL_DRUM_ENERGY_IN: *value = d->energy_in; break;
     case DEMILL_DRUM_ENERGY_DISSIPATED: *value = d->energy_dissipated; break;
     case DEMILL_DRUM_DISSIPATION_MEAN: *value = d->mean_dissipation; break;
+    case DEMILL_DRUM_FORCE_X:
+    case DEMILL_DRUM_FORCE_Y:
+    case DEMILL_DRUM_FORCE_Z: {
+        double f[3];
+        dm_drum_load(w, f);
+        *value = f[key - DEMILL_DRUM_FORCE_X];
+        break;
+    }
     default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "drum_get: %d is not a drum key", (int)key);
     }
     return DEMILL_OK;

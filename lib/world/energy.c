@@ -53,7 +53,7 @@ DEMILL_API demill_status demill_world_energy(demill_world *w, int32_t term, doub
         return s;
     if (!value)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_energy: value is NULL");
-    if (term < DEMILL_ENERGY_KINETIC_TRANSLATIONAL || term > DEMILL_ENERGY_TOTAL)
+    if (term < DEMILL_ENERGY_KINETIC_TRANSLATIONAL || term > DEMILL_ENERGY_FLOW)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_energy: %d is not an energy term",
                        (int)term);
     double e[5];
@@ -77,7 +77,9 @@ DEMILL_API demill_status demill_world_energy(demill_world *w, int32_t term, doub
     case DEMILL_ENERGY_DISSIPATED_FRICTION: *value = t->diss_friction; break;
     case DEMILL_ENERGY_DISSIPATED_ROLLING: *value = t->diss_rolling; break;
     case DEMILL_ENERGY_DISSIPATED: *value = diss; break;
-    default: *value = kt + kr + pot + stored[0] + stored[1] + diss - t->wall_work;
+    case DEMILL_ENERGY_FLOW: *value = w->flows.energy; break;
+    default:
+        *value = kt + kr + pot + stored[0] + stored[1] + diss - t->wall_work - w->flows.energy;
     }
     dm_clear_error(w);
     return DEMILL_OK;

@@ -9,6 +9,8 @@ static const char *kind_name(int kind)
     case DEMILL_KIND_PARTICLE: return "particle";
     case DEMILL_KIND_WALL: return "wall";
     case DEMILL_KIND_DRUM: return "drum";
+    case DEMILL_KIND_FEED: return "feed";
+    case DEMILL_KIND_OUTLET: return "outlet";
     default: return "unknown";
     }
 }
@@ -43,6 +45,19 @@ demill_status dm_resolve(const demill_world *cw, demill_id id, int kind, const c
         if (index >= w->nmat || DM_ID_GEN(id) != 0)
             return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: no material with id 0x%llx", what,
                            (unsigned long long)id);
+        *slot = index;
+        return DEMILL_OK;
+    }
+    if (kind == DEMILL_KIND_FEED || kind == DEMILL_KIND_OUTLET) {
+        const dm_flows *f = &w->flows;
+        const bool feed = kind == DEMILL_KIND_FEED;
+        const dm_flow_slot *o = index >= (feed ? f->nfeeds : f->noutlets) ? NULL
+                                : feed ? &f->feeds[index].id
+                                       : &f->outlets[index].id;
+        if (!o || !o->alive || o->gen != DM_ID_GEN(id))
+            return dm_fail(w, DEMILL_ERR_INVALID_HANDLE,
+                           "%s: %s id 0x%llx was removed or never existed", what,
+                           kind_name(kind), (unsigned long long)id);
         *slot = index;
         return DEMILL_OK;
     }

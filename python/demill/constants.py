@@ -13,8 +13,8 @@ __all__ = ["VERSION_MAJOR", "VERSION_MINOR", "VERSION_PATCH", "VERSION_NUMBER",
            "VERSION_STRING", "ID_NONE", "Status", "Kind", "Integrator", "WorldKey",
            "MaterialKey", "Normal", "Damping", "Tangential", "Rolling", "PairKey",
            "ParticleField", "IdField", "AddFlag", "WallField", "Caps", "Harmonic",
-           "ContactField", "Energy",
-           "DrumKey", "LifterField", "Sizes", "Fill", "Spectrum"]
+           "ContactField", "Energy", "DrumKey", "DrumPart", "LifterField", "Sizes", "Fill",
+           "Region", "Spectrum"]
 
 VERSION_MAJOR = 0
 VERSION_MINOR = 1
@@ -60,6 +60,8 @@ class Kind(IntEnum):
     PARTICLE = 2
     WALL = 3
     DRUM = 4
+    FEED = 5
+    OUTLET = 6
 
 
 class Integrator(IntEnum):
@@ -243,6 +245,7 @@ class Energy(IntEnum):
     DISSIPATED_ROLLING = 10
     DISSIPATED = 11
     TOTAL = 12
+    FLOW = 13
 
 
 class DrumKey(IntEnum):
@@ -281,6 +284,17 @@ class DrumKey(IntEnum):
     ENERGY_DISSIPATED = 466
     DISSIPATION_MEAN = 467
     LIFTER_COUNT = 468
+    FORCE_X = 469
+    FORCE_Y = 470
+    FORCE_Z = 471
+
+
+class DrumPart(IntEnum):
+    """Parts of the drum, each with a material (``DEMILL_DRUM_PART_*``)."""
+
+    SHELL = 1
+    CAPS = 2
+    LIFTERS = 3
 
 
 class LifterField(IntEnum):
@@ -307,6 +321,16 @@ class Fill(IntEnum):
     COUNT = 1
     MASS = 2
     FRACTION = 3
+
+
+class Region(IntEnum):
+    """Kinds of region of ``World.fill_region``, feeds and outlets
+    (``DEMILL_REGION_*``)."""
+
+    BOX = 1
+    CYLINDER = 2
+    HALF_SPACE = 3
+    DRUM = 4
 
 
 class Spectrum(IntEnum):
@@ -337,9 +361,11 @@ C_PREFIXES = {
     ContactField: "DEMILL_CONTACT_",
     Energy: "DEMILL_ENERGY_",
     DrumKey: "DEMILL_DRUM_",
+    DrumPart: "DEMILL_DRUM_PART_",
     LifterField: "DEMILL_LIFTER_",
     Sizes: "DEMILL_SIZES_",
     Fill: "DEMILL_FILL_",
+    Region: "DEMILL_REGION_",
     Spectrum: "DEMILL_SPECTRUM_",
 }
 

@@ -234,9 +234,11 @@ class Particles:
 
 
 class Wall(Handle, Keyed):
-    """A wall (:meth:`World.add_plane`, :meth:`World.add_cylinder` and the
-    other finite walls). Its fields are read-only 3-vectors;
-    :meth:`set_motion` and :meth:`set_harmonic` move it."""
+    """A wall: a plane (:meth:`World.add_plane`), a triangle mesh
+    (:meth:`World.add_mesh`), a polyline (:meth:`World.add_polyline`) or a
+    finite wall (:meth:`World.add_cylinder` and the others). Its fields are
+    read-only 3-vectors; :meth:`set_motion` and :meth:`set_harmonic` move
+    it."""
 
     __slots__ = ()
     kind = Kind.WALL
@@ -263,6 +265,13 @@ class Wall(Handle, Keyed):
                                              (angular_velocity, "angular_velocity"),
                                              (centre, "centre")))
         self.world._call("demill_wall_set_motion", self.id, ptr(v), ptr(w), ptr(c))
+
+    @property
+    def mesh_size(self):
+        """A mesh's or polyline's (vertices, triangles or segments)."""
+        nv, ne = ctypes.c_size_t(), ctypes.c_size_t()
+        self.world._call("demill_wall_mesh_info", self.id, ctypes.byref(nv), ctypes.byref(ne))
+        return nv.value, ne.value
 
     def set_harmonic(self, mode, axis, amplitude, frequency, phase=0.0):
         """Sets a harmonic motion from now on (:class:`~demill.Harmonic`):

@@ -1457,6 +1457,104 @@ START_TEST(finite_wall_values)
 }
 END_TEST
 
+/* A mesh (3D: a roof of two triangles) or polyline (2D: a V) beside the
+ * stack, so that the bad calls meet a world with one. */
+static void setup_mesh(scene *sc)
+{
+    static const double v[] = {0.1,  0.02, -0.05, 0.15, 0.05, -0.05,
+                               0.15, 0.05, 0.05,  0.1,  0.02, 0.05};
+    static const double p[] = {0.1, 0.05, 0, 0.13, 0.01, 0, 0.16, 0.05, 0};
+    static const uint32_t t[] = {0, 1, 2, 0, 2, 3};
+    demill_world *w = sc->w;
+    if (sc->dim == 3)
+        DM_OK(w, demill_wall_add_mesh(w, sc->mat[0], 4, v, 2, t, &sc->wall[sc->nwall]));
+    else
+        DM_OK(w, demill_wall_add_polyline(w, sc->mat[0], 3, p, 0, &sc->wall[sc->nwall]));
+    sc->nwall++;
+}
+
+static void bad_meshes(scene *sc)
+{
+    demill_world *w = sc->w;
+    const demill_id mat = sc->mat[1];
+    demill_id out = DEMILL_ID_NONE;
+    double v[] = {0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 1};
+    uint32_t t[] = {0, 1, 2, 1, 3, 2};
+    size_t nv, ne;
+    if (sc->dim == 2) {
+        ctx(sc, "wall_add_mesh in 2D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_add_mesh(w, mat, 4, v, 2, t, &out), "3D");
+        double p[] = {0, 0, 0, 0.1, 0, 0, 0.2, 0.05, 0};
+        ctx(sc, "wall_add_polyline bad points");
+        for (int j = 0; j < 3; j++) {
+            p[4] = nonfinite[j];
+            BAD(sc, DEMILL_ERR_NOT_FINITE, demill_wall_add_polyline(w, mat, 3, p, 0, &out),
+                "vertex 1", NONFINITE);
+        }
+        p[4] = 0.0;
+        p[5] = 0.01;
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_add_polyline(w, mat, 3, p, 0, &out), "point 1",
+            "z");
+        p[5] = 0.0;
+        p[6] = 0.1;
+        p[7] = 0.0;
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_polyline(w, mat, 3, p, 0, &out),
+            "segment 1", "zero length");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_polyline(w, mat, 2, p, 1, &out),
+            "points");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_polyline(w, mat, 1, p, 0, &out),
+            "points");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_polyline(w, mat, 3, p, 2, &out),
+            "closed");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_polyline(w, mat, 3, NULL, 0, &out),
+            "points");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_polyline(w, mat, 3, p, 0, NULL), "out");
+    } else {
+        double p[] = {0, 0, 0, 0.1, 0, 0, 0.2, 0.05, 0};
+        ctx(sc, "wall_add_polyline in 3D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_add_polyline(w, mat, 3, p, 0, &out), "2D");
+        ctx(sc, "wall_add_mesh bad vertices");
+        for (int j = 0; j < 3; j++) {
+            v[7] = nonfinite[j];
+            BAD(sc, DEMILL_ERR_NOT_FINITE, demill_wall_add_mesh(w, mat, 4, v, 2, t, &out),
+                "vertex 2", NONFINITE);
+        }
+        v[7] = 0.0;
+        ctx(sc, "wall_add_mesh bad triangles");
+        t[4] = 4;
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_mesh(w, mat, 4, v, 2, t, &out),
+            "triangle 1", "vertex 4");
+        t[4] = 1; /* triangle 1 is (1, 1, 2) */
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_mesh(w, mat, 4, v, 2, t, &out),
+            "triangle 1", "zero area");
+        t[4] = 3; /* vertex 3 on the line through 1 and 2: 1 + 2 (2 - 1) */
+        v[9] = -1.0, v[11] = 2.0;
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_mesh(w, mat, 4, v, 2, t, &out),
+            "triangle 1", "zero area");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_mesh(w, mat, 4, v, 0, t, &out),
+            "triangles");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_mesh(w, mat, 4, NULL, 2, t, &out),
+            "vertices");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_mesh(w, mat, 4, v, 2, NULL, &out),
+            "triangles");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_mesh(w, mat, 4, v, 2, t, NULL), "out");
+    }
+    ctx(sc, "wall_mesh_info");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_mesh_info(w, sc->wall[0], &nv, &ne), "mesh");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_mesh_info(w, sc->wall[1], NULL, &ne),
+        "n_vertices");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_mesh_info(w, sc->wall[1], &nv, NULL),
+        "n_elements");
+    DM_OK(w, demill_wall_mesh_info(w, sc->wall[1], &nv, &ne));
+    ck_assert(nv == (sc->dim == 3 ? 4u : 3u) && ne == 2);
+}
+
+START_TEST(mesh_values)
+{
+    both_dims(setup_mesh, bad_meshes, NULL);
+}
+END_TEST
+
 /* ------------------------------------------------------------------------ */
 /* Handles: removed, foreign, wrong kind, none                                */
 
@@ -1761,7 +1859,7 @@ static void bad_reads(scene *sc)
         ctx(sc, "world_energy term %d into NULL", (int)t);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_world_energy(w, t, NULL), "NULL");
     }
-    static const int32_t unknown_e[] = {0, 13, 100, -1};
+    static const int32_t unknown_e[] = {0, 14, 100, -1};
     for (size_t k = 0; k < sizeof unknown_e / sizeof unknown_e[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown_e[k]);
@@ -2138,6 +2236,7 @@ int main(void)
     tcase_add_test(tc, particle_set_values);
     tcase_add_test(tc, wall_values);
     tcase_add_test(tc, finite_wall_values);
+    tcase_add_test(tc, mesh_values);
     tcase_add_test(tc, removed_handles);
     tcase_add_test(tc, foreign_handles);
     tcase_add_test(tc, wrong_kind_and_none_handles);

@@ -43,7 +43,7 @@ static const char *self; /* this program, run again as the new process */
 /* ------------------------------------------------------------------------ */
 /* Scenes                                                                     */
 
-/* A 3D mill: 8 lifters, 5 and 6 mm balls filled to 25 %, a few removed, a
+/* A 3D mill: 8 lifters of the balls' steel in a liner shell, 5 and 6 mm balls filled to 25 %, a few removed, a
  * spectrum recorded, turning up to 75 % of critical over a 0.05 s ramp. */
 static demill_world *mill3d(int integrator)
 {
@@ -64,6 +64,7 @@ static demill_world *mill3d(int integrator)
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTERS, 8));
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTER_HEIGHT, 0.008));
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTER_WIDTH, 0.008));
+    DM_OK(w, demill_drum_set_material(w, drum, DEMILL_DRUM_PART_LIFTERS, balls));
     const double sizes[4] = {0.005, 0.5, 0.006, 0.5};
     demill_id ids[2000];
     size_t added;
@@ -453,9 +454,13 @@ START_TEST(truncated_and_corrupt_checkpoints_are_refused)
                 "a corrupted byte");
     }
     memcpy(bad, good.b, good.n);
-    const uint32_t newer = 4;
+    uint32_t newer; /* the format after the one this library writes */
+    memcpy(&newer, good.b + 8, 4);
+    newer++;
     memcpy(bad + 8, &newer, 4);
-    refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "format version 4", "a newer format");
+    char word[32];
+    snprintf(word, sizeof word, "format version %u", (unsigned)newer);
+    refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, word, "a newer format");
     memcpy(bad, good.b, good.n);
     memcpy(bad + good.n, "trailing", 8);
     refused(target, before, bad, good.n + 8, DEMILL_ERR_FORMAT, "trailing", "trailing bytes");

@@ -40,9 +40,52 @@ void dm_walls_mark_built(demill_world *w);
 void dm_wall_surface_velocity(const dm_wall *wall, double u[3]);
 
 /* The geometry of the particle-wall candidates (dm_wgeom): room for every
- * candidate, one bucket's candidates p0 .. p1 - 1 (from index g0), or all. */
+ * candidate, one bucket's candidates p0 .. p1 - 1 (from index g0) but for
+ * those of meshes (dm_wgeom_meshes), or all. */
 int dm_wgeom_reserve(demill_world *w);
 void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p0, uint32_t p1);
 void dm_wgeom_update(demill_world *w);
+
+/* Stores the geometry of wall candidate q (index in w->wg) of particle i:
+ * overlap delta, unit normal n from the particle into the wall, and from
+ * them the contact point and the wall's velocity there. */
+void dm_wgeom_store(demill_world *w, uint32_t q, uint32_t i, const dm_wall *wall, double delta,
+                    const double *n);
+
+/* ---- triangle meshes and polylines (mesh.c) ------------------------------------- */
+/* Whether element t (nel = 3: a triangle, 2: a segment, indices into v, 3
+ * doubles per vertex) has no area (length) to speak of. */
+int dm_trimesh_degenerate(int nel, const double *v, const uint32_t *el, size_t t);
+/* A mesh of nt elements over nv vertices (valid: finite, indices in range,
+ * no degenerate element), in one block; NULL when out of memory. */
+dm_trimesh *dm_trimesh_build(int nel, uint32_t nv, const double *v, uint32_t nt,
+                             const uint32_t *el);
+dm_trimesh *dm_trimesh_copy(const dm_trimesh *m);
+void dm_trimesh_free(dm_trimesh *m);
+/* Frees the meshes of every wall slot (the walls themselves stay). */
+void dm_walls_free_meshes(demill_world *w);
+/* Calls fn(ctx, t) for every element t closer than reach to x (the mesh's
+ * frame), in the tree's order. */
+typedef void (*dm_near_fn)(void *ctx, uint32_t t);
+void dm_trimesh_near(const dm_trimesh *m, const double *x, double reach, dm_near_fn fn,
+                     void *ctx);
+/* The same for a mesh wall and a point x of the world. */
+void dm_mesh_near(const dm_wall *wall, const double *x, int dim, double reach, dm_near_fn fn,
+                  void *ctx);
+/* The unsigned distance from x to a mesh wall, and the unit normal towards it. */
+double dm_mesh_closest(const dm_wall *wall, const double *x, int dim, double *normal);
+/* Vertex k of a mesh wall where it is now. */
+void dm_mesh_vertex_at(const dm_wall *wall, uint32_t k, double *out);
+/* The largest distance of the mesh from the wall's centre of rotation, or more. */
+double dm_mesh_reach(const dm_wall *wall);
+/* Before a mesh wall's current pose becomes its reference (dm_wall_rebase). */
+void dm_mesh_rebase(dm_wall *wall);
+/* Whether the world has a mesh wall. */
+int dm_walls_have_mesh(const demill_world *w);
+/* The geometry of the mesh candidates of particles begin .. end - 1 (the
+ * contact rule of docs/geometry.md); carry: a contact that moves on to
+ * another element takes its history along (a force evaluation that advances
+ * the histories). */
+void dm_wgeom_meshes(demill_world *w, uint32_t begin, uint32_t end, int carry);
 
 #endif /* DM_GEOMETRY_H */

@@ -2,12 +2,12 @@
  * kinematics and the contact geometry of each particle-wall candidate.
  * Kinds: planes (free walls, and the drum's end caps), the inside of the
  * drum's cylindrical shell, prisms with a convex polygonal cross-section
- * (the lifters), and the finite walls: surfaces of revolution of a segment
- * (finite cylinders, cones, discs and annuli, the caps of cylinders) and
- * rectangles. Each kind contributes one closest-point function
- * (dm_wall_closest), so triangle meshes can join as a new kind. Free walls
- * move by their own rigid or harmonic motion, and their surfaces may move
- * along themselves (belts); the drum's walls turn with the drum. */
+ * (the lifters), triangle meshes and polylines (mesh.c), and the finite
+ * walls: surfaces of revolution of a segment (finite cylinders, cones, discs
+ * and annuli, the caps of cylinders) and rectangles. Each kind contributes
+ * one closest-point function (dm_wall_closest). Free walls move by their
+ * own rigid or harmonic motion, and their surfaces may move along themselves
+ * (belts); the drum's walls turn with the drum. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -83,6 +83,8 @@ void dm_wall_at(dm_wall *wall, double time)
 void dm_wall_rebase(dm_wall *wall, double now, double t0)
 {
     dm_wall_at(wall, now);
+    if (wall->mesh)
+        dm_mesh_rebase(wall);
     if (wall->harmonic) {
         wall->harmonic = 0;
         memset(wall->vel, 0, sizeof wall->vel);
@@ -294,12 +296,14 @@ static double finite_closest(const dm_wall *wall, const double *x, double *norma
 /* Signed distance of x from the wall's surface, positive on the particle
  * side (negative inside the solid), and the unit normal from x towards the
  * closest point of the surface (into the wall). For a prism and the shell
- * only x and y matter: they extend along z. A finite wall is a thin surface
- * that particles touch from either side: its distance is never negative. */
+ * only x and y matter: they extend along z. A mesh and a finite wall are
+ * thin surfaces that particles touch from either side: their distance is
+ * never negative. */
 double dm_wall_closest(const dm_wall *wall, const double *x, int dim, double *normal)
 {
     normal[0] = normal[1] = normal[2] = 0.0;
     switch (wall->kind) {
+    case DM_WALL_MESH: return dm_mesh_closest(wall, x, dim, normal);
     case DM_WALL_SHELL: {
         const double r = sqrt(x[0] * x[0] + x[1] * x[1]);
         if (r > 0.0) {
@@ -419,10 +423,11 @@ void dm_walls_mark_built(demill_world *w)
 /* The most any wall's surface can have moved, near the particles, since the
  * last neighbour build: |Δc| + θ × reach, the reach of a free plane being the
  * distance from its centre to the far corner of the particles' box (widened
- * by the skin), of a finite wall the far side of its bounding sphere, of a
- * lifter its outermost vertex, and zero for the shell and end caps, which
- * the drum's rotation does not move. A harmonic motion moves the pose (c
- * and rot) as a rigid one does, so the same bound sees it. */
+ * by the skin), of a lifter its outermost vertex, of a mesh a sphere about
+ * it, of a finite wall the far side of its bounding sphere, and zero for the
+ * shell and end caps, which the drum's rotation does not move. A harmonic
+ * motion moves the pose (c and rot) as a rigid one does, so the same bound
+ * sees it. */
 double dm_walls_max_shift(const demill_world *w)
 {
     double worst = 0.0;
@@ -451,6 +456,8 @@ double dm_walls_max_shift(const demill_world *w)
                 reach2 += (b[c] - wall->c[c]) * (b[c] - wall->c[c]);
             reach = sqrt(reach2) + wall->brad;
         }
+        if (wall->mesh)
+            reach = dm_mesh_reach(wall);
         /* angle of rot · rot_build^T from its trace */
         double tr = 0.0;
         for (int r = 0; r < 3; r++)
@@ -484,14 +491,14 @@ int dm_wgeom_reserve(demill_world *w)
     return 0;
 }
 
-/* Adds to the wall velocity vw at a contact of normal n the part of the
- * wall's surface velocity (turned with the wall) tangent to the surface. */
 void dm_wall_surface_velocity(const dm_wall *wall, double u[3])
 {
     mat_vec(wall->rot, wall->surf0, u);
 }
 
-static void add_surface_velocity(const dm_wall *wall, int D, const double *n, double *vw)
+/* Adds to the wall velocity vw at a contact of normal n the part of the
+ * wall's surface velocity (turned with the wall) tangent to the surface. */
+static inline void add_surface_velocity(const dm_wall *wall, int D, const double *n, double *vw)
 {
     double u[3], un = 0.0;
     dm_wall_surface_velocity(wall, u);
@@ -501,34 +508,54 @@ static void add_surface_velocity(const dm_wall *wall, int D, const double *n, do
         vw[c] += u[c] - un * n[c];
 }
 
+/* Stores the geometry of wall candidate q of a particle at x of radius r:
+ * overlap delta, unit normal n from the particle into the wall, and from
+ * them the contact point and the wall's velocity there, with the surface's
+ * own velocity along itself (static, so that dm_wgeom_range() inlines it: a
+ * library's exported function is not). */
+static inline void wgeom_store(dm_wgeom *g, int D, uint32_t q, const double *x, double r,
+                               const dm_wall *wall, double delta, const double *n)
+{
+    double *nrm = g->nrm + D * q, *cp = g->cp + D * q, *vw = g->vw + D * q;
+    g->delta[q] = delta;
+    double arm = r - 0.5 * delta, rel[3] = {0.0, 0.0, 0.0};
+    for (int c = 0; c < D; c++) {
+        nrm[c] = n[c];
+        cp[c] = x[c] + arm * nrm[c];
+        rel[c] = cp[c] - wall->c[c];
+    }
+    const double *om = wall->omega;
+    double spin[3] = {om[1] * rel[2] - om[2] * rel[1], om[2] * rel[0] - om[0] * rel[2],
+                      om[0] * rel[1] - om[1] * rel[0]};
+    for (int c = 0; c < D; c++)
+        vw[c] = wall->vel[c] + spin[c];
+    if (wall->surface)
+        add_surface_velocity(wall, D, nrm, vw);
+}
+
+void dm_wgeom_store(demill_world *w, uint32_t q, uint32_t i, const dm_wall *wall, double delta,
+                    const double *n)
+{
+    wgeom_store(&w->wg, w->dim, q, w->p.x + w->dim * i, w->p.r[i], wall, delta, n);
+}
+
 /* Contact geometry of candidates p0 .. p1-1 of a particle-wall bucket whose
- * first candidate has index g0 in w->wg (room reserved by the neighbour build). */
+ * first candidate has index g0 in w->wg (room reserved by the neighbour
+ * build), but for mesh candidates: dm_wgeom_meshes() has done those. */
 void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p0, uint32_t p1)
 {
     dm_wgeom *g = &w->wg;
     const int D = w->dim;
     const dm_particles *P = &w->p;
     for (uint32_t p = p0; p < p1; p++) {
-        const uint32_t i = b->i[p], q = g0 + p;
+        const uint32_t i = b->i[p];
         const dm_wall *wall = &w->walls[b->j[p]];
+        if (wall->mesh)
+            continue;
         const double *x = P->x + D * i;
         double n[3];
         const double delta = P->r[i] - dm_wall_closest(wall, x, D, n);
-        double *nrm = g->nrm + D * q, *cp = g->cp + D * q, *vw = g->vw + D * q;
-        g->delta[q] = delta;
-        double arm = P->r[i] - 0.5 * delta, rel[3] = {0.0, 0.0, 0.0};
-        for (int c = 0; c < D; c++) {
-            nrm[c] = n[c];
-            cp[c] = x[c] + arm * nrm[c];
-            rel[c] = cp[c] - wall->c[c];
-        }
-        const double *om = wall->omega;
-        double spin[3] = {om[1] * rel[2] - om[2] * rel[1], om[2] * rel[0] - om[0] * rel[2],
-                          om[0] * rel[1] - om[1] * rel[0]};
-        for (int c = 0; c < D; c++)
-            vw[c] = wall->vel[c] + spin[c];
-        if (wall->surface)
-            add_surface_velocity(wall, D, nrm, vw);
+        wgeom_store(g, D, g0 + p, x, P->r[i], wall, delta, n);
     }
 }
 
@@ -541,6 +568,8 @@ void dm_wgeom_update(demill_world *w)
         dm_wgeom_range(w, b, g0, 0, b->n);
         g0 += b->n;
     }
+    if (dm_walls_have_mesh(w))
+        dm_wgeom_meshes(w, 0, w->p.n, 0);
 }
 
 /* Room for `more` walls beyond the slots in use (0; -1 when out of memory,

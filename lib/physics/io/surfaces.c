@@ -1,13 +1,15 @@
 /* surfaces.c: the walls' surfaces as points, lines (2D) and polygons (3D)
- * for drawing: a plane as a patch about the scene, the finite walls
- * (cylinders, cones, discs, caps: rings of quadrilaterals; rectangles) at
- * their pose, the drum's shell, caps and lifters (clipped to the shell) at
- * the drum's angle. Built twice by the
+ * for drawing: a plane as a patch about the scene, a mesh's triangles and a
+ * polyline's segments where the wall is now, the finite walls (cylinders,
+ * cones, discs, caps: rings of quadrilaterals; rectangles) at their pose,
+ * the drum's shell, caps and lifters (clipped to the shell) at the drum's
+ * angle. Built twice by the
  * same code: first with no arrays, to count, then into arrays of those
  * sizes. */
 #include <math.h>
 #include <stdlib.h>
 
+#include "physics/geometry/geometry.h"
 #include "physics/io/io.h"
 
 #define SHELL_SEGMENTS 120                          /* of the drum's circle */
@@ -257,6 +259,24 @@ static void lifter(dm_mesh *m, const demill_world *w, const dm_wall *wall)
     cell(m, 1, v, (size_t)n);
 }
 
+/* A mesh wall: its triangles (3D) or segments (2D) where it is now. */
+static void mesh_surface(dm_mesh *m, const dm_wall *wall)
+{
+    const dm_trimesh *t = wall->mesh;
+    const size_t first = m->npt;
+    for (uint32_t k = 0; k < t->nv; k++) {
+        double x[3];
+        dm_mesh_vertex_at(wall, k, x);
+        point(m, x[0], x[1], x[2]);
+    }
+    for (uint32_t e = 0; e < t->nt; e++) {
+        size_t v[3];
+        for (int k = 0; k < t->nel; k++)
+            v[k] = first + t->el[(size_t)t->nel * e + k];
+        cell(m, t->nel == 3, v, (size_t)t->nel);
+    }
+}
+
 /* Two unit vectors u, v with (u, v, n) right-handed, n a unit vector. */
 static void frame_about(const double n[3], double u[3], double v[3])
 {
@@ -343,7 +363,9 @@ static void walls_mesh(dm_mesh *m, const demill_world *w)
         case DM_PART_CAP: end_cap(m, w, wall); break;
         case DM_PART_LIFTER: lifter(m, w, wall); break;
         default:
-            if (wall->kind == DM_WALL_REVOLVED)
+            if (wall->mesh)
+                mesh_surface(m, wall);
+            else if (wall->kind == DM_WALL_REVOLVED)
                 revolved(m, wall);
             else if (wall->kind == DM_WALL_RECT)
                 rectangle(m, wall);

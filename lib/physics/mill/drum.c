@@ -151,9 +151,9 @@ static dm_wall *drum_wall_new(demill_world *w, int kind, int part)
     wall->kind = kind;
     wall->drum_part = part;
     wall->handle = DM_FREE;
-    wall->material = d->material;
+    wall->material = d->material[part - 1];
     wall->lifter = -1;
-    w->mat_walls[d->material]++;
+    w->mat_walls[wall->material]++;
     d->wall_slot[d->nwall++] = slot;
     return wall;
 }
@@ -251,13 +251,18 @@ demill_status dm_drum_check_lifter(demill_world *w, const dm_lifter_spec *l, dou
 
 /* ---- measurements -------------------------------------------------------------- */
 
-/* The z-torque the particles exert on the drum's walls. */
-double dm_drum_torque(const demill_world *w)
+double dm_drum_load(const demill_world *w, double *force)
 {
     const dm_drum *d = &w->drum;
-    double t = 0.0;
-    for (uint32_t k = 0; k < d->nwall; k++)
-        t += w->walls[d->wall_slot[k]].torque[2];
+    double t = 0.0, f[3] = {0.0, 0.0, 0.0};
+    for (uint32_t k = 0; k < d->nwall; k++) {
+        const dm_wall *wall = &w->walls[d->wall_slot[k]];
+        t += wall->torque[2];
+        for (int c = 0; c < 3; c++)
+            f[c] += wall->force[c];
+    }
+    if (force)
+        memcpy(force, f, sizeof f);
     return t;
 }
 
@@ -299,7 +304,7 @@ void dm_drum_measure(demill_world *w)
     if (!d->alive)
         return;
     const double dt = w->dt;
-    d->torque = dm_drum_torque(w);
+    d->torque = dm_drum_load(w, NULL);
     d->power = -d->torque * d->omega;
     d->energy_in += d->power * dt;
     d->energy_dissipated = 0.0;
