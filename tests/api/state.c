@@ -578,6 +578,44 @@ START_TEST(drum_values_the_api_refuses_are_refused)
 }
 END_TEST
 
+/* A checkpoint is held to the bounds the API holds a finite wall and its
+ * motion to: a cone's radius below 0, a rectangle's half-width that is not
+ * finite, a harmonic frequency below 0 or not finite, written behind a
+ * repaired checksum, are refused on load. */
+START_TEST(finite_wall_values_the_api_refuses_are_refused)
+{
+    demill_world *w, *target;
+    demill_id m, cone, rect;
+    ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+    ck_assert_int_eq(demill_world_create(3, &target), DEMILL_OK);
+    DM_OK(w, demill_material_create(w, &m));
+    const double o[3] = {0, 0, 0}, y[3] = {0, 1, 0}, x[3] = {1, 0, 0};
+    const double radius = 0.0789, half = 0.0321, freq = 13.7;
+    DM_OK(w, demill_wall_add_cone(w, m, o, y, 0.0456, radius, 0.1, DEMILL_CAPS_START, &cone));
+    DM_OK(w, demill_wall_add_rectangle(w, m, o, y, x, half, 0.0123, &rect));
+    DM_OK(w, demill_wall_set_harmonic(w, rect, DEMILL_HARMONIC_ROTATION, x, 0.1, freq, 0));
+    bytes good = checkpoint_of(w), before = checkpoint_of(target);
+    const struct {
+        double value, bad;
+        const char *word;
+    } cases[] = {{radius, -0.01, "inconsistent"},
+                 {half, NAN, "not finite"},
+                 {freq, -2.0, "inconsistent"},
+                 {freq, INFINITY, "not finite"}};
+    unsigned char *bad = malloc(good.n);
+    ck_assert_ptr_nonnull(bad);
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        const size_t at = unique_offset(good, &cases[c].value, 8);
+        memcpy(bad, good.b, good.n);
+        memcpy(bad + at, &cases[c].bad, 8);
+        dm_test_ckpt_repair(bad, good.n);
+        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, cases[c].word, "a finite wall");
+    }
+    DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
+    release(w, target, good, before, bad);
+}
+END_TEST
+
 /* The drum's recording of impacts on an ore (checkpoint format 2) is held
  * to finite values as demill_drum_impacts_start() is: a top size, energy
  * span or start time that is not finite, written behind a repaired checksum,
@@ -899,6 +937,7 @@ int main(int argc, char **argv)
         {"repaired", corruption_behind_a_repaired_checksum_never_crashes, 1},
         {"drum", drum_values_the_api_refuses_are_refused, 1},
         {"impacts", impact_recordings_not_finite_are_refused, 1},
+        {"finite_walls", finite_wall_values_the_api_refuses_are_refused, 1},
         {"empty", empty_state_into_a_refining_world, 1},
         {"files", file_errors, 1},
         {"accepted", accepted_states_reload, 1},
