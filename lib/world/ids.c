@@ -76,10 +76,11 @@ demill_id dm_particle_id(const demill_world *w, uint32_t storage)
     return dm_id_make(w->tag, DEMILL_KIND_PARTICLE, w->ph.gen[h], h);
 }
 
-/* The id of a wall slot: the wall's own id, or the drum's for its walls. */
+/* The id of a wall slot: the wall's own id (also when attached to the drum),
+ * or the drum's for the walls it built. */
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot)
 {
-    if (w->walls[wall_slot].drum_part)
+    if (w->walls[wall_slot].drum_part && !dm_wall_attached(&w->walls[wall_slot]))
         return dm_drum_id(w);
     uint32_t h = w->walls[wall_slot].handle;
     return dm_id_make(w->tag, DEMILL_KIND_WALL, w->wh.gen[h], h);

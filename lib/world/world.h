@@ -31,6 +31,8 @@ demill_status dm_enter(const demill_world *w, demill_id id, int kind, const char
 demill_id dm_particle_id(const demill_world *w, uint32_t storage);
 /* The id of a wall slot: the wall's own id, or the drum's for its walls. */
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
+/* Removes the user's wall in this slot (its contacts, handle and mesh). */
+void dm_wall_release(demill_world *w, uint32_t slot);
 demill_id dm_material_id(const demill_world *w, uint32_t material);
 demill_id dm_drum_id(const demill_world *w);
 demill_id dm_feed_id(const demill_world *w, uint32_t slot);
