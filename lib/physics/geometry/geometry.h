@@ -81,6 +81,8 @@ void dm_mesh_into_drum(dm_wall *wall, double theta);
 /* The smallest (far = 0) or largest (far = 1) distance of a mesh wall's
  * vertices from the z axis. */
 double dm_mesh_axis_distance(const dm_wall *wall, int far);
+/* The widest angle about the z axis one element of a mesh wall spans. */
+double dm_mesh_widest_angle(const dm_wall *wall);
 /* Whether the world has a mesh wall. */
 int dm_walls_have_mesh(const demill_world *w);
 /* The geometry of the mesh candidates of particles begin .. end - 1 (the

@@ -631,6 +631,23 @@ double dm_mesh_axis_distance(const dm_wall *wall, int far)
     return best;
 }
 
+double dm_mesh_widest_angle(const dm_wall *wall)
+{
+    const dm_trimesh *m = wall->mesh;
+    double widest = 0.0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+        double phi[3], x[3];
+        for (int k = 0; k < m->nel; k++) {
+            dm_mesh_vertex_at(wall, m->el[(size_t)m->nel * t + k], x);
+            phi[k] = atan2(x[1], x[0]);
+        }
+        for (int a = 0; a < m->nel; a++)
+            for (int b = a + 1; b < m->nel; b++)
+                widest = fmax(widest, fabs(remainder(phi[a] - phi[b], 2.0 * DM_PI)));
+    }
+    return widest;
+}
+
 /* ---- the geometry pass ----------------------------------------------------------- */
 
 int dm_walls_have_mesh(const demill_world *w)

@@ -16,7 +16,9 @@
  * of consecutive charge bins (around the circle) is the charge, its lower
  * edge the toe and its upper edge the shoulder. A lifter takes room from its
  * bins, which with coarse particles can drop them below the threshold and
- * cut the charge in pieces, so gaps no wider than a lifter (in bins) with
+ * cut the charge in pieces, so gaps no wider than a lifter (in bins; a
+ * lifter mesh's width is the arc at R of the widest angle one of its
+ * triangles spans about the axis) with
  * charge bins on both sides count as charge; for fine charges this changes
  * nothing. The centre-of-mass angle is φ of the mass-weighted centre of all
  * particles. */
@@ -87,6 +89,11 @@ void dm_charge_shape(const demill_world *w, double angles[3])
     double lifter_width = 0.0;
     for (uint32_t k = 0; k < d->nlifters; k++)
         lifter_width = fmax(lifter_width, d->lifters[k].width);
+    for (uint32_t k = 0; k < w->nwalls; k++) { /* a lifter mesh: its widest element's arc */
+        const dm_wall *wall = &w->walls[k];
+        if (wall->kind && wall->mesh && wall->drum_part == DM_PART_LIFTER)
+            lifter_width = fmax(lifter_width, R * dm_mesh_widest_angle(wall));
+    }
     const int gap = (int)ceil(lifter_width / R / width);
     for (int b = 0; b < DM_SHAPE_BINS; b++) {
         if (raw[b])
