@@ -16,8 +16,9 @@
  *   within 2 %, the mean toe and shoulder angles within 2 degrees. The
  *   120-gon's flats lie R (1 - cos(pi/120)) = 26 um inside the circle, a
  *   hundredth of a ball radius.
- * - A checkpoint and a snapshot of a drum with an attached mesh run on
- *   bitwise as the world they came from.
+ * - A checkpoint and a snapshot of a turning drum with an attached mesh and
+ *   a ball on it run on bitwise as the world they came from (500 steps),
+ *   the wall still attached.
  * - Bad attachments: clear errors, the world unchanged. */
 #include <math.h>
 #include <stdio.h>
@@ -143,7 +144,8 @@ static demill_world *pressed(int mesh, demill_id *drum, demill_id *ball, demill_
         DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LIFTERS, 1));
     }
     const double r = 0.01, x[3] = {0.5 * W + r - DELTA, -(R_DRUM - 0.5 * H), 0.01};
-    DM_OK(w, demill_particles_add(w, mat, 1, x, &r, NULL, 0, ball));
+    demill_id b;
+    DM_OK(w, demill_particles_add(w, mat, 1, x, &r, NULL, 0, ball ? ball : &b));
     DM_OK(w, demill_world_step(w, 0)); /* (forces at the current state) */
     return w;
 }
@@ -230,6 +232,115 @@ START_TEST(attaching_moves_nothing)
     }
     free(before);
     free(s.c);
+    demill_world_destroy(w);
+}
+END_TEST
+
+/* Every particle's position and velocity, in id order. */
+static double *state_of(demill_world *w, size_t *n)
+{
+    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_POSITION, NULL, 0, n));
+    double *x = malloc(6 * *n * sizeof *x);
+    ck_assert(x);
+    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_POSITION, x, 3 * *n, n));
+    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_VELOCITY, x + 3 * *n, 3 * *n, n));
+    return x;
+}
+
+START_TEST(checkpoint_and_snapshot_carry_the_attachment)
+{
+    demill_id drum, wall;
+    demill_world *w = pressed(1, &drum, NULL, &wall); /* the ball on the lifter mesh */
+    DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_SPEED, 3.0));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_GRAVITY_Y, -9.81));
+    DM_OK(w, demill_world_step(w, 300));
+    size_t size, n0, n1;
+    DM_OK(w, demill_world_save_buffer(w, NULL, 0, &size));
+    void *bytes = malloc(size);
+    ck_assert(bytes);
+    DM_OK(w, demill_world_save_buffer(w, bytes, size, &size));
+    demill_snapshot *snap;
+    DM_OK(w, demill_snapshot_take(w, &snap));
+    DM_OK(w, demill_world_step(w, 500));
+    double *ref = state_of(w, &n0), energy0;
+    DM_OK(w, demill_drum_get(w, drum, DEMILL_DRUM_ENERGY_IN, &energy0));
+    for (int way = 0; way < 2; way++) {
+        demill_world *v;
+        ck_assert_int_eq(demill_world_create(3, &v), DEMILL_OK);
+        if (way)
+            DM_OK(v, demill_snapshot_restore(v, snap));
+        else
+            DM_OK(v, demill_world_load_buffer(v, bytes, size));
+        demill_id ids[2];
+        size_t nd;
+        DM_OK(v, demill_world_ids(v, DEMILL_KIND_DRUM, ids, 1, &nd));
+        DM_OK(v, demill_world_ids(v, DEMILL_KIND_WALL, ids + 1, 1, &nd));
+        DM_OK(v, demill_world_step(v, 500));
+        double *got = state_of(v, &n1), energy1;
+        DM_OK(v, demill_drum_get(v, ids[0], DEMILL_DRUM_ENERGY_IN, &energy1));
+        ck_assert_uint_eq(n0, n1);
+        ck_assert_msg(memcmp(ref, got, 6 * n0 * sizeof *ref) == 0 && energy0 == energy1,
+                      "%s: the run differs", way ? "snapshot" : "checkpoint");
+        /* the wall is still attached: a second attachment is refused */
+        ck_assert_int_eq(demill_drum_attach_wall(v, ids[0], ids[1], DEMILL_DRUM_PART_SHELL),
+                         DEMILL_ERR_INVALID_VALUE);
+        free(got);
+        demill_world_destroy(v);
+    }
+    ck_assert(energy0 != 0.0);
+    free(ref);
+    free(bytes);
+    demill_snapshot_free(snap);
+    demill_world_destroy(w);
+}
+END_TEST
+
+START_TEST(bad_attachments)
+{
+    demill_id drum, wall, plane, other_drum, other_wall, mat;
+    demill_world *w = pressed(1, &drum, NULL, &wall);
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_MATERIAL, &mat, 1, NULL));
+    const double o[3] = {0, 0, 0}, up[3] = {0, 1, 0};
+    DM_OK(w, demill_wall_add_plane(w, mat, o, up, &plane));
+    demill_id om;
+    demill_world *v = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_NONE, &om);
+    DM_OK(v, demill_drum_create(v, om, &other_drum));
+    DM_OK(v, demill_wall_add_plane(v, om, o, up, &other_wall));
+    size_t size, size1;
+    DM_OK(w, demill_world_save_buffer(w, NULL, 0, &size));
+    uint8_t *before = malloc(size), *after = malloc(size);
+    ck_assert(before && after);
+    DM_OK(w, demill_world_save_buffer(w, before, size, &size));
+    const struct {
+        demill_id drum, wall;
+        int32_t part;
+        demill_status want;
+        const char *what;
+    } cases[] = {
+        {drum, drum, DEMILL_DRUM_PART_SHELL, DEMILL_ERR_INVALID_HANDLE, "wall"},
+        {drum, wall, DEMILL_DRUM_PART_SHELL, DEMILL_ERR_INVALID_VALUE, "attached to the drum already"},
+        {drum, plane, 4, DEMILL_ERR_UNKNOWN_KEY, "not a part of the drum"},
+        {drum, plane, 0, DEMILL_ERR_UNKNOWN_KEY, "not a part of the drum"},
+        {drum, other_wall, DEMILL_DRUM_PART_SHELL, DEMILL_ERR_INVALID_HANDLE, "wall"},
+        {other_drum, plane, DEMILL_DRUM_PART_SHELL, DEMILL_ERR_INVALID_HANDLE, "drum"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof *cases; k++) {
+        ck_assert_int_eq(demill_drum_attach_wall(w, cases[k].drum, cases[k].wall, cases[k].part),
+                         cases[k].want);
+        ck_assert_msg(strstr(demill_world_last_error(w), cases[k].what), "case %zu: %s", k,
+                      demill_world_last_error(w));
+        DM_OK(w, demill_world_save_buffer(w, after, size, &size1));
+        ck_assert_msg(size1 == size && memcmp(before, after, size) == 0,
+                      "case %zu changed the world", k);
+    }
+    ck_assert_int_eq(demill_wall_set_motion(w, wall, up, NULL, NULL), DEMILL_ERR_INVALID_VALUE);
+    /* removing the drum removes its attached wall; removing the wall works */
+    DM_OK(w, demill_wall_remove(w, plane));
+    DM_OK(w, demill_drum_remove(w, drum));
+    ck_assert_int_eq(demill_wall_remove(w, wall), DEMILL_ERR_INVALID_HANDLE);
+    free(before);
+    free(after);
+    demill_world_destroy(v);
     demill_world_destroy(w);
 }
 END_TEST
@@ -345,6 +456,8 @@ int main(void)
     tcase_set_timeout(tc, 600);
     tcase_add_test(tc, pressed_on_a_mesh_lifter);
     tcase_add_test(tc, attaching_moves_nothing);
+    tcase_add_test(tc, checkpoint_and_snapshot_carry_the_attachment);
+    tcase_add_test(tc, bad_attachments);
     tcase_add_test(tc, mill_from_stl_against_analytic);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
