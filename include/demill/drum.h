@@ -65,6 +65,13 @@ enum {
     /** Steps between samples of the charge shape for the per-revolution means,
      *  >= 1. Default 100. */
     DEMILL_DRUM_SAMPLE_INTERVAL = 416,
+    /** Whether the drum has its analytic shell and end caps, 1 or 0.
+     *  Default 1. With 0 the drum's walls are only its analytic lifters, if
+     *  any, and the walls attached to it (demill_drum_attach_wall()): a drum
+     *  built from an STL of its shell, caps and lifters. The diameter stays
+     *  the drum's: the critical speed, the charge-shape ring and the fill
+     *  region use it. */
+    DEMILL_DRUM_SHELL = 417,
 
     /** Critical speed ω_c = √(2 g / (D - d)), rad/s, with g the magnitude of
      *  the gravity vector. */
@@ -247,6 +254,32 @@ DEMILL_API demill_status demill_drum_set_material(demill_world *world, demill_id
  *          DEMILL_ERR_UNKNOWN_KEY or DEMILL_ERR_DIMENSION. */
 DEMILL_API demill_status demill_drum_get_material(demill_world *world, demill_id drum,
                                                   int32_t part, demill_id *out);
+
+/** Makes a wall (a mesh, a polyline or a plane) a part of the drum: from
+ *  now on it turns with the drum, its own motion replaced. Its geometry is
+ *  taken where it is now, at the drum's current angle, so nothing jumps.
+ *  It counts in everything the drum reports: torque, power, the force on
+ *  the drum, energy in and dissipated, the collision spectrum's row of its
+ *  part (shell and caps, or lifters) and, as part DEMILL_DRUM_PART_LIFTERS,
+ *  the charge shape (a lifter mesh's depth, the drum's radius less its
+ *  vertices' smallest distance from the axis, widens the ring next to the
+ *  shell as the tallest lifter's height does). It is not one of the
+ *  analytic lifters of demill_drum_lifter_get(). It keeps its own material
+ *  and its id: demill_wall_remove() removes it, demill_wall_set_motion()
+ *  refuses it, and demill_drum_remove() removes it with the drum. VTK
+ *  output draws it with the drum's part.
+ *  @param world the world.
+ *  @param drum  the drum's id.
+ *  @param wall  the wall's id (of this world, not yet attached).
+ *  @param part  the part it becomes, DEMILL_DRUM_PART_*.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (a drum or wall id that is
+ *          not valid in this world, the drum's id given as the wall),
+ *          DEMILL_ERR_UNKNOWN_KEY (no such part), DEMILL_ERR_DIMENSION (the
+ *          caps of a 2D drum) or DEMILL_ERR_INVALID_VALUE (the wall is
+ *          attached already, or is a finite wall: only planes, meshes and
+ *          polylines can be attached). */
+DEMILL_API demill_status demill_drum_attach_wall(demill_world *world, demill_id drum,
+                                                 demill_id wall, int32_t part);
 
 /** Adds one lifter to the drum.
  *  @param world      the world.

@@ -292,8 +292,10 @@ DEMILL_API demill_status demill_wall_remove(demill_world *world, demill_id wall)
  *  @param angular_velocity angular velocity about the centre, rad/s, or NULL
  *                          for 0.
  *  @param centre           the centre of rotation, m, or NULL to keep it.
- *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE or
- *          DEMILL_ERR_DIMENSION. */
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_DIMENSION or DEMILL_ERR_INVALID_VALUE (the wall is
+ *          attached to the drum, demill_drum_attach_wall(), and turns with
+ *          it). */
 DEMILL_API demill_status demill_wall_set_motion(demill_world *world, demill_id wall,
                                                 const double velocity[3],
                                                 const double angular_velocity[3],

@@ -320,9 +320,11 @@ static void transfer_drum(io *s, dm_drum *d, int dim)
     io_bool(s, &d->alive);
     if (s->format >= 3) {
         io_u32(s, d->material, 3);
-    } else { /* one material for the whole drum */
+        io_bool(s, &d->shell);
+    } else { /* one material for the whole drum, and its shell */
         io_u32(s, d->material, 1);
         d->material[1] = d->material[2] = d->material[0];
+        d->shell = true;
     }
     io_f64(s, &d->diameter, 1);
     io_f64(s, &d->length, 1);
@@ -865,7 +867,12 @@ static demill_status check_walls(demill_world *t)
                   (wl->kind == DM_WALL_MESH) == (wl->mesh != NULL) &&
                   wl->material < t->nmat && wl->npoly >= 0 && wl->npoly <= DM_MAX_POLY &&
                   finite_wall_ok(t, k);
-        if (wl->parent) {
+        if (dm_wall_attached(wl)) { /* a user's wall, attached to the drum */
+            user++;
+            ok &= d->alive && wl->drum_part <= DM_PART_LIFTER && wl->lifter == -1 &&
+                  (wl->drum_part != DM_PART_CAP || t->dim == 3) && wl->handle < t->wh.n &&
+                  t->wh.slot[wl->handle] == k;
+        } else if (wl->parent) {
             ok &= wl->handle == DM_FREE && !wl->drum_part;
         } else if (wl->drum_part) {
             drum++;
@@ -887,18 +894,20 @@ static demill_status check_walls(demill_world *t)
         materials &= d->material[q] < t->nmat;
     if (drum != d->nwall || (d->nwall && (!d->alive || !materials)))
         return dm_fail(t, DEMILL_ERR_FORMAT, "the drum lists %u walls, %u found", d->nwall, drum);
-    /* a drum's walls are its shell, its end caps (3D) and its lifters in order */
-    const uint32_t caps = t->dim == 3 ? 2 : 0;
-    if (d->alive && d->nwall != 1 + caps + d->nlifters)
+    /* a drum's walls are its shell and its end caps (3D) if it has them, and
+     * its lifters, in order */
+    const uint32_t caps = t->dim == 3 ? 2 : 0, shell = d->shell ? 1 + caps : 0;
+    if (d->alive && d->nwall != shell + d->nlifters)
         return dm_fail(t, DEMILL_ERR_FORMAT, "a drum of %u lifters with %u walls", d->nlifters,
                        d->nwall);
     for (uint32_t q = 0; q < d->nwall; q++) {
         const dm_wall *wl = &t->walls[d->wall_slot[q]];
-        const bool ok = q == 0      ? wl->drum_part == DM_PART_SHELL && wl->kind == DM_WALL_SHELL
-                        : q <= caps ? wl->drum_part == DM_PART_CAP && wl->kind == DM_WALL_PLANE
+        const bool ok = q < shell && q == 0 ? wl->drum_part == DM_PART_SHELL &&
+                                                  wl->kind == DM_WALL_SHELL
+                        : q < shell ? wl->drum_part == DM_PART_CAP && wl->kind == DM_WALL_PLANE
                                     : wl->drum_part == DM_PART_LIFTER &&
                                           wl->kind == DM_WALL_PRISM &&
-                                          wl->lifter == (int)(q - 1 - caps);
+                                          wl->lifter == (int)(q - shell);
         if (!ok || wl->material != d->material[wl->drum_part - 1])
             return dm_fail(t, DEMILL_ERR_FORMAT, "drum wall %u is not the part it should be", q);
     }
@@ -1179,6 +1188,12 @@ DEMILL_API demill_status demill_world_load(demill_world *w, const char *path)
 
 /* ---- listing ids ------------------------------------------------------------ */
 
+/* A wall with an id of its own: free, or attached to the drum. */
+static bool user_wall(const dm_wall *wall)
+{
+    return wall->kind && !wall->parent && (!wall->drum_part || dm_wall_attached(wall));
+}
+
 DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, demill_id *out,
                                           size_t capacity, size_t *count)
 {
@@ -1206,7 +1221,7 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
             n += w->flows.outlets[k].id.alive;
     else
         for (uint32_t k = 0; k < w->nwalls; k++)
-            n += w->walls[k].kind && !w->walls[k].drum_part && !w->walls[k].parent;
+            n += user_wall(&w->walls[k]);
     if (count)
         *count = n;
     if (!out)
@@ -1219,7 +1234,7 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
             out[m] = dm_material_id(w, m);
     } else if (kind == DEMILL_KIND_WALL) {
         for (uint32_t k = 0, q = 0; k < w->nwalls; k++)
-            if (w->walls[k].kind && !w->walls[k].drum_part && !w->walls[k].parent)
+            if (user_wall(&w->walls[k]))
                 out[q++] = dm_wall_id(w, k);
     } else if (kind == DEMILL_KIND_FEED) {
         for (uint32_t k = 0, q = 0; k < w->flows.nfeeds; k++)

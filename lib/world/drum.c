@@ -41,6 +41,7 @@ DEMILL_API demill_status demill_drum_create(demill_world *w, demill_id material,
     d->lifter_face = param_default(DEMILL_DRUM_LIFTER_FACE_ANGLE);
     d->lifter_phase = param_default(DEMILL_DRUM_LIFTER_PHASE);
     d->porosity = param_default(DEMILL_DRUM_FILL_POROSITY);
+    d->shell = param_default(DEMILL_DRUM_SHELL) != 0.0;
     d->sample_interval = (uint32_t)param_default(DEMILL_DRUM_SAMPLE_INTERVAL);
     d->speed_key = DEMILL_DRUM_SPEED;
     d->t_set = w->time;
@@ -65,6 +66,9 @@ DEMILL_API demill_status demill_drum_remove(demill_world *w, demill_id drum)
     if (s)
         return s;
     dm_drum_walls_remove(w);
+    for (uint32_t k = 0; k < w->nwalls; k++)
+        if (w->walls[k].kind && dm_wall_attached(&w->walls[k]))
+            dm_wall_release(w, k);
     dm_spectrum_free(w);
     w->drum.alive = false;
     w->drum_gen++;
@@ -92,6 +96,7 @@ DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_
     switch (key) {
     case DEMILL_DRUM_DIAMETER: d->diameter = value; rebuild = true; break;
     case DEMILL_DRUM_LENGTH: d->length = value; rebuild = true; break;
+    case DEMILL_DRUM_SHELL: d->shell = value != 0.0; rebuild = true; break;
     case DEMILL_DRUM_LIFTERS: dm_drum_even_lifters(d, (uint32_t)value); rebuild = true; break;
     case DEMILL_DRUM_LIFTER_HEIGHT: d->lifter_h = value; rebuild = true; break;
     case DEMILL_DRUM_LIFTER_WIDTH: d->lifter_w = value; rebuild = true; break;
@@ -122,7 +127,7 @@ DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_
     }
     if (rebuild) {
         if (key != DEMILL_DRUM_DIAMETER && key != DEMILL_DRUM_LENGTH && key != DEMILL_DRUM_LIFTERS &&
-            d->even_count)
+            key != DEMILL_DRUM_SHELL && d->even_count)
             dm_drum_even_lifters(d, d->even_count);
         for (uint32_t k = 0; k < d->nlifters && !s; k++)
             s = dm_drum_check_lifter(w, &d->lifters[k], d->diameter);
@@ -199,6 +204,30 @@ DEMILL_API demill_status demill_drum_set_material(demill_world *w, demill_id dru
     return DEMILL_OK;
 }
 
+DEMILL_API demill_status demill_drum_attach_wall(demill_world *w, demill_id drum, demill_id wall,
+                                                 int32_t part)
+{
+    uint32_t slot, wslot;
+    int q = 0;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s || (s = dm_enter(w, wall, DEMILL_KIND_WALL, "wall", &wslot)) ||
+        (s = drum_part(w, part, "drum_attach_wall", &q)))
+        return s;
+    dm_wall *wl = &w->walls[wslot];
+    if (wl->drum_part)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum_attach_wall: the wall is attached to the drum already");
+    if (wl->kind != DM_WALL_PLANE && wl->kind != DM_WALL_MESH)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum_attach_wall: only planes, meshes and polylines turn with the drum "
+                       "(a finite wall cannot be attached yet)");
+    dm_wall_attach(wl, part, w->time, w->drum.theta, w->drum.omega);
+    w->nlist_valid = false;
+    w->forces_valid = false;
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
 DEMILL_API demill_status demill_drum_get_material(demill_world *w, demill_id drum, int32_t part,
                                                   demill_id *out)
 {
@@ -227,6 +256,7 @@ DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_
     switch (key) {
     case DEMILL_DRUM_DIAMETER: *value = d->diameter; break;
     case DEMILL_DRUM_LENGTH: *value = d->length; break;
+    case DEMILL_DRUM_SHELL: *value = d->shell; break;
     case DEMILL_DRUM_LIFTERS:
     case DEMILL_DRUM_LIFTER_COUNT: *value = d->nlifters; break;
     case DEMILL_DRUM_LIFTER_HEIGHT: *value = d->lifter_h; break;

@@ -76,11 +76,11 @@ demill_id dm_particle_id(const demill_world *w, uint32_t storage)
     return dm_id_make(w->tag, DEMILL_KIND_PARTICLE, w->ph.gen[h], h);
 }
 
-/* The id of a wall slot: the wall's own id, the drum's for its walls, a
- * capped wall's for its caps. */
+/* The id of a wall slot: the wall's own id (also when attached to the drum),
+ * the drum's for the walls it built, a capped wall's for its caps. */
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot)
 {
-    if (w->walls[wall_slot].drum_part)
+    if (w->walls[wall_slot].drum_part && !dm_wall_attached(&w->walls[wall_slot]))
         return dm_drum_id(w);
     if (w->walls[wall_slot].parent)
         wall_slot = w->walls[wall_slot].parent - 1;

@@ -462,6 +462,15 @@ DEMILL_API demill_status demill_wall_remove(demill_world *w, demill_id id)
     demill_status s = dm_enter(w, id, DEMILL_KIND_WALL, "wall", &slot);
     if (s)
         return s;
+    dm_wall_release(w, slot);
+    w->ptab_dirty = true;
+    w->forces_valid = false;
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+void dm_wall_release(demill_world *w, uint32_t slot)
+{
     dm_wall *wall = &w->walls[slot];
     for (int q = 0; q < 2; q++)
         if (wall->parts[q]) {
@@ -474,10 +483,6 @@ DEMILL_API demill_status demill_wall_remove(demill_world *w, demill_id id)
     dm_trimesh_free(wall->mesh);
     wall->mesh = NULL;
     wall->kind = 0;
-    w->ptab_dirty = true;
-    w->forces_valid = false;
-    dm_changed(w);
-    return DEMILL_OK;
 }
 
 DEMILL_API demill_status demill_wall_set_motion(demill_world *w, demill_id id,
@@ -498,6 +503,9 @@ DEMILL_API demill_status demill_wall_set_motion(demill_world *w, demill_id id,
         return dm_fail(w, DEMILL_ERR_DIMENSION,
                        "angular_velocity has x or y components but the world is 2D");
     dm_wall *wall = &w->walls[slot];
+    if (wall->drum_part)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "wall_set_motion: the wall is attached to the drum and turns with it");
     dm_wall_rebase(wall, w->time, w->time);
     for (int c = 0; c < 3; c++) {
         if (centre)

@@ -32,6 +32,8 @@ demill_id dm_particle_id(const demill_world *w, uint32_t storage);
 /* The id of a wall slot: the wall's own id, the drum's for its walls, a
  * capped wall's for its caps. */
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
+/* Removes the user's wall in this slot (its contacts, handle and mesh). */
+void dm_wall_release(demill_world *w, uint32_t slot);
 demill_id dm_material_id(const demill_world *w, uint32_t material);
 demill_id dm_drum_id(const demill_world *w);
 demill_id dm_feed_id(const demill_world *w, uint32_t slot);

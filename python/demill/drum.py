@@ -38,6 +38,7 @@ class Drum(Handle, Keyed):
     critical_diameter = Param(DrumKey.CRITICAL_DIAMETER)
     fill_porosity = Param(DrumKey.FILL_POROSITY)
     sample_interval = Param(DrumKey.SAMPLE_INTERVAL, int)
+    shell = Param(DrumKey.SHELL, int)
     critical_speed = Param(DrumKey.CRITICAL_SPEED)
     current_speed = Param(DrumKey.CURRENT_SPEED)
     angle = Param(DrumKey.ANGLE)
@@ -84,6 +85,12 @@ class Drum(Handle, Keyed):
         self.world._call("demill_drum_get_material", self.id, int(DrumPart(part)),
                          ctypes.byref(out))
         return Material(self.world, out.value)
+
+    def attach_wall(self, wall, part):
+        """Makes ``wall`` (a mesh, polyline or plane of this world) a part
+        (:class:`DrumPart`) of the drum: it turns with the drum from where it
+        is now and counts in the drum's torque, power and charge shape."""
+        self.world._call("demill_drum_attach_wall", self.id, as_id(wall), int(DrumPart(part)))
 
     def add_lifter(self, angle, height, width, face_angle=0.0):
         """Adds one lifter: centre line at polar angle ``angle`` (rad, drum

@@ -601,6 +601,53 @@ void dm_mesh_rebase(dm_wall *wall)
     memcpy(m->frame_off, b, sizeof b);
 }
 
+void dm_mesh_into_drum(dm_wall *wall, double theta)
+{
+    dm_mesh_rebase(wall); /* now X = B V + b in the world */
+    dm_trimesh *m = wall->mesh;
+    const double c = cos(theta), s = sin(theta);
+    double B[9], b[3];
+    for (int col = 0; col < 3; col++) { /* B := R(theta)^T B */
+        const double *F = m->frame_rot;
+        B[col] = c * F[col] + s * F[3 + col];
+        B[3 + col] = -s * F[col] + c * F[3 + col];
+        B[6 + col] = F[6 + col];
+    }
+    b[0] = c * m->frame_off[0] + s * m->frame_off[1];
+    b[1] = -s * m->frame_off[0] + c * m->frame_off[1];
+    b[2] = m->frame_off[2];
+    memcpy(m->frame_rot, B, sizeof B);
+    memcpy(m->frame_off, b, sizeof b);
+}
+
+double dm_mesh_axis_distance(const dm_wall *wall, int far)
+{
+    double best = far ? 0.0 : HUGE_VAL, x[3];
+    for (uint32_t k = 0; k < wall->mesh->nv; k++) {
+        dm_mesh_vertex_at(wall, k, x);
+        const double r = hypot(x[0], x[1]);
+        best = far ? fmax(best, r) : fmin(best, r);
+    }
+    return best;
+}
+
+double dm_mesh_widest_angle(const dm_wall *wall)
+{
+    const dm_trimesh *m = wall->mesh;
+    double widest = 0.0;
+    for (uint32_t t = 0; t < m->nt; t++) {
+        double phi[3], x[3];
+        for (int k = 0; k < m->nel; k++) {
+            dm_mesh_vertex_at(wall, m->el[(size_t)m->nel * t + k], x);
+            phi[k] = atan2(x[1], x[0]);
+        }
+        for (int a = 0; a < m->nel; a++)
+            for (int b = a + 1; b < m->nel; b++)
+                widest = fmax(widest, fabs(remainder(phi[a] - phi[b], 2.0 * DM_PI)));
+    }
+    return widest;
+}
+
 /* ---- the geometry pass ----------------------------------------------------------- */
 
 int dm_walls_have_mesh(const demill_world *w)

@@ -158,6 +158,25 @@ static void wall_at_drum(dm_wall *wall, double theta, double omega)
     wall->bc[1] = s * wall->bc0[0] + c * wall->bc0[1];
 }
 
+void dm_wall_attach(dm_wall *wall, int part, double now, double theta, double omega)
+{
+    dm_wall_at(wall, now);
+    if (wall->mesh) {
+        dm_mesh_into_drum(wall, theta);
+        wall->reach = dm_mesh_axis_distance(wall, 1);
+    }
+    const double c = cos(theta), s = sin(theta);
+    const double Rt[9] = {c, s, 0, -s, c, 0, 0, 0, 1}; /* back by the drum's angle */
+    mat_vec(Rt, wall->p, wall->p0);
+    mat_vec(Rt, wall->n, wall->n0);
+    memset(wall->c0, 0, sizeof wall->c0);
+    wall->drum_part = part;
+    wall->lifter = -1;
+    wall_at_drum(wall, theta, omega);
+    memcpy(wall->c_build, wall->c, sizeof wall->c);
+    memcpy(wall->rot_build, wall->rot, sizeof wall->rot);
+}
+
 /* Moves every wall to `time`; the drum's walls to the drum's angle and speed,
  * which the drum has been moved to (dm_drum_advance). */
 void dm_walls_advance(demill_world *w, double time)
@@ -424,10 +443,10 @@ void dm_walls_mark_built(demill_world *w)
  * last neighbour build: |Δc| + θ × reach, the reach of a free plane being the
  * distance from its centre to the far corner of the particles' box (widened
  * by the skin), of a lifter its outermost vertex, of a mesh a sphere about
- * it, of a finite wall the far side of its bounding sphere, and zero for the
- * shell and end caps, which the drum's rotation does not move. A harmonic
- * motion moves the pose (c and rot) as a rigid one does, so the same bound
- * sees it. */
+ * it (turning with the drum: its farthest vertex from the axis), of a finite
+ * wall the far side of its bounding sphere, and zero for the shell and end
+ * caps, which the drum's rotation does not move. A harmonic motion moves the
+ * pose (c and rot) as a rigid one does, so the same bound sees it. */
 double dm_walls_max_shift(const demill_world *w)
 {
     double worst = 0.0;
@@ -441,7 +460,7 @@ double dm_walls_max_shift(const demill_world *w)
             double d = wall->c[c] - wall->c_build[c];
             dc2 += d * d;
         }
-        if (wall->kind == DM_WALL_PLANE && !wall->drum_part) {
+        if (wall->kind == DM_WALL_PLANE && (!wall->drum_part || dm_wall_attached(wall))) {
             double reach2 = 0.0;
             for (int c = 0; c < 3; c++) {
                 double far =
@@ -456,7 +475,7 @@ double dm_walls_max_shift(const demill_world *w)
                 reach2 += (b[c] - wall->c[c]) * (b[c] - wall->c[c]);
             reach = sqrt(reach2) + wall->brad;
         }
-        if (wall->mesh)
+        if (wall->mesh && !wall->drum_part) /* (turning with the drum: its axial reach) */
             reach = dm_mesh_reach(wall);
         /* angle of rot · rot_build^T from its trace */
         double tr = 0.0;

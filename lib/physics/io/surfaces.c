@@ -358,7 +358,7 @@ static void walls_mesh(dm_mesh *m, const demill_world *w)
         m->cur_wall = k;
         m->cur_part = wall->drum_part;
         m->cur_lifter = wall->drum_part == DM_PART_LIFTER ? wall->lifter : -1;
-        switch (wall->drum_part) {
+        switch (dm_wall_attached(wall) ? DM_PART_NONE : wall->drum_part) {
         case DM_PART_SHELL: shell(m, w); break;
         case DM_PART_CAP: end_cap(m, w, wall); break;
         case DM_PART_LIFTER: lifter(m, w, wall); break;

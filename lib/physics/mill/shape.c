@@ -3,7 +3,9 @@
  *
  * Angles φ are measured at the axis from the downward vertical, positive in
  * the direction of rotation. The particles in the ring R - h - 2d < r < R next
- * to the shell (h the tallest lifter, d the largest particle diameter) are
+ * to the shell (h the tallest lifter, or the deepest lifter mesh attached to
+ * the drum: R less its vertices' smallest distance from the axis; d the
+ * largest particle diameter) are
  * summed in 5° bins of φ, each by its volume relative to the largest
  * particle's ((r/r_max)³, in 2D its area (r/r_max)²), so that a bin holds how
  * much of the ring is solid: exactly a count, as in the reference rule, when
@@ -14,7 +16,9 @@
  * of consecutive charge bins (around the circle) is the charge, its lower
  * edge the toe and its upper edge the shoulder. A lifter takes room from its
  * bins, which with coarse particles can drop them below the threshold and
- * cut the charge in pieces, so gaps no wider than a lifter (in bins) with
+ * cut the charge in pieces, so gaps no wider than a lifter (in bins; a
+ * lifter mesh's width is the arc at R of the widest angle one of its
+ * triangles spans about the axis) with
  * charge bins on both sides count as charge; for fine charges this changes
  * nothing. The centre-of-mass angle is φ of the mass-weighted centre of all
  * particles. */
@@ -23,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "physics/geometry/geometry.h"
 #include "physics/mill/mill.h"
 
 static int cmp_desc(const void *a, const void *b)
@@ -49,6 +54,11 @@ void dm_charge_shape(const demill_world *w, double angles[3])
     double hmax = 0.0, dmax = 0.0, mx = 0.0, my = 0.0, mass = 0.0;
     for (uint32_t k = 0; k < d->nlifters; k++)
         hmax = fmax(hmax, d->lifters[k].height);
+    for (uint32_t k = 0; k < w->nwalls; k++) { /* lifters attached as meshes: their depth */
+        const dm_wall *wall = &w->walls[k];
+        if (wall->kind && wall->mesh && wall->drum_part == DM_PART_LIFTER)
+            hmax = fmax(hmax, 0.5 * d->diameter - dm_mesh_axis_distance(wall, 0));
+    }
     for (uint32_t i = 0; i < P->n; i++) {
         dmax = fmax(dmax, 2.0 * P->r[i]);
         mx += P->m[i] * P->x[D * i];
@@ -79,6 +89,11 @@ void dm_charge_shape(const demill_world *w, double angles[3])
     double lifter_width = 0.0;
     for (uint32_t k = 0; k < d->nlifters; k++)
         lifter_width = fmax(lifter_width, d->lifters[k].width);
+    for (uint32_t k = 0; k < w->nwalls; k++) { /* a lifter mesh: its widest element's arc */
+        const dm_wall *wall = &w->walls[k];
+        if (wall->kind && wall->mesh && wall->drum_part == DM_PART_LIFTER)
+            lifter_width = fmax(lifter_width, R * dm_mesh_widest_angle(wall));
+    }
     const int gap = (int)ceil(lifter_width / R / width);
     for (int b = 0; b < DM_SHAPE_BINS; b++) {
         if (raw[b])

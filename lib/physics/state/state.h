@@ -154,6 +154,12 @@ enum {
 enum { DM_HARMONIC_TRANSLATE = 1, DM_HARMONIC_ROTATE = 2 };
 /* The drum's parts, numbered as DEMILL_DRUM_PART_* */
 enum { DM_PART_NONE = 0, DM_PART_SHELL = 1, DM_PART_CAP = 2, DM_PART_LIFTER = 3 };
+/* Whether a wall of the drum is one a user attached to it (it keeps its own
+ * handle, demill_drum_attach_wall) rather than one the drum built. */
+static inline bool dm_wall_attached(const dm_wall *wall)
+{
+    return wall->drum_part && wall->handle != DM_FREE;
+}
 
 /* ---- particles (state/particles.c) ------------------------------------- */
 /* Structure of arrays in storage order (sorted by cell at each neighbour
@@ -297,6 +303,7 @@ typedef struct dm_drum {
     uint32_t material[3];   /* material slot of each part: shell, caps, lifters
                                (index DM_PART_* - 1) */
     double diameter, length, porosity;
+    bool shell;             /* the analytic shell and caps (DEMILL_DRUM_SHELL) */
     /* the evenly spaced lifters, and the lifters in use */
     uint32_t even_count;
     double lifter_h, lifter_w, lifter_face, lifter_phase;
