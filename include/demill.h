@@ -43,6 +43,7 @@
 #include "demill/body.h"
 #include "demill/query.h"
 #include "demill/drum.h"
+#include "demill/insert.h"
 #include "demill/state.h"
 #include "demill/vtk.h"
 #include "demill/grinding.h"

@@ -147,7 +147,9 @@ enum {
     DEMILL_KIND_PARTICLE = 2, /**< a particle (demill_particles_add()) */
     DEMILL_KIND_WALL = 3,     /**< a wall (demill_wall_add_plane()) */
     DEMILL_KIND_DRUM = 4,     /**< a drum (demill_drum_create()) */
-    DEMILL_KIND_BODY = 5      /**< a body (demill_body_add()) */
+    DEMILL_KIND_FEED = 5,     /**< a feed (demill_feed_create()) */
+    DEMILL_KIND_OUTLET = 6,   /**< an outlet (demill_outlet_create()) */
+    DEMILL_KIND_BODY = 7      /**< a body (demill_body_add()) */
 };
 
 /** The kind of object an id names, without checking that the object still

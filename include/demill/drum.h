@@ -65,6 +65,13 @@ enum {
     /** Steps between samples of the charge shape for the per-revolution means,
      *  >= 1. Default 100. */
     DEMILL_DRUM_SAMPLE_INTERVAL = 416,
+    /** Whether the drum has its analytic shell and end caps, 1 or 0.
+     *  Default 1. With 0 the drum's walls are only its analytic lifters, if
+     *  any, and the walls attached to it (demill_drum_attach_wall()): a drum
+     *  built from an STL of its shell, caps and lifters. The diameter stays
+     *  the drum's: the critical speed, the charge-shape ring and the fill
+     *  region use it. */
+    DEMILL_DRUM_SHELL = 417,
 
     /** Critical speed ω_c = √(2 g / (D - d)), rad/s, with g the magnitude of
      *  the gravity vector. */
@@ -118,7 +125,23 @@ enum {
      *  completed revolution, W (NaN before the first). */
     DEMILL_DRUM_DISSIPATION_MEAN = 467,
     /** Number of lifters. */
-    DEMILL_DRUM_LIFTER_COUNT = 468
+    DEMILL_DRUM_LIFTER_COUNT = 468,
+    /** x component of the force the particles exert on the drum (shell,
+     *  caps and lifters) at the last force evaluation, N: with the y and z
+     *  components, the load the drum's bearings carry from the charge. */
+    DEMILL_DRUM_FORCE_X = 469,
+    /** y component of the force on the drum (see DEMILL_DRUM_FORCE_X), N. */
+    DEMILL_DRUM_FORCE_Y = 470,
+    /** z component of the force on the drum (see DEMILL_DRUM_FORCE_X), N. */
+    DEMILL_DRUM_FORCE_Z = 471
+};
+
+/** Parts of the drum, each with a material of its own
+ *  (demill_drum_set_material()). */
+enum {
+    DEMILL_DRUM_PART_SHELL = 1,  /**< the cylindrical shell */
+    DEMILL_DRUM_PART_CAPS = 2,   /**< the two flat end caps (3D only) */
+    DEMILL_DRUM_PART_LIFTERS = 3 /**< every lifter */
 };
 
 /** Lifter fields (demill_drum_lifter_get()). */
@@ -209,6 +232,55 @@ DEMILL_API demill_status demill_drum_set(demill_world *world, demill_id drum, in
 DEMILL_API demill_status demill_drum_get(demill_world *world, demill_id drum, int32_t key,
                                          double *value);
 
+/** Gives a part of the drum a material of its own: rubber lifters in a
+ *  steel shell, say. demill_drum_create() gives every part its material.
+ *  Contacts with the part's walls start afresh (their history is dropped),
+ *  as the pair of materials, and with it the contact model, changes.
+ *  @param world    the world.
+ *  @param drum     the drum's id.
+ *  @param part     the part, DEMILL_DRUM_PART_*.
+ *  @param material the part's new material.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY (no
+ *          such part) or DEMILL_ERR_DIMENSION (the caps of a 2D drum). */
+DEMILL_API demill_status demill_drum_set_material(demill_world *world, demill_id drum,
+                                                  int32_t part, demill_id material);
+
+/** Reads the material of a part of the drum.
+ *  @param world    the world.
+ *  @param drum     the drum's id.
+ *  @param part     the part, DEMILL_DRUM_PART_*.
+ *  @param[out] out receives the material's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_UNKNOWN_KEY or DEMILL_ERR_DIMENSION. */
+DEMILL_API demill_status demill_drum_get_material(demill_world *world, demill_id drum,
+                                                  int32_t part, demill_id *out);
+
+/** Makes a wall (a mesh, a polyline or a plane) a part of the drum: from
+ *  now on it turns with the drum, its own motion replaced. Its geometry is
+ *  taken where it is now, at the drum's current angle, so nothing jumps.
+ *  It counts in everything the drum reports: torque, power, the force on
+ *  the drum, energy in and dissipated, the collision spectrum's row of its
+ *  part (shell and caps, or lifters) and, as part DEMILL_DRUM_PART_LIFTERS,
+ *  the charge shape (a lifter mesh's depth, the drum's radius less its
+ *  vertices' smallest distance from the axis, widens the ring next to the
+ *  shell as the tallest lifter's height does). It is not one of the
+ *  analytic lifters of demill_drum_lifter_get(). It keeps its own material
+ *  and its id: demill_wall_remove() removes it, demill_wall_set_motion()
+ *  refuses it, and demill_drum_remove() removes it with the drum. VTK
+ *  output draws it with the drum's part.
+ *  @param world the world.
+ *  @param drum  the drum's id.
+ *  @param wall  the wall's id (of this world, not yet attached).
+ *  @param part  the part it becomes, DEMILL_DRUM_PART_*.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (a drum or wall id that is
+ *          not valid in this world, the drum's id given as the wall),
+ *          DEMILL_ERR_UNKNOWN_KEY (no such part), DEMILL_ERR_DIMENSION (the
+ *          caps of a 2D drum) or DEMILL_ERR_INVALID_VALUE (the wall is
+ *          attached already, to the drum or to a body, or is a finite
+ *          wall: only planes, meshes and polylines can be attached). */
+DEMILL_API demill_status demill_drum_attach_wall(demill_world *world, demill_id drum,
+                                                 demill_id wall, int32_t part);
+
 /** Adds one lifter to the drum.
  *  @param world      the world.
  *  @param drum       the drum's id.
@@ -239,12 +311,16 @@ DEMILL_API demill_status demill_drum_lifter_get(demill_world *world, demill_id d
 
 /** Fills the drum with particles of one material: sizes from a distribution
  *  (DEMILL_SIZES_*, with `params`), as many as the target (DEMILL_FILL_*,
- *  `value`) asks. Particles are placed on a jittered lattice of the largest
- *  diameter inside the drum, from the bottom up, clear of the walls and of
- *  every particle already there; the placement depends only on the
- *  arguments, the drum and the particles already present, so the same call
- *  gives the same charge. Call it once per material (balls, then ore), then
- *  let the charge settle (demill_world_settle()).
+ *  `value`) asks. It is demill_fill_region() (demill/insert.h) with the
+ *  region DEMILL_REGION_DRUM: particles are placed one at a time, in a
+ *  seeded random order of sizes, each at the lowest free place among random
+ *  candidates in a layer that rises from the bottom of the drum as it fills,
+ *  clear of the walls and of every particle already there, so that wide
+ *  size distributions (a 50/50 charge of 10 and 20 mm balls, the 285 balls
+ *  of Bond's test) fill as readily as one size. The placement depends only
+ *  on the arguments, the drum and the particles already present, so the
+ *  same call gives the same charge. Call it once per material (balls, then
+ *  ore), then let the charge settle (demill_world_settle()).
  *  @param world        the world.
  *  @param drum         the drum's id.
  *  @param material     the particles' material.
@@ -262,9 +338,8 @@ DEMILL_API demill_status demill_drum_lifter_get(demill_world *world, demill_id d
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER,
  *          DEMILL_ERR_UNKNOWN_KEY, DEMILL_ERR_NOT_FINITE,
  *          DEMILL_ERR_INVALID_VALUE (bad distribution or target; a target
- *          of more particles than a world holds, about 1.07e9; particles so
- *          small against the drum that the placement lattice has more than
- *          2^30 sites; the charge does not fit: nothing is added),
+ *          of more particles than a world holds, about 1.07e9; the charge
+ *          does not fit: nothing is added),
  *          DEMILL_ERR_BUFFER_TOO_SMALL or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_drum_fill(demill_world *world, demill_id drum, demill_id material,
                                           int32_t distribution, const double *params,

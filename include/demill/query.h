@@ -75,22 +75,28 @@ enum {
     DEMILL_ENERGY_POTENTIAL = 3,             /**< gravitational, -Σ m g·x (zero at the origin) */
     DEMILL_ENERGY_ELASTIC_NORMAL = 4,        /**< stored in normal springs: k δ²/2 or 8/15 E* √R* δ^{5/2} */
     DEMILL_ENERGY_ELASTIC_TANGENTIAL = 5,    /**< stored in tangential springs: k_t |ξ|²/2 */
-    DEMILL_ENERGY_WALL_WORK = 6,             /**< work done on the particles by moving walls (but the walls of bodies, whose energy terms 13 to 17 hold) */
+    DEMILL_ENERGY_WALL_WORK = 6,             /**< work done on the particles by moving walls (but the walls of bodies, whose energy terms 14 to 18 hold) */
     DEMILL_ENERGY_DISSIPATED_NORMAL = 7,     /**< by normal damping (and by the normal-force clamp) */
     DEMILL_ENERGY_DISSIPATED_TANGENTIAL = 8, /**< by the tangential dashpot and the Coulomb regularisation below the cap */
     DEMILL_ENERGY_DISSIPATED_FRICTION = 9,   /**< by sliding friction (slip at the Coulomb cap) */
     DEMILL_ENERGY_DISSIPATED_ROLLING = 10,   /**< by rolling resistance */
     DEMILL_ENERGY_DISSIPATED = 11,           /**< sum of terms 7 to 10 */
-    /** Balance: kinetic + potential + elastic + dissipated - wall work,
-     *  with the bodies' terms: + 13 + 14 + 15 + 16 - 17. It
-     *  stays constant up to integration error between changes made through
-     *  the API (adding, removing or writing particles or bodies). */
+    /** Balance: kinetic + potential + elastic + dissipated - wall work -
+     *  DEMILL_ENERGY_FLOW, with the bodies' terms: + 14 + 15 + 16 + 17 -
+     *  18. It stays constant up to integration error between changes made
+     *  through the API (adding, removing or writing particles or bodies); an
+     *  outlet also takes out the elastic energy of the contacts of the
+     *  particles it removes, which it does not count. */
     DEMILL_ENERGY_TOTAL = 12,
-    DEMILL_ENERGY_BODY_KINETIC = 13,    /**< of the bodies (demill/body.h): Σ 1/2 m v² */
-    DEMILL_ENERGY_BODY_ELASTIC = 14,    /**< stored in the bodies' springs: Σ 1/2 k (x - rest)² */
-    DEMILL_ENERGY_BODY_POTENTIAL = 15,  /**< the bodies' gravitational energy, -Σ m g·x (bodies gravity acts on) */
-    DEMILL_ENERGY_BODY_DISSIPATED = 16, /**< by the bodies' dampers */
-    DEMILL_ENERGY_BODY_WORK = 17        /**< done on the bodies by their external forces */
+    /** Brought in by feeds less taken out by outlets: the kinetic and
+     *  potential energy of the particles they inserted and removed, at the
+     *  moment they did (demill/insert.h). */
+    DEMILL_ENERGY_FLOW = 13,
+    DEMILL_ENERGY_BODY_KINETIC = 14,    /**< of the bodies (demill/body.h): Σ 1/2 m v² */
+    DEMILL_ENERGY_BODY_ELASTIC = 15,    /**< stored in the bodies' springs: Σ 1/2 k (x - rest)² */
+    DEMILL_ENERGY_BODY_POTENTIAL = 16,  /**< the bodies' gravitational energy, -Σ m g·x (bodies gravity acts on) */
+    DEMILL_ENERGY_BODY_DISSIPATED = 17, /**< by the bodies' dampers */
+    DEMILL_ENERGY_BODY_WORK = 18        /**< done on the bodies by their external forces */
 };
 
 /** Reads one energy term of the world. The terms that include the energy

@@ -85,6 +85,7 @@ static const param_info params[] = {
     {DEMILL_DRUM_CRITICAL_DIAMETER, "drum.critical_diameter", "m", 0, 1e6, 0, 0},
     {DEMILL_DRUM_FILL_POROSITY, "drum.fill_porosity", "1", 0, 0.9, 0.4, 0},
     {DEMILL_DRUM_SAMPLE_INTERVAL, "drum.sample_interval", "1", 1, 1e9, 100, WHOLE},
+    {DEMILL_DRUM_SHELL, "drum.shell", "1", 0, 1, 1, WHOLE},
     {DEMILL_DRUM_CRITICAL_SPEED, "drum.critical_speed", "rad/s", 0, 1e300, 0, READ_ONLY},
     {DEMILL_DRUM_CURRENT_SPEED, "drum.current_speed", "rad/s", -1e300, 1e300, 0, READ_ONLY},
     {DEMILL_DRUM_ANGLE, "drum.angle", "rad", -1e300, 1e300, 0, READ_ONLY},
@@ -104,6 +105,9 @@ static const param_info params[] = {
     {DEMILL_DRUM_ENERGY_DISSIPATED, "drum.energy_dissipated", "J", 0, 1e300, 0, READ_ONLY},
     {DEMILL_DRUM_DISSIPATION_MEAN, "drum.dissipation_mean", "W", -1e300, 1e300, 0, READ_ONLY},
     {DEMILL_DRUM_LIFTER_COUNT, "drum.lifter_count", "1", 0, 64, 0, WHOLE | READ_ONLY},
+    {DEMILL_DRUM_FORCE_X, "drum.force_x", "N", -1e300, 1e300, 0, READ_ONLY},
+    {DEMILL_DRUM_FORCE_Y, "drum.force_y", "N", -1e300, 1e300, 0, READ_ONLY},
+    {DEMILL_DRUM_FORCE_Z, "drum.force_z", "N", -1e300, 1e300, 0, READ_ONLY},
 };
 
 static const param_info *find(int32_t key)

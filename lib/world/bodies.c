@@ -63,7 +63,7 @@ DEMILL_API demill_status demill_body_remove(demill_world *w, demill_id id)
         return s;
     for (uint32_t k = 0; k < w->nwalls; k++)
         if (w->walls[k].kind && w->walls[k].body == slot + 1)
-            dm_wall_detach(w, &w->walls[k]);
+            dm_wall_detach_body(w, &w->walls[k]);
     dm_handles_release(&w->bh, w->bodies[slot].handle);
     w->bodies[slot].handle = DM_FREE;
     w->forces_valid = false;
@@ -156,13 +156,28 @@ DEMILL_API demill_status demill_body_attach_wall(demill_world *w, demill_id id, 
                        "body_attach_wall: wall 0x%llx is attached to body 0x%llx already",
                        (unsigned long long)wall_id,
                        (unsigned long long)dm_body_id(w, wall->body - 1));
+    if (wall->drum_part)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "body_attach_wall: wall 0x%llx is attached to the drum and turns with "
+                       "it; it cannot also move with a body",
+                       (unsigned long long)wall_id);
+    if (wall->parts[0] || wall->parts[1])
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "body_attach_wall: wall 0x%llx is a finite wall with caps, which a "
+                       "body does not move; attach a wall without caps",
+                       (unsigned long long)wall_id);
+    if (wall->harmonic)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "body_attach_wall: wall 0x%llx moves harmonically "
+                       "(demill_wall_set_harmonic); only a wall at rest can be attached",
+                       (unsigned long long)wall_id);
     for (int c = 0; c < 3; c++)
         if (wall->vel[c] != 0.0 || wall->omega[c] != 0.0)
             return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                            "body_attach_wall: wall 0x%llx moves (demill_wall_set_motion); "
                            "only a wall at rest can be attached",
                            (unsigned long long)wall_id);
-    dm_wall_attach(w, wall, slot);
+    dm_wall_attach_body(w, wall, slot);
     w->forces_valid = false;
     dm_changed(w);
     return DEMILL_OK;

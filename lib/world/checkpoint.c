@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "demill/insert.h"
 #include "world/world.h"
 
 /* ---- snapshots -------------------------------------------------------------- */
@@ -91,7 +92,10 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 #define CK_MAGIC "DEMILLCK"
 #define CK_FORMAT 3u          /* the format this library writes and the newest it reads;
                                  2 adds the impacts on an ore to the drum's spectrum,
-                                 3 the bodies (section BODY) */
+                                 3 a material per part of the drum, the walls'
+                                 meshes (section MESH), the feeds and outlets (FLOW),
+                                 the finite walls, harmonic motion and surface
+                                 velocity (WFIN), the bodies (BODY) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -295,10 +299,33 @@ static void transfer_wall(io *s, dm_wall *wl)
         io_f64(s, f[k], len[k]);
 }
 
+/* A wall's finite shape, its caps, its harmonic motion and its surface
+ * velocity (format 3). */
+static void transfer_wall_finite(io *s, dm_wall *wl)
+{
+    io_int(s, &wl->own);
+    io_u32(s, &wl->parent, 1);
+    io_u32(s, wl->parts, 2);
+    io_int(s, &wl->harmonic);
+    io_int(s, &wl->surface);
+    double *const f[] = {wl->seg,   wl->nb,     wl->e0,      &wl->bh,   wl->h_axis,
+                         &wl->h_amp, &wl->h_freq, &wl->h_phase, &wl->h_t0, wl->surf0};
+    const size_t len[] = {4, 4, 3, 1, 3, 1, 1, 1, 1, 3};
+    for (size_t k = 0; k < sizeof len / sizeof *len; k++)
+        io_f64(s, f[k], len[k]);
+}
+
 static void transfer_drum(io *s, dm_drum *d, int dim)
 {
     io_bool(s, &d->alive);
-    io_u32(s, &d->material, 1);
+    if (s->format >= 3) {
+        io_u32(s, d->material, 3);
+        io_bool(s, &d->shell);
+    } else { /* one material for the whole drum, and its shell */
+        io_u32(s, d->material, 1);
+        d->material[1] = d->material[2] = d->material[0];
+        d->shell = true;
+    }
     io_f64(s, &d->diameter, 1);
     io_f64(s, &d->length, 1);
     io_f64(s, &d->porosity, 1);
@@ -376,6 +403,68 @@ static void transfer_drum(io *s, dm_drum *d, int dim)
     io_array(s, &sp->counts, counters, counters, sizeof *sp->counts);
 }
 
+/* A time that may be infinite (a feed's stop), but not NaN. */
+static void io_time(io *s, double *v)
+{
+    io_bytes(s, v, sizeof *v);
+    if (!s->status && isnan(*v))
+        io_fail(s, s->reading ? DEMILL_ERR_FORMAT : DEMILL_ERR_UNSTABLE,
+                "section %s: a time is NaN", s->section);
+}
+
+static void transfer_region(io *s, dm_region *r)
+{
+    io_int(s, &r->kind);
+    io_f64(s, r->p, 7);
+}
+
+/* The feeds and outlets (format 3). */
+static void transfer_flows(io *s, dm_flows *f)
+{
+    io_section(s, "FLOW");
+    io_count(s, &f->nfeeds, DM_MAX_FEEDS, "feeds");
+    io_count(s, &f->noutlets, DM_MAX_OUTLETS, "outlets");
+    io_u32(s, &f->live, 1);
+    io_f64(s, &f->energy, 1);
+    for (uint32_t k = 0; k < f->nfeeds && !s->status; k++) {
+        dm_feed *e = &f->feeds[k];
+        io_bool(s, &e->id.alive);
+        io_u16(s, &e->id.gen);
+        io_u32(s, &e->material, 1);
+        transfer_region(s, &e->region);
+        io_count(s, &e->sizes.n, DM_SIZE_CLASSES, "feed size classes");
+        io_f64(s, e->sizes.lo, DM_SIZE_CLASSES);
+        io_f64(s, e->sizes.hi, DM_SIZE_CLASSES);
+        io_f64(s, e->sizes.fraction, DM_SIZE_CLASSES);
+        io_f64(s, e->number, DM_SIZE_CLASSES);
+        io_f64(s, &e->rate, 1);
+        io_f64(s, e->vel, 3);
+        io_f64(s, &e->t_start, 1);
+        io_time(s, &e->t_stop);
+        for (int q = 0; q < 4; q++)
+            io_u64(s, &e->rng.s[q]);
+        io_f64(s, &e->next_d, 1);
+        io_f64(s, &e->mass, 1);
+        io_u64(s, &e->count);
+    }
+    for (uint32_t k = 0; k < f->noutlets && !s->status; k++) {
+        dm_outlet *o = &f->outlets[k];
+        io_bool(s, &o->id.alive);
+        io_u16(s, &o->id.gen);
+        transfer_region(s, &o->region);
+        io_count(s, &o->nedges, DM_OUTLET_CLASSES - 1, "outlet class edges");
+        io_f64(s, o->edges, DM_OUTLET_CLASSES - 1);
+        for (int q = 0; q < DM_OUTLET_CLASSES; q++)
+            io_u64(s, &o->count[q]);
+        io_f64(s, o->mass, DM_OUTLET_CLASSES);
+        double *const v[] = {&o->interval, &o->t_next, &o->interval_mass, &o->last_mass};
+        for (int q = 0; q < 4; q++)
+            io_f64(s, v[q], 1);
+        io_u64(s, &o->interval_count);
+        io_u64(s, &o->last_count);
+    }
+}
+
 /* A contact list: its kernel's history slots, and one more for the
  * collision spectrum while one is recorded (events); after the spectrum was
  * started or stopped the lists keep their old layout until they are rebuilt
@@ -398,6 +487,62 @@ static void transfer_bucket(io *s, dm_bucket *b, int kernel, int dim, bool event
     io_array(s, &b->j, b->n, b->n, sizeof *b->j);
     io_array(s, &b->on, b->n, b->n, sizeof *b->on);
     io_f64_array(s, &b->hist, (size_t)b->n * hs, (size_t)b->n * hs);
+}
+
+/* The meshes of the mesh walls (their vertices, elements and frame; the rest
+ * is built again from them, as when they were added) and the mesh element
+ * of every particle-wall pair; before format 3, no mesh and elements 0. */
+static void transfer_meshes(io *s, demill_world *w)
+{
+    if (s->format < 3) {
+        for (int k = 0; k < DM_KERNELS && s->reading && !s->status; k++) {
+            dm_bucket *b = &w->pw.b[k];
+            if (!(b->t = calloc(b->n ? b->n : 1, sizeof *b->t)))
+                io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory");
+        }
+        return;
+    }
+    io_section(s, "MESH");
+    for (uint32_t k = 0; k < w->nwalls && !s->status; k++) {
+        dm_wall *wl = &w->walls[k];
+        if (wl->kind != DM_WALL_MESH)
+            continue;
+        dm_trimesh none = {.nel = w->dim}, *m = s->reading ? &none : wl->mesh;
+        uint32_t nel = (uint32_t)m->nel;
+        io_u32(s, &nel, 1);
+        if (s->reading && !s->status && nel != (uint32_t)w->dim)
+            io_fail(s, DEMILL_ERR_FORMAT, "wall %u: a mesh of %u-vertex elements in a %dD world",
+                    k, nel, w->dim);
+        io_count(s, &m->nv, UINT32_MAX, "mesh vertices");
+        io_count(s, &m->nt, UINT32_MAX / 3, "mesh elements");
+        if (s->reading && !s->status && !m->nt)
+            io_fail(s, DEMILL_ERR_FORMAT, "wall %u: a mesh without elements", k);
+        io_f64_array(s, &m->v, 3 * (size_t)m->nv, 3 * (size_t)m->nv);
+        io_array(s, &m->el, (size_t)nel * m->nt, (size_t)nel * m->nt, sizeof *m->el);
+        io_f64(s, m->frame_rot, 9);
+        io_f64(s, m->frame_off, 3);
+        if (!s->reading)
+            continue;
+        for (size_t q = 0; q < (size_t)nel * m->nt && !s->status; q++)
+            if (m->el[q] >= m->nv)
+                io_fail(s, DEMILL_ERR_FORMAT, "wall %u: element %zu names vertex %u of %u", k,
+                        q / nel, m->el[q], m->nv);
+        for (size_t t = 0; t < m->nt && !s->status; t++)
+            if (dm_trimesh_degenerate((int)nel, m->v, m->el, t))
+                io_fail(s, DEMILL_ERR_FORMAT, "wall %u: element %zu is degenerate", k, t);
+        if (!s->status && !(wl->mesh = dm_trimesh_build((int)nel, m->nv, m->v, m->nt, m->el)))
+            io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory");
+        if (!s->status) {
+            memcpy(wl->mesh->frame_rot, m->frame_rot, sizeof m->frame_rot);
+            memcpy(wl->mesh->frame_off, m->frame_off, sizeof m->frame_off);
+        }
+        free(m->v);
+        free(m->el);
+    }
+    for (int k = 0; k < DM_KERNELS && !s->status; k++) {
+        dm_bucket *b = &w->pw.b[k];
+        io_array(s, &b->t, b->n, b->n, sizeof *b->t);
+    }
 }
 
 /* The bodies, and which walls are attached to which body. */
@@ -525,6 +670,11 @@ static void transfer(io *s, demill_world *w)
     for (uint32_t k = 0; k < w->nwalls && !s->status; k++)
         transfer_wall(s, &w->walls[k]);
     transfer_handles(s, &w->wh, "wall handles");
+    if (s->format >= 3) {
+        io_section(s, "WFIN");
+        for (uint32_t k = 0; k < w->nwalls && !s->status; k++)
+            transfer_wall_finite(s, &w->walls[k]);
+    }
 
     io_section(s, "DRUM");
     io_u16(s, &w->drum_gen);
@@ -535,6 +685,9 @@ static void transfer(io *s, demill_world *w)
         for (int k = 0; k < DM_KERNELS; k++)
             transfer_bucket(s, side ? &w->pw.b[k] : &w->pp.b[k], k, w->dim, w->events,
                             w->nlist_valid);
+    transfer_meshes(s, w);
+    if (s->format >= 3)
+        transfer_flows(s, &w->flows);
     if (s->format >= 3) {
         io_section(s, "BODY");
         transfer_bodies(s, w);
@@ -543,6 +696,48 @@ static void transfer(io *s, demill_world *w)
 }
 
 /* ---- checking what was read ------------------------------------------------- */
+
+/* Feeds and outlets as their API makes them: a region the API would take,
+ * sizes, rates and classes in their bounds, the live count right. */
+static demill_status check_flows(demill_world *t)
+{
+    const dm_flows *f = &t->flows;
+    uint32_t live = 0;
+    for (uint32_t k = 0; k < f->nfeeds + f->noutlets; k++) {
+        const bool feed = k < f->nfeeds;
+        const dm_feed *e = feed ? &f->feeds[k] : NULL;
+        const dm_outlet *o = feed ? NULL : &f->outlets[k - f->nfeeds];
+        const dm_flow_slot id = feed ? e->id : o->id;
+        const dm_region *r = feed ? &e->region : &o->region;
+        dm_region parsed;
+        bool ok = id.alive || id.gen > 0;
+        live += id.alive;
+        if (id.alive) {
+            ok &= dm_region_parse(t, "checkpoint", r->kind, r->p,
+                                  r->kind == DEMILL_REGION_DRUM ? 0
+                                  : r->kind == DEMILL_REGION_CYLINDER ? 7 : 6,
+                                  feed, &parsed) == DEMILL_OK;
+            if (feed) {
+                ok &= e->material < t->nmat && e->sizes.n >= 1 && e->rate > 0.0 &&
+                      e->t_stop > e->t_start && e->next_d > 0.0 && e->mass >= 0.0;
+                for (uint32_t q = 0; q < e->sizes.n; q++)
+                    ok &= e->sizes.lo[q] > 0.0 && e->sizes.hi[q] >= e->sizes.lo[q] &&
+                          e->number[q] >= 0.0 && e->number[q] <= 1.0;
+            } else {
+                ok &= o->interval > 0.0;
+                for (uint32_t q = 0; q < o->nedges; q++)
+                    ok &= o->edges[q] > (q ? o->edges[q - 1] : 0.0);
+            }
+        }
+        if (!ok)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "%s %u is inconsistent", feed ? "feed" : "outlet",
+                           feed ? k : k - f->nfeeds);
+    }
+    if (live != f->live)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "%u feeds and outlets alive, %u counted", live,
+                       f->live);
+    return DEMILL_OK;
+}
 
 /* Checks a value against the bounds demill_*_set() would check; read-only
  * keys pass. */
@@ -660,6 +855,49 @@ static demill_status check_particles(demill_world *t)
     return DEMILL_OK;
 }
 
+/* A wall's finite shape, caps and motions are what the API makes: a unit
+ * axis or normal (and a rectangle's unit direction in its plane); a cap
+ * names a live wall that names it back, shares its kind and material; a
+ * harmonic motion has a unit axis and a positive frequency; every value is
+ * finite. */
+static bool finite_wall_ok(const demill_world *t, uint32_t k)
+{
+    const dm_wall *wl = &t->walls[k];
+    const double v[] = {wl->bh, wl->h_amp, wl->h_freq, wl->h_phase, wl->h_t0};
+    bool ok = all_finite(wl->seg, 4) && all_finite(wl->nb, 4) && all_finite(wl->e0, 3) &&
+              all_finite(v, 5) && all_finite(wl->h_axis, 3) && all_finite(wl->surf0, 3) &&
+              wl->own >= 0 && wl->own <= 3 && (wl->surface == 0 || wl->surface == 1) &&
+              wl->harmonic >= 0 && wl->harmonic <= DM_HARMONIC_ROTATE;
+    if (wl->harmonic) {
+        const double *a = wl->h_axis;
+        ok &= wl->h_freq > 0.0 && fabs(a[0] * a[0] + a[1] * a[1] + a[2] * a[2] - 1.0) < 1e-9;
+    }
+    const double *n = wl->n0, *e = wl->e0;
+    const bool finite = wl->kind == DM_WALL_REVOLVED || wl->kind == DM_WALL_RECT;
+    if (finite) /* a unit axis or normal, and a bounding sphere */
+        ok &= all_finite(n, 3) && fabs(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1.0) < 1e-9 &&
+              isfinite(wl->brad) && wl->brad >= 0.0;
+    if (wl->kind == DM_WALL_REVOLVED)
+        ok &= wl->seg[0] >= 0.0 && wl->seg[2] >= 0.0 &&
+              (wl->seg[0] != wl->seg[2] || wl->seg[1] != wl->seg[3]);
+    if (wl->kind == DM_WALL_RECT) /* and a unit direction in its plane */
+        ok &= wl->seg[0] > 0.0 && wl->seg[1] > 0.0 &&
+              fabs(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] - 1.0) < 1e-9 &&
+              fabs(e[0] * n[0] + e[1] * n[1] + e[2] * n[2]) < 1e-9;
+    if (wl->parent) {
+        const uint32_t p = wl->parent - 1;
+        ok &= p < t->nwalls && p != k && t->walls[p].kind == wl->kind &&
+              t->walls[p].material == wl->material && !t->walls[p].parent &&
+              (t->walls[p].parts[0] == k + 1 || t->walls[p].parts[1] == k + 1) &&
+              !wl->parts[0] && !wl->parts[1];
+    }
+    for (int q = 0; q < 2; q++) {
+        const uint32_t c = wl->parts[q];
+        ok &= !c || (c - 1 < t->nwalls && t->walls[c - 1].kind && t->walls[c - 1].parent == k + 1);
+    }
+    return ok;
+}
+
 static demill_status check_walls(demill_world *t)
 {
     const dm_drum *d = &t->drum;
@@ -668,9 +906,18 @@ static demill_status check_walls(demill_world *t)
         const dm_wall *wl = &t->walls[k];
         if (!wl->kind)
             continue;
-        bool ok = wl->kind >= DM_WALL_PLANE && wl->kind <= DM_WALL_PRISM &&
-                  wl->material < t->nmat && wl->npoly >= 0 && wl->npoly <= DM_MAX_POLY;
-        if (wl->drum_part) {
+        bool ok = wl->kind >= DM_WALL_PLANE && wl->kind <= DM_WALL_RECT &&
+                  (wl->kind == DM_WALL_MESH) == (wl->mesh != NULL) &&
+                  wl->material < t->nmat && wl->npoly >= 0 && wl->npoly <= DM_MAX_POLY &&
+                  finite_wall_ok(t, k);
+        if (dm_wall_attached(wl)) { /* a user's wall, attached to the drum */
+            user++;
+            ok &= d->alive && wl->drum_part <= DM_PART_LIFTER && wl->lifter == -1 &&
+                  (wl->drum_part != DM_PART_CAP || t->dim == 3) && wl->handle < t->wh.n &&
+                  t->wh.slot[wl->handle] == k;
+        } else if (wl->parent) {
+            ok &= wl->handle == DM_FREE && !wl->drum_part;
+        } else if (wl->drum_part) {
             drum++;
             bool listed = false;
             for (uint32_t q = 0; q < d->nwall; q++)
@@ -685,21 +932,26 @@ static demill_status check_walls(demill_world *t)
         if (!ok)
             return dm_fail(t, DEMILL_ERR_FORMAT, "wall slot %u is inconsistent", k);
     }
-    if (drum != d->nwall || (d->nwall && (!d->alive || d->material >= t->nmat)))
+    bool materials = true;
+    for (int q = 0; q < 3; q++)
+        materials &= d->material[q] < t->nmat;
+    if (drum != d->nwall || (d->nwall && (!d->alive || !materials)))
         return dm_fail(t, DEMILL_ERR_FORMAT, "the drum lists %u walls, %u found", d->nwall, drum);
-    /* a drum's walls are its shell, its end caps (3D) and its lifters in order */
-    const uint32_t caps = t->dim == 3 ? 2 : 0;
-    if (d->alive && d->nwall != 1 + caps + d->nlifters)
+    /* a drum's walls are its shell and its end caps (3D) if it has them, and
+     * its lifters, in order */
+    const uint32_t caps = t->dim == 3 ? 2 : 0, shell = d->shell ? 1 + caps : 0;
+    if (d->alive && d->nwall != shell + d->nlifters)
         return dm_fail(t, DEMILL_ERR_FORMAT, "a drum of %u lifters with %u walls", d->nlifters,
                        d->nwall);
     for (uint32_t q = 0; q < d->nwall; q++) {
         const dm_wall *wl = &t->walls[d->wall_slot[q]];
-        const bool ok = q == 0      ? wl->drum_part == DM_PART_SHELL && wl->kind == DM_WALL_SHELL
-                        : q <= caps ? wl->drum_part == DM_PART_CAP && wl->kind == DM_WALL_PLANE
+        const bool ok = q < shell && q == 0 ? wl->drum_part == DM_PART_SHELL &&
+                                                  wl->kind == DM_WALL_SHELL
+                        : q < shell ? wl->drum_part == DM_PART_CAP && wl->kind == DM_WALL_PLANE
                                     : wl->drum_part == DM_PART_LIFTER &&
                                           wl->kind == DM_WALL_PRISM &&
-                                          wl->lifter == (int)(q - 1 - caps);
-        if (!ok)
+                                          wl->lifter == (int)(q - shell);
+        if (!ok || wl->material != d->material[wl->drum_part - 1])
             return dm_fail(t, DEMILL_ERR_FORMAT, "drum wall %u is not the part it should be", q);
     }
     for (uint32_t k = 0; k < t->wh.n; k++)
@@ -710,7 +962,9 @@ static demill_status check_walls(demill_world *t)
 }
 
 /* Every body's values within the bounds demill_body_*() enforce, its
- * handle its own, and every wall attached to a live body. */
+ * handle its own, and every wall attached to a live body and one that
+ * demill_body_attach_wall() accepts (not the drum's, without caps, without
+ * harmonic motion). */
 static demill_status check_bodies(demill_world *t)
 {
     uint32_t live = 0;
@@ -735,7 +989,8 @@ static demill_status check_bodies(demill_world *t)
     for (uint32_t k = 0; k < t->nwalls; k++) {
         const dm_wall *wl = &t->walls[k];
         if (wl->body && (wl->body > t->nbodies || t->bodies[wl->body - 1].handle == DM_FREE ||
-                         !wl->kind || wl->drum_part))
+                         !wl->kind || wl->drum_part || wl->parent || wl->parts[0] ||
+                         wl->parts[1] || wl->harmonic))
             return dm_fail(t, DEMILL_ERR_FORMAT, "wall slot %u is attached to body slot %u", k,
                            wl->body - 1);
     }
@@ -798,7 +1053,8 @@ static demill_status check_contacts(demill_world *t)
                     ok = j < P->n && i < j && dm_pair_kernel(t, P->mat[i], P->mat[j]) == k;
                 else if (ok)
                     ok = j < t->nwalls && t->walls[j].kind &&
-                         dm_pair_kernel(t, P->mat[i], t->walls[j].material) == k;
+                         dm_pair_kernel(t, P->mat[i], t->walls[j].material) == k &&
+                         b->t[q] < (t->walls[j].mesh ? t->walls[j].mesh->nt : 1);
                 if (!ok)
                     return dm_fail(t, DEMILL_ERR_FORMAT, "%s contact %u of list %d joins %u and %u",
                                    side ? "particle-wall" : "particle-particle", q, k, i, j);
@@ -891,7 +1147,8 @@ static demill_status decode(demill_world *t, const uint8_t *b, size_t size)
         return dm_fail(t, s.status, "%s", s.why);
     demill_status st;
     if ((st = check_params(t)) || (st = check_particles(t)) || (st = check_walls(t)) ||
-        (st = check_bodies(t)) || (st = check_drum(t)) || (st = check_contacts(t)))
+        (st = check_bodies(t)) || (st = check_drum(t)) || (st = check_contacts(t)) ||
+        (st = check_flows(t)))
         return st == DEMILL_ERR_OUT_OF_MEMORY ? st : DEMILL_ERR_FORMAT;
     for (uint32_t i = 0; i < t->p.n; i++)
         t->mat_particles[t->p.mat[i]]++;
@@ -1000,43 +1257,22 @@ DEMILL_API demill_status demill_world_load(demill_world *w, const char *path)
         return s;
     if (!path)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_load: path is NULL");
-    errno = 0;
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return dm_fail(w, DEMILL_ERR_IO, "world_load: %s: %s", path,
-                       errno ? strerror(errno) : "cannot open");
-    uint8_t *b = NULL;
-    size_t n = 0, cap = 0;
-    bool ok = true;
-    for (;;) {
-        if (n == cap) {
-            cap = dm_grown_capacity(cap, cap + 65536);
-            uint8_t *nb = realloc(b, cap);
-            if (!nb) {
-                free(b);
-                fclose(f);
-                return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "world_load: %s: out of memory", path);
-            }
-            b = nb;
-        }
-        const size_t got = fread(b + n, 1, cap - n, f);
-        n += got;
-        if (got == 0) {
-            ok = !ferror(f);
-            break;
-        }
-    }
-    const int e = errno;
-    fclose(f);
-    if (!ok)
-        s = dm_fail(w, DEMILL_ERR_IO, "world_load: %s: %s", path, e ? strerror(e) : "read failed");
-    else
-        s = load(w, b, n, path);
+    uint8_t *b;
+    size_t n;
+    if ((s = dm_read_file(w, "world_load", path, &b, &n)))
+        return s;
+    s = load(w, b, n, path);
     free(b);
     return s;
 }
 
 /* ---- listing ids ------------------------------------------------------------ */
+
+/* A wall with an id of its own: free, or attached to the drum. */
+static bool user_wall(const dm_wall *wall)
+{
+    return wall->kind && !wall->parent && (!wall->drum_part || dm_wall_attached(wall));
+}
 
 DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, demill_id *out,
                                           size_t capacity, size_t *count)
@@ -1047,8 +1283,7 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         return s;
     if (kind == DEMILL_KIND_PARTICLE)
         return demill_particles_read_ids(w, DEMILL_PARTICLE_ID, out, capacity, count);
-    if (kind != DEMILL_KIND_MATERIAL && kind != DEMILL_KIND_WALL && kind != DEMILL_KIND_DRUM &&
-        kind != DEMILL_KIND_BODY)
+    if (kind < DEMILL_KIND_MATERIAL || kind > DEMILL_KIND_BODY)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_ids: %d is not a kind of object",
                        (int)kind);
     if (!out && !count)
@@ -1058,12 +1293,18 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         n = w->nmat;
     else if (kind == DEMILL_KIND_DRUM)
         n = w->drum.alive;
+    else if (kind == DEMILL_KIND_FEED)
+        for (uint32_t k = 0; k < w->flows.nfeeds; k++)
+            n += w->flows.feeds[k].id.alive;
+    else if (kind == DEMILL_KIND_OUTLET)
+        for (uint32_t k = 0; k < w->flows.noutlets; k++)
+            n += w->flows.outlets[k].id.alive;
     else if (kind == DEMILL_KIND_BODY)
         for (uint32_t k = 0; k < w->nbodies; k++)
             n += dm_body_live(w, k);
     else
         for (uint32_t k = 0; k < w->nwalls; k++)
-            n += w->walls[k].kind && !w->walls[k].drum_part;
+            n += user_wall(&w->walls[k]);
     if (count)
         *count = n;
     if (!out)
@@ -1076,8 +1317,16 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
             out[m] = dm_material_id(w, m);
     } else if (kind == DEMILL_KIND_WALL) {
         for (uint32_t k = 0, q = 0; k < w->nwalls; k++)
-            if (w->walls[k].kind && !w->walls[k].drum_part)
+            if (user_wall(&w->walls[k]))
                 out[q++] = dm_wall_id(w, k);
+    } else if (kind == DEMILL_KIND_FEED) {
+        for (uint32_t k = 0, q = 0; k < w->flows.nfeeds; k++)
+            if (w->flows.feeds[k].id.alive)
+                out[q++] = dm_feed_id(w, k);
+    } else if (kind == DEMILL_KIND_OUTLET) {
+        for (uint32_t k = 0, q = 0; k < w->flows.noutlets; k++)
+            if (w->flows.outlets[k].id.alive)
+                out[q++] = dm_outlet_id(w, k);
     } else if (kind == DEMILL_KIND_BODY) {
         for (uint32_t k = 0, q = 0; k < w->nbodies; k++)
             if (dm_body_live(w, k))

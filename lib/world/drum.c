@@ -33,7 +33,7 @@ DEMILL_API demill_status demill_drum_create(demill_world *w, demill_id material,
     dm_drum saved = w->drum;
     dm_drum *d = &w->drum;
     memset(d, 0, sizeof *d);
-    d->material = mat;
+    d->material[0] = d->material[1] = d->material[2] = mat;
     d->diameter = param_default(DEMILL_DRUM_DIAMETER);
     d->length = param_default(DEMILL_DRUM_LENGTH);
     d->lifter_h = param_default(DEMILL_DRUM_LIFTER_HEIGHT);
@@ -41,6 +41,7 @@ DEMILL_API demill_status demill_drum_create(demill_world *w, demill_id material,
     d->lifter_face = param_default(DEMILL_DRUM_LIFTER_FACE_ANGLE);
     d->lifter_phase = param_default(DEMILL_DRUM_LIFTER_PHASE);
     d->porosity = param_default(DEMILL_DRUM_FILL_POROSITY);
+    d->shell = param_default(DEMILL_DRUM_SHELL) != 0.0;
     d->sample_interval = (uint32_t)param_default(DEMILL_DRUM_SAMPLE_INTERVAL);
     d->speed_key = DEMILL_DRUM_SPEED;
     d->t_set = w->time;
@@ -65,6 +66,9 @@ DEMILL_API demill_status demill_drum_remove(demill_world *w, demill_id drum)
     if (s)
         return s;
     dm_drum_walls_remove(w);
+    for (uint32_t k = 0; k < w->nwalls; k++)
+        if (w->walls[k].kind && dm_wall_attached(&w->walls[k]))
+            dm_wall_release(w, k);
     dm_spectrum_free(w);
     w->drum.alive = false;
     w->drum_gen++;
@@ -92,6 +96,7 @@ DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_
     switch (key) {
     case DEMILL_DRUM_DIAMETER: d->diameter = value; rebuild = true; break;
     case DEMILL_DRUM_LENGTH: d->length = value; rebuild = true; break;
+    case DEMILL_DRUM_SHELL: d->shell = value != 0.0; rebuild = true; break;
     case DEMILL_DRUM_LIFTERS: dm_drum_even_lifters(d, (uint32_t)value); rebuild = true; break;
     case DEMILL_DRUM_LIFTER_HEIGHT: d->lifter_h = value; rebuild = true; break;
     case DEMILL_DRUM_LIFTER_WIDTH: d->lifter_w = value; rebuild = true; break;
@@ -122,7 +127,7 @@ DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_
     }
     if (rebuild) {
         if (key != DEMILL_DRUM_DIAMETER && key != DEMILL_DRUM_LENGTH && key != DEMILL_DRUM_LIFTERS &&
-            d->even_count)
+            key != DEMILL_DRUM_SHELL && d->even_count)
             dm_drum_even_lifters(d, d->even_count);
         for (uint32_t k = 0; k < d->nlifters && !s; k++)
             s = dm_drum_check_lifter(w, &d->lifters[k], d->diameter);
@@ -160,6 +165,87 @@ DEMILL_API demill_status demill_drum_add_lifter(demill_world *w, demill_id drum,
     return DEMILL_OK;
 }
 
+/* The drum's part, checked: its index in dm_drum.material. */
+static demill_status drum_part(demill_world *w, int32_t part, const char *fn, int *index)
+{
+    if (part < DEMILL_DRUM_PART_SHELL || part > DEMILL_DRUM_PART_LIFTERS)
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "%s: %d is not a part of the drum", fn,
+                       (int)part);
+    if (part == DEMILL_DRUM_PART_CAPS && w->dim == 2)
+        return dm_fail(w, DEMILL_ERR_DIMENSION, "%s: a 2D drum has no end caps", fn);
+    *index = part - 1;
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_set_material(demill_world *w, demill_id drum, int32_t part,
+                                                  demill_id material)
+{
+    uint32_t slot, mat;
+    int q = 0;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s || (s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mat)) ||
+        (s = drum_part(w, part, "drum_set_material", &q)))
+        return s;
+    dm_drum *d = &w->drum;
+    d->material[q] = mat;
+    for (uint32_t k = 0; k < d->nwall; k++) {
+        dm_wall *wall = &w->walls[d->wall_slot[k]];
+        if (wall->drum_part != part || wall->material == mat)
+            continue;
+        dm_clist_drop_wall(w, d->wall_slot[k]);
+        w->mat_walls[wall->material]--;
+        w->mat_walls[mat]++;
+        wall->material = mat;
+        w->ptab_dirty = true;
+        w->nlist_valid = false;
+        w->forces_valid = false;
+    }
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_attach_wall(demill_world *w, demill_id drum, demill_id wall,
+                                                 int32_t part)
+{
+    uint32_t slot, wslot;
+    int q = 0;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s || (s = dm_enter(w, wall, DEMILL_KIND_WALL, "wall", &wslot)) ||
+        (s = drum_part(w, part, "drum_attach_wall", &q)))
+        return s;
+    dm_wall *wl = &w->walls[wslot];
+    if (wl->drum_part)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum_attach_wall: the wall is attached to the drum already");
+    if (wl->body)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum_attach_wall: the wall is attached to body 0x%llx and moves with it",
+                       (unsigned long long)dm_body_id(w, wl->body - 1));
+    if (wl->kind != DM_WALL_PLANE && wl->kind != DM_WALL_MESH)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "drum_attach_wall: only planes, meshes and polylines turn with the drum "
+                       "(a finite wall cannot be attached yet)");
+    dm_wall_attach(wl, part, w->time, w->drum.theta, w->drum.omega);
+    w->nlist_valid = false;
+    w->forces_valid = false;
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_get_material(demill_world *w, demill_id drum, int32_t part,
+                                                  demill_id *out)
+{
+    uint32_t slot;
+    int q = 0;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s || (s = drum_part(w, part, "drum_get_material", &q)))
+        return s;
+    if (!out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_get_material: out is NULL");
+    *out = dm_material_id(w, w->drum.material[q]);
+    return DEMILL_OK;
+}
+
 DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_t key,
                                          double *value)
 {
@@ -174,6 +260,7 @@ DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_
     switch (key) {
     case DEMILL_DRUM_DIAMETER: *value = d->diameter; break;
     case DEMILL_DRUM_LENGTH: *value = d->length; break;
+    case DEMILL_DRUM_SHELL: *value = d->shell; break;
     case DEMILL_DRUM_LIFTERS:
     case DEMILL_DRUM_LIFTER_COUNT: *value = d->nlifters; break;
     case DEMILL_DRUM_LIFTER_HEIGHT: *value = d->lifter_h; break;
@@ -191,8 +278,8 @@ DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_
     case DEMILL_DRUM_CURRENT_SPEED: *value = d->omega; break;
     case DEMILL_DRUM_ANGLE: *value = d->theta; break;
     case DEMILL_DRUM_REVOLUTIONS: *value = (double)d->revolutions; break;
-    case DEMILL_DRUM_TORQUE: *value = dm_drum_torque(w); break;
-    case DEMILL_DRUM_POWER: *value = -dm_drum_torque(w) * d->omega; break;
+    case DEMILL_DRUM_TORQUE: *value = dm_drum_load(w, NULL); break;
+    case DEMILL_DRUM_POWER: *value = -dm_drum_load(w, NULL) * d->omega; break;
     case DEMILL_DRUM_POWER_MEAN: *value = d->mean_power; break;
     case DEMILL_DRUM_POWER_CM: *value = dm_drum_power_cm(w, d->omega); break;
     case DEMILL_DRUM_POWER_CM_MEAN: *value = d->mean_power_cm; break;
@@ -208,6 +295,14 @@ DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_
     case DEMILL_DRUM_ENERGY_IN: *value = d->energy_in; break;
     case DEMILL_DRUM_ENERGY_DISSIPATED: *value = d->energy_dissipated; break;
     case DEMILL_DRUM_DISSIPATION_MEAN: *value = d->mean_dissipation; break;
+    case DEMILL_DRUM_FORCE_X:
+    case DEMILL_DRUM_FORCE_Y:
+    case DEMILL_DRUM_FORCE_Z: {
+        double f[3];
+        dm_drum_load(w, f);
+        *value = f[key - DEMILL_DRUM_FORCE_X];
+        break;
+    }
     default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "drum_get: %d is not a drum key", (int)key);
     }
     return DEMILL_OK;

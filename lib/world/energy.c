@@ -86,10 +86,11 @@ DEMILL_API demill_status demill_world_energy(demill_world *w, int32_t term, doub
     case DEMILL_ENERGY_DISSIPATED_FRICTION: *value = t->diss_friction; break;
     case DEMILL_ENERGY_DISSIPATED_ROLLING: *value = t->diss_rolling; break;
     case DEMILL_ENERGY_DISSIPATED: *value = diss; break;
+    case DEMILL_ENERGY_FLOW: *value = w->flows.energy; break;
     case DEMILL_ENERGY_TOTAL:
-        *value = kt + kr + pot + stored[0] + stored[1] + diss - t->wall_work +
-                 body[DM_BODY_KINETIC] + body[DM_BODY_ELASTIC] + body[DM_BODY_POTENTIAL] +
-                 body[DM_BODY_DISSIPATED] - body[DM_BODY_WORK];
+        *value = kt + kr + pot + stored[0] + stored[1] + diss - t->wall_work -
+                 w->flows.energy + body[DM_BODY_KINETIC] + body[DM_BODY_ELASTIC] +
+                 body[DM_BODY_POTENTIAL] + body[DM_BODY_DISSIPATED] - body[DM_BODY_WORK];
         break;
     default: *value = body[term - DEMILL_ENERGY_BODY_KINETIC];
     }

@@ -1,30 +1,23 @@
-/* fill.c: filling the drum with a charge drawn from a size distribution, and
- * letting it settle.
+/* fill.c: size distributions, filling a region (the drum, a box, a
+ * cylinder) with a charge drawn from one, and letting a charge settle.
  *
  * A distribution is reduced to size classes with mass fractions: discrete
  * classes as given; Rosin-Rammler and normal distributions (by mass) as 32
  * classes of equal log-width between d_min and d_max, each particle's diameter
  * drawn log-uniformly within its class. Class k gets n_k ∝ f_k / m̄_k
  * particles (m̄_k the mean particle mass in the class), scaled to the target
- * count, mass or bulk filling. The particles, in a seeded random order, take
- * the lowest free sites of a lattice of spacing d_max (1 + 2 j) inside the
- * drum, each moved by a seeded jitter of up to j d_max per coordinate, so no
- * two new particles can touch; a site is skipped where its particle would
- * touch a wall or a particle already in the world. */
+ * count, mass or filling, rounded by largest remainder. The particles, in a
+ * seeded random order, are placed by place.c: each at the lowest free place
+ * among seeded random candidates in the region, clear of the walls and of
+ * every particle. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "demill/insert.h"
 #include "world/world.h"
 
-#define FINE_CLASSES 32
-#define JITTER 0.02 /* per coordinate, as a fraction of the largest diameter */
-#define MAX_SITES 1073741824.0 /* lattice sites, at most: 2^30, a few minutes' scan */
-
-typedef struct size_class {
-    double lo, hi;   /* diameter range (lo = hi for a discrete class) */
-    double fraction; /* of the mass */
-} size_class;
+#define PLACE_SETS 256 /* sets of candidate places a particle of a fill may try */
 
 static double rosin_rammler_cdf(const double *p, double d)
 {
@@ -36,131 +29,147 @@ static double normal_cdf(const double *p, double d)
     return 0.5 * erfc(-(d - p[0]) / (p[1] * sqrt(2.0)));
 }
 
-/* Checks the distribution and turns it into classes; returns the count. */
-static demill_status make_classes(demill_world *w, int32_t dist, const double *p, size_t np,
-                                  size_class *cls, size_t *ncls)
+demill_status dm_sizes_make(demill_world *w, const char *who, int32_t dist, const double *p,
+                            size_t np, dm_sizes *out)
 {
+    dm_sizes c = {0};
+    if (np && !p)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "%s: params is NULL", who);
     for (size_t k = 0; k < np; k++)
         if (!isfinite(p[k]))
-            return dm_fail(w, DEMILL_ERR_NOT_FINITE, "drum_fill: params[%zu] = %g is not finite",
-                           k, p[k]);
+            return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: params[%zu] = %g is not finite", who, k,
+                           p[k]);
     if (dist == DEMILL_SIZES_CLASSES) {
-        if (np < 2 || np % 2 || np / 2 > FINE_CLASSES)
+        if (np < 2 || np % 2 || np / 2 > DM_SIZE_CLASSES)
             return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                           "drum_fill: classes need 1 to %d pairs (diameter, mass fraction), got "
-                           "%zu numbers",
-                           FINE_CLASSES, np);
+                           "%s: classes need 1 to %d pairs (diameter, mass fraction), got %zu "
+                           "numbers",
+                           who, DM_SIZE_CLASSES, np);
         double sum = 0.0;
         for (size_t k = 0; k < np / 2; k++) {
             if (!(p[2 * k] > 0.0) || p[2 * k + 1] < 0.0)
                 return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                               "drum_fill: class %zu: diameter %g must be > 0 and mass fraction "
-                               "%g >= 0",
-                               k, p[2 * k], p[2 * k + 1]);
-            cls[k] = (size_class){p[2 * k], p[2 * k], p[2 * k + 1]};
+                               "%s: class %zu: diameter %g must be > 0 and mass fraction %g >= 0",
+                               who, k, p[2 * k], p[2 * k + 1]);
+            c.lo[k] = c.hi[k] = p[2 * k];
+            c.fraction[k] = p[2 * k + 1];
             sum += p[2 * k + 1];
         }
         if (!(sum > 0.0))
-            return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_fill: the mass fractions sum to 0");
-        *ncls = np / 2;
-        for (size_t k = 0; k < *ncls; k++)
-            cls[k].fraction /= sum;
+            return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: the mass fractions sum to 0", who);
+        c.n = (uint32_t)(np / 2);
+        for (uint32_t k = 0; k < c.n; k++)
+            c.fraction[k] /= sum;
+        *out = c;
         return DEMILL_OK;
     }
     if (dist != DEMILL_SIZES_ROSIN_RAMMLER && dist != DEMILL_SIZES_NORMAL)
-        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "drum_fill: %d is not a size distribution",
+        return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "%s: %d is not a size distribution", who,
                        (int)dist);
     if (np != 4)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "drum_fill: this distribution takes 4 parameters, got %zu", np);
+                       "%s: this distribution takes 4 parameters, got %zu", who, np);
     if (!(p[0] > 0.0) || !(p[1] > 0.0) || !(p[2] > 0.0) || !(p[3] > p[2]))
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "drum_fill: need size > 0, spread > 0 and 0 < d_min < d_max (got %g, %g, "
-                       "%g, %g)",
-                       p[0], p[1], p[2], p[3]);
+                       "%s: need size > 0, spread > 0 and 0 < d_min < d_max (got %g, %g, %g, %g)",
+                       who, p[0], p[1], p[2], p[3]);
     double (*cdf)(const double *, double) =
         dist == DEMILL_SIZES_ROSIN_RAMMLER ? rosin_rammler_cdf : normal_cdf;
     const double f0 = cdf(p, p[2]), span = cdf(p, p[3]) - f0, ratio = p[3] / p[2];
     if (!(span > 0.0))
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "drum_fill: the distribution has no mass between d_min and d_max");
-    for (size_t k = 0; k < FINE_CLASSES; k++) {
-        const double lo = p[2] * pow(ratio, (double)k / FINE_CLASSES);
-        const double hi = p[2] * pow(ratio, (double)(k + 1) / FINE_CLASSES);
-        cls[k] = (size_class){lo, hi, (cdf(p, hi) - cdf(p, lo)) / span};
+                       "%s: the distribution has no mass between d_min and d_max", who);
+    for (uint32_t k = 0; k < DM_SIZE_CLASSES; k++) {
+        c.lo[k] = p[2] * pow(ratio, (double)k / DM_SIZE_CLASSES);
+        c.hi[k] = p[2] * pow(ratio, (double)(k + 1) / DM_SIZE_CLASSES);
+        c.fraction[k] = (cdf(p, c.hi[k]) - cdf(p, c.lo[k])) / span;
     }
-    *ncls = FINE_CLASSES;
+    c.n = DM_SIZE_CLASSES;
+    *out = c;
     return DEMILL_OK;
 }
 
-/* Mean of d^p over a class, d log-uniform in [lo, hi]. */
-static double class_moment(const size_class *c, double p)
+/* Mean of d^p over class k, d log-uniform in [lo, hi]. */
+static double class_moment(const dm_sizes *s, uint32_t k, double p)
 {
-    if (c->hi <= c->lo * (1.0 + 1e-12))
-        return pow(c->lo, p);
-    return (pow(c->hi, p) - pow(c->lo, p)) / (p * log(c->hi / c->lo));
+    if (s->hi[k] <= s->lo[k] * (1.0 + 1e-12))
+        return pow(s->lo[k], p);
+    return (pow(s->hi[k], p) - pow(s->lo[k], p)) / (p * log(s->hi[k] / s->lo[k]));
 }
 
-/* Volume (3D) or cross-section area (2D) of a particle of unit diameter,
- * times d^3 or d^2; and the drum's free inner volume or area. */
-static double solid_measure(const demill_world *w, const size_class *c)
+/* The mean particle mass of class k, material mat. */
+static double class_mass(const demill_world *w, uint32_t mat, const dm_sizes *s, uint32_t k)
 {
-    return w->dim == 3 ? DM_PI / 6.0 * class_moment(c, 3.0) : DM_PI / 4.0 * class_moment(c, 2.0);
-}
-
-static double drum_capacity(const demill_world *w)
-{
-    const dm_drum *d = &w->drum;
-    const double R = 0.5 * d->diameter;
-    double area = DM_PI * R * R;
-    for (uint32_t k = 0; k < d->nlifters; k++) {
-        const dm_lifter_spec *l = &d->lifters[k];
-        area -= l->height * (l->width - 0.5 * l->height * tan(l->face));
-    }
-    return w->dim == 3 ? area * d->length : area;
-}
-
-/* Particles per class for the target; returns the total. */
-static demill_status class_counts(demill_world *w, uint32_t mat, const size_class *cls,
-                                  size_t ncls, int32_t target, double value, size_t *count)
-{
-    double weight[FINE_CLASSES], wsum = 0.0, mass = 0.0, measure = 0.0, m1, inv_i;
+    double m1, inv_i;
     dm_particle_mass(w, mat, 0.5, &m1, &inv_i); /* the mass of a unit diameter */
-    const double mass_power = w->dim == 2 && w->disc_thickness > 0 ? 2.0 : 3.0;
-    for (size_t k = 0; k < ncls; k++) {
-        const double mean_mass = m1 * class_moment(&cls[k], mass_power);
-        weight[k] = cls[k].fraction / mean_mass;
+    return m1 * class_moment(s, k, w->dim == 2 && w->disc_thickness > 0 ? 2.0 : 3.0);
+}
+
+void dm_sizes_numbers(const demill_world *w, uint32_t mat, const dm_sizes *s, double *number)
+{
+    for (uint32_t k = 0; k < s->n; k++)
+        number[k] = s->fraction[k] / class_mass(w, mat, s, k);
+}
+
+double dm_sizes_draw(const dm_sizes *s, uint32_t k, dm_rng *rng)
+{
+    return s->lo[k] * pow(s->hi[k] / s->lo[k], dm_rng_uniform(rng));
+}
+
+demill_status dm_sizes_check_mass(demill_world *w, const char *who, uint32_t mat,
+                                  const dm_sizes *s, const size_t *count)
+{
+    demill_status st = DEMILL_OK;
+    for (uint32_t k = 0; k < s->n && !st; k++)
+        if (!count || count[k]) {
+            double m, inv_i;
+            if (!(st = dm_particle_mass_checked(w, mat, 0.5 * s->lo[k], who, &m, &inv_i)))
+                st = dm_particle_mass_checked(w, mat, 0.5 * s->hi[k], who, &m, &inv_i);
+        }
+    return st;
+}
+
+/* Particles per class for the target in the region. */
+static demill_status class_counts(demill_world *w, const char *who, uint32_t mat,
+                                  const dm_sizes *cls, const dm_region *reg, int32_t target,
+                                  double value, size_t *count)
+{
+    double weight[DM_SIZE_CLASSES], wsum = 0.0, mass = 0.0, measure = 0.0;
+    dm_sizes_numbers(w, mat, cls, weight);
+    for (uint32_t k = 0; k < cls->n; k++) {
         wsum += weight[k];
-        mass += weight[k] * mean_mass;
-        measure += weight[k] * solid_measure(w, &cls[k]);
+        mass += cls->fraction[k];
+        measure += weight[k] * (w->dim == 3 ? DM_PI / 6.0 * class_moment(cls, k, 3.0)
+                                            : DM_PI / 4.0 * class_moment(cls, k, 2.0));
     }
     double scale;
     switch (target) {
     case DEMILL_FILL_COUNT: scale = value / wsum; break;
     case DEMILL_FILL_MASS: scale = value / mass; break;
     case DEMILL_FILL_FRACTION:
-        scale = value * drum_capacity(w) * (1.0 - w->drum.porosity) / measure;
+        scale = value * dm_region_measure(w, reg) / measure;
+        if (reg->kind == DEMILL_REGION_DRUM)
+            scale *= 1.0 - w->drum.porosity;
         break;
-    default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "drum_fill: %d is not a fill target", (int)target);
+    default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "%s: %d is not a fill target", who, (int)target);
     }
     /* largest remainder, so that a count target is met exactly */
-    double want = scale * wsum, rem[FINE_CLASSES];
+    double want = scale * wsum, rem[DM_SIZE_CLASSES];
     const double most = (double)(UINT32_MAX / 4) - (double)w->p.n;
     if (!(want <= most))
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "drum_fill: the target asks for %.3g particles; at most %.0f more can be "
-                       "added",
-                       want, most);
+                       "%s: the target asks for %.3g particles; at most %.0f more can be added",
+                       who, want, most);
     size_t total = 0;
-    for (size_t k = 0; k < ncls; k++) {
+    for (uint32_t k = 0; k < cls->n; k++) {
         const double x = scale * weight[k];
         count[k] = (size_t)floor(x);
         rem[k] = x - floor(x);
         total += count[k];
     }
-    for (size_t it = 0; it < ncls && (double)total + 0.5 < want; it++) {
-        size_t best = 0;
-        for (size_t k = 1; k < ncls; k++)
+    for (uint32_t it = 0; it < cls->n && (double)total + 0.5 < want; it++) {
+        uint32_t best = 0;
+        for (uint32_t k = 1; k < cls->n; k++)
             if (rem[k] > rem[best])
                 best = k;
         count[best]++;
@@ -168,6 +177,77 @@ static demill_status class_counts(demill_world *w, uint32_t mat, const size_clas
         total++;
     }
     return DEMILL_OK;
+}
+
+/* The fill of demill_fill_region() and demill_drum_fill(), in a checked
+ * region with a checked material. */
+static demill_status fill(demill_world *w, const char *who, const dm_region *reg, uint32_t mat,
+                          int32_t distribution, const double *params, size_t nparams,
+                          int32_t target, double value, uint64_t seed, demill_id *ids,
+                          size_t capacity, size_t *added)
+{
+    if (!isfinite(value))
+        return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: target value %g is not finite", who, value);
+    if (!(value > 0.0) || (target == DEMILL_FILL_FRACTION && value > 1.0))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "%s: target value %g must be > 0 (and at most 1 for a fraction)", who,
+                       value);
+    dm_sizes cls;
+    size_t per_class[DM_SIZE_CLASSES] = {0};
+    demill_status s;
+    if ((s = dm_sizes_make(w, who, distribution, params, nparams, &cls)) ||
+        (s = class_counts(w, who, mat, &cls, reg, target, value, per_class)))
+        return s;
+    size_t n = 0;
+    for (uint32_t k = 0; k < cls.n; k++)
+        n += per_class[k];
+    if (added)
+        *added = 0;
+    if (n == 0)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: the target asks for no particle", who);
+    if (ids && capacity < n) {
+        if (added)
+            *added = n; /* what the buffer must hold */
+        return dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL, "%s: capacity %zu, %zu particles", who,
+                       capacity, n);
+    }
+    if ((s = dm_sizes_check_mass(w, who, mat, &cls, per_class)))
+        return s;
+    double *rad = malloc(n * sizeof *rad), *pos = malloc(3 * n * sizeof *pos);
+    if (!rad || !pos) {
+        free(rad);
+        free(pos);
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "%s: out of memory", who);
+    }
+    /* radii, then a seeded shuffle so that sizes are mixed */
+    dm_rng rng;
+    dm_rng_seed(&rng, seed);
+    size_t m = 0;
+    for (uint32_t k = 0; k < cls.n; k++)
+        for (size_t q = 0; q < per_class[k]; q++)
+            rad[m++] = 0.5 * dm_sizes_draw(&cls, k, &rng);
+    for (size_t k = n - 1; k > 0; k--) {
+        size_t j = (size_t)(dm_rng_uniform(&rng) * (double)(k + 1));
+        double t = rad[k];
+        rad[k] = rad[j];
+        rad[j] = t;
+    }
+    size_t placed;
+    if (!(s = dm_place(w, reg, n, rad, PLACE_SETS, &rng, pos, &placed)) && placed < n)
+        s = dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                    "%s: only %zu of %zu particles fit in the region: no free place for a "
+                    "particle of diameter %g m among %d candidates",
+                    who, placed, n, 2.0 * rad[placed], 16 * PLACE_SETS);
+    if (!s)
+        s = dm_particles_append(w, mat, n, pos, rad, NULL, ids);
+    free(rad);
+    free(pos);
+    if (!s) {
+        if (added)
+            *added = n;
+        dm_changed(w);
+    }
+    return s;
 }
 
 DEMILL_API demill_status demill_drum_fill(demill_world *w, demill_id drum, demill_id material,
@@ -180,115 +260,25 @@ DEMILL_API demill_status demill_drum_fill(demill_world *w, demill_id drum, demil
     demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
     if (s || (s = dm_resolve(w, material, DEMILL_KIND_MATERIAL, "material", &mat)))
         return s;
-    if (nparams && !params)
-        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "drum_fill: params is NULL");
-    if (!isfinite(value))
-        return dm_fail(w, DEMILL_ERR_NOT_FINITE, "drum_fill: target value %g is not finite", value);
-    if (!(value > 0.0) || (target == DEMILL_FILL_FRACTION && value > 1.0))
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "drum_fill: target value %g must be > 0 (and at most 1 for a fraction)",
-                       value);
-    size_class cls[FINE_CLASSES];
-    size_t ncls = 0, per_class[FINE_CLASSES] = {0};
-    if ((s = make_classes(w, distribution, params, nparams, cls, &ncls)) ||
-        (s = class_counts(w, mat, cls, ncls, target, value, per_class)))
-        return s;
-    size_t n = 0;
-    double dmax = 0.0;
-    for (size_t k = 0; k < ncls; k++) {
-        n += per_class[k];
-        if (per_class[k])
-            dmax = fmax(dmax, cls[k].hi);
-    }
-    if (added)
-        *added = 0;
-    if (n == 0)
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "drum_fill: the target asks for no particle");
-    if (ids && capacity < n) {
-        if (added)
-            *added = n; /* what the buffer must hold */
-        return dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL, "drum_fill: capacity %zu, %zu particles",
-                       capacity, n);
-    }
-    /* the smallest and largest particles have a finite mass and inertia */
-    for (size_t k = 0; k < ncls; k++)
-        if (per_class[k]) {
-            double m, inv_i;
-            if ((s = dm_particle_mass_checked(w, mat, 0.5 * cls[k].lo, "drum_fill", &m, &inv_i)) ||
-                (s = dm_particle_mass_checked(w, mat, 0.5 * cls[k].hi, "drum_fill", &m, &inv_i)))
-                return s;
-        }
-    /* the lattice the particles are placed on, whose sites the placement
-     * may visit all of */
-    const dm_drum *d = &w->drum;
-    const int D = w->dim;
-    const double jit = JITTER * dmax, a = dmax + 2.0 * jit, R = 0.5 * d->diameter;
-    const double zh = D == 3 ? 0.5 * d->length : 0.0;
-    const double sites = (2.0 * floor(R / a) + 1.0) * (2.0 * floor(R / a) + 1.0) *
-                         (2.0 * floor(zh / a) + 1.0);
-    if (!(sites <= MAX_SITES))
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "drum_fill: particles of diameter %g m are too small for this drum: the "
-                       "lattice they are placed on would have %.3g sites, at most %.3g",
-                       dmax, sites, MAX_SITES);
+    const dm_region reg = {.kind = DEMILL_REGION_DRUM};
+    return fill(w, "drum_fill", &reg, mat, distribution, params, nparams, target, value, seed,
+                ids, capacity, added);
+}
 
-    double *diam = malloc(n * sizeof *diam), *pos = malloc(3 * n * sizeof *pos);
-    dm_sphere_index ix = {0};
-    if (!diam || !pos || dm_spheres_build(&ix, w, 0, NULL, NULL, 0.5 * dmax)) {
-        free(diam);
-        free(pos);
-        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "drum_fill: out of memory");
-    }
-    /* diameters, then a seeded shuffle so that sizes are mixed */
-    dm_rng rng;
-    dm_rng_seed(&rng, seed);
-    size_t m = 0;
-    for (size_t k = 0; k < ncls; k++)
-        for (size_t q = 0; q < per_class[k]; q++)
-            diam[m++] = cls[k].lo * pow(cls[k].hi / cls[k].lo, dm_rng_uniform(&rng));
-    for (size_t k = n - 1; k > 0; k--) {
-        size_t j = (size_t)(dm_rng_uniform(&rng) * (double)(k + 1));
-        double t = diam[k];
-        diam[k] = diam[j];
-        diam[j] = t;
-    }
-    /* lattice sites from the bottom up: y, then x, then z */
-    const long nxy = (long)floor(R / a), nz = D == 3 ? (long)floor(zh / a) : 0;
-    size_t placed = 0;
-    for (long iy = -nxy; iy <= nxy && placed < n; iy++)
-        for (long ix_ = -nxy; ix_ <= nxy && placed < n; ix_++)
-            for (long iz = -nz; iz <= nz && placed < n; iz++) {
-                double x[3] = {ix_ * a, iy * a, iz * a};
-                for (int c = 0; c < D; c++)
-                    x[c] += jit * (2.0 * dm_rng_uniform(&rng) - 1.0);
-                const double r = 0.5 * diam[placed];
-                double depth;
-                if (x[0] * x[0] + x[1] * x[1] >= R * R ||
-                    dm_wall_overlap(w, x, r, &depth) != DM_FREE ||
-                    dm_spheres_find(&ix, x, r, (uint32_t)ix.n, &depth) >= 0)
-                    continue;
-                memcpy(pos + 3 * placed, x, sizeof x);
-                placed++;
-            }
-    dm_spheres_free(&ix);
-    if (placed < n) {
-        free(diam);
-        free(pos);
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "drum_fill: only %zu of %zu particles fit in the drum (lattice spacing %g m)",
-                       placed, n, a);
-    }
-    for (size_t k = 0; k < n; k++)
-        diam[k] *= 0.5; /* radii */
-    s = dm_particles_append(w, mat, n, pos, diam, NULL, ids);
-    free(diam);
-    free(pos);
-    if (!s) {
-        if (added)
-            *added = n;
-        dm_changed(w);
-    }
-    return s;
+DEMILL_API demill_status demill_fill_region(demill_world *w, int32_t region,
+                                            const double *region_params, size_t nregion,
+                                            demill_id material, int32_t distribution,
+                                            const double *params, size_t nparams, int32_t target,
+                                            double value, uint64_t seed, demill_id *ids,
+                                            size_t capacity, size_t *added)
+{
+    uint32_t mat;
+    dm_region reg;
+    demill_status s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mat);
+    if (s || (s = dm_region_parse(w, "fill_region", region, region_params, nregion, true, &reg)))
+        return s;
+    return fill(w, "fill_region", &reg, mat, distribution, params, nparams, target, value, seed,
+                ids, capacity, added);
 }
 
 DEMILL_API demill_status demill_world_settle(demill_world *w, double max_time,

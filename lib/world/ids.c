@@ -9,6 +9,8 @@ static const char *kind_name(int kind)
     case DEMILL_KIND_PARTICLE: return "particle";
     case DEMILL_KIND_WALL: return "wall";
     case DEMILL_KIND_DRUM: return "drum";
+    case DEMILL_KIND_FEED: return "feed";
+    case DEMILL_KIND_OUTLET: return "outlet";
     case DEMILL_KIND_BODY: return "body";
     default: return "unknown";
     }
@@ -48,6 +50,19 @@ demill_status dm_resolve(const demill_world *cw, demill_id id, int kind, const c
         *slot = index;
         return DEMILL_OK;
     }
+    if (kind == DEMILL_KIND_FEED || kind == DEMILL_KIND_OUTLET) {
+        const dm_flows *f = &w->flows;
+        const bool feed = kind == DEMILL_KIND_FEED;
+        const dm_flow_slot *o = index >= (feed ? f->nfeeds : f->noutlets) ? NULL
+                                : feed ? &f->feeds[index].id
+                                       : &f->outlets[index].id;
+        if (!o || !o->alive || o->gen != DM_ID_GEN(id))
+            return dm_fail(w, DEMILL_ERR_INVALID_HANDLE,
+                           "%s: %s id 0x%llx was removed or never existed", what,
+                           kind_name(kind), (unsigned long long)id);
+        *slot = index;
+        return DEMILL_OK;
+    }
     const dm_handles *h = kind == DEMILL_KIND_PARTICLE ? &w->ph
                           : kind == DEMILL_KIND_BODY   ? &w->bh
                                                        : &w->wh;
@@ -65,11 +80,14 @@ demill_id dm_particle_id(const demill_world *w, uint32_t storage)
     return dm_id_make(w->tag, DEMILL_KIND_PARTICLE, w->ph.gen[h], h);
 }
 
-/* The id of a wall slot: the wall's own id, or the drum's for its walls. */
+/* The id of a wall slot: the wall's own id (also when attached to the drum),
+ * the drum's for the walls it built, a capped wall's for its caps. */
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot)
 {
-    if (w->walls[wall_slot].drum_part)
+    if (w->walls[wall_slot].drum_part && !dm_wall_attached(&w->walls[wall_slot]))
         return dm_drum_id(w);
+    if (w->walls[wall_slot].parent)
+        wall_slot = w->walls[wall_slot].parent - 1;
     uint32_t h = w->walls[wall_slot].handle;
     return dm_id_make(w->tag, DEMILL_KIND_WALL, w->wh.gen[h], h);
 }

@@ -160,35 +160,11 @@ static void clist_remap(dm_clist *l, const uint32_t *map, int walls)
     }
 }
 
-DEMILL_API demill_status demill_particles_remove(demill_world *w, size_t n, const demill_id *ids)
+/* Removes the particles whose entry of map (one per particle, from
+ * w->grid.inv) is DM_FREE, keeping the others' order and contacts. */
+void dm_particles_compact(demill_world *w, uint32_t *map)
 {
-    demill_status s = dm_check_world(w);
-    if (s)
-        return s;
-    if (n == 0) {
-        dm_changed(w);
-        return DEMILL_OK;
-    }
-    if (!ids)
-        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "particles_remove: ids is NULL");
     dm_particles *P = &w->p;
-    /* the neighbour build's scratch serves as the renumbering map */
-    if (dm_grid_reserve(&w->grid, P->n))
-        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "particles_remove: out of memory");
-    uint32_t *map = w->grid.inv;
-    for (uint32_t i = 0; i < P->n; i++)
-        map[i] = i;
-    for (size_t k = 0; k < n; k++) {
-        uint32_t slot;
-        char what[48];
-        snprintf(what, sizeof what, "ids[%zu]", k);
-        if ((s = dm_resolve(w, ids[k], DEMILL_KIND_PARTICLE, what, &slot)))
-            return s;
-        if (map[slot] == DM_FREE)
-            return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "particles_remove: ids[%zu] is listed twice",
-                           k);
-        map[slot] = DM_FREE;
-    }
     const int D = w->dim, W = dm_wdim(w);
     uint32_t m = 0;
     for (uint32_t i = 0; i < P->n; i++) {
@@ -224,6 +200,38 @@ DEMILL_API demill_status demill_particles_remove(demill_world *w, size_t n, cons
     w->res.valid = false;
     w->ptab_dirty = true;
     w->forces_valid = false;
+}
+
+DEMILL_API demill_status demill_particles_remove(demill_world *w, size_t n, const demill_id *ids)
+{
+    demill_status s = dm_check_world(w);
+    if (s)
+        return s;
+    if (n == 0) {
+        dm_changed(w);
+        return DEMILL_OK;
+    }
+    if (!ids)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "particles_remove: ids is NULL");
+    dm_particles *P = &w->p;
+    /* the neighbour build's scratch serves as the renumbering map */
+    if (dm_grid_reserve(&w->grid, P->n))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "particles_remove: out of memory");
+    uint32_t *map = w->grid.inv;
+    for (uint32_t i = 0; i < P->n; i++)
+        map[i] = i;
+    for (size_t k = 0; k < n; k++) {
+        uint32_t slot;
+        char what[48];
+        snprintf(what, sizeof what, "ids[%zu]", k);
+        if ((s = dm_resolve(w, ids[k], DEMILL_KIND_PARTICLE, what, &slot)))
+            return s;
+        if (map[slot] == DM_FREE)
+            return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "particles_remove: ids[%zu] is listed twice",
+                           k);
+        map[slot] = DM_FREE;
+    }
+    dm_particles_compact(w, map);
     dm_changed(w);
     return DEMILL_OK;
 }

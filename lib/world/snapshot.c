@@ -2,8 +2,8 @@
  * state (watchdog.c), snapshots and checkpoints (checkpoint.c).
  *
  * The copy holds everything a world is: parameters, materials and pairs,
- * particles in storage order, handles, walls, bodies, the drum, the contact lists
- * with their histories, tallies and counters. It leaves out what is derived
+ * particles in storage order, handles, walls with their meshes, bodies, the
+ * drum, the contact lists with their histories, tallies and counters. It leaves out what is derived
  * again before use (the neighbour grid's scratch, the per-pair results, the
  * wall-contact geometry, the refinement's scratch): the destination keeps its
  * own of those, and its results are marked stale; dm_state_restore() makes
@@ -22,8 +22,8 @@ typedef struct buffer {
     size_t bytes;
 } buffer;
 
-/* particles 15, handles 3 × 3, pairs, table, walls, bodies, spectrum 2, buckets 4 each */
-#define MAX_BUFFERS (15 + 9 + 4 + 2 + 2 * DM_KERNELS * 4)
+/* particles 15, handles 3 × 3, pairs, table, walls, bodies, spectrum 2, buckets 5 each */
+#define MAX_BUFFERS (15 + 9 + 4 + 2 + 2 * DM_KERNELS * 5)
 
 /* The buffers of state s (its pointers and sizes), into b; returns how many. */
 static size_t buffers_of(demill_world *s, buffer *b)
@@ -66,6 +66,7 @@ static size_t buffers_of(demill_world *s, buffer *b)
             dm_bucket *bk = side ? &s->pw.b[q] : &s->pp.b[q];
             ADD(bk->i, bk->cap * sizeof(uint32_t));
             ADD(bk->j, bk->cap * sizeof(uint32_t));
+            ADD(bk->t, (bk->t ? bk->cap : 0) * sizeof(uint32_t));
             ADD(bk->on, bk->cap);
             ADD(bk->hist, bk->cap * (size_t)bk->hs * sizeof(double));
         }
@@ -76,6 +77,8 @@ static size_t buffers_of(demill_world *s, buffer *b)
 
 void dm_state_free(demill_world *s)
 {
+    if (s->walls)
+        dm_walls_free_meshes(s);
     buffer b[MAX_BUFFERS];
     const size_t nb = buffers_of(s, b);
     for (size_t k = 0; k < nb; k++) {
@@ -103,7 +106,15 @@ demill_status dm_state_copy(demill_world *dst, const demill_world *src)
         memcpy(to, from, nb[k].bytes);
         *nb[k].field = to;
     }
-    if (k < count) {
+    uint32_t meshes = 0; /* the walls' meshes, each its own block */
+    for (; k == count && meshes < n.nwalls; meshes++) {
+        const dm_trimesh *m = src->walls[meshes].mesh;
+        if (m && !(n.walls[meshes].mesh = dm_trimesh_copy(m)))
+            break;
+    }
+    if (k < count || meshes < n.nwalls) {
+        for (uint32_t q = 0; q < meshes; q++)
+            dm_trimesh_free(n.walls[q].mesh);
         for (size_t q = 0; q < k; q++)
             free(*nb[q].field);
         return DEMILL_ERR_OUT_OF_MEMORY;

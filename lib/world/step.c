@@ -1,6 +1,6 @@
 /* step.c: demill_world_step(): a run prepared, then stepped under the
  * progress callback and the watchdog when they are set (the steps
- * themselves: lib/physics/integrate). */
+ * themselves: lib/physics/integrate, with feeds and outlets: flows.c). */
 #include "world/world.h"
 
 /* Steps a prepared world, under the watchdog when it is on; without it, a
@@ -9,7 +9,7 @@ demill_status dm_run_steps(demill_world *w, uint64_t steps)
 {
     if (w->watchdog)
         return dm_watched_steps(w, steps);
-    demill_status s = dm_integrate(w, steps);
+    demill_status s = dm_advance(w, steps);
     return s || !steps ? s : dm_check_finite(w);
 }
 

@@ -8,7 +8,8 @@
  *  - no contact overlaps by more than world.watchdog_overlap of its smaller
  *    radius (a wall counts as infinitely large);
  *  - energy is not created. With energy tracking on (the default) the
- *    balance kinetic + potential + elastic + dissipated - wall work may not
+ *    balance kinetic + potential + elastic + dissipated - wall work - the
+ *    energy feeds brought in net of what outlets took out may not
  *    have grown since the run started by more than a quarter of the energy
  *    that went through the system since (the largest kinetic + elastic
  *    energy and the range of potential energy seen at checks, the energy
@@ -58,13 +59,14 @@ static demill_status energies(demill_world *w, dm_watch_energy *e, int *unknown)
     e->dissipated = y->diss_normal + y->diss_tangential + y->diss_friction + y->diss_rolling +
                     b[DM_BODY_DISSIPATED];
     e->work = (w->energy_tracking ? y->wall_work : w->drum.alive ? w->drum.energy_in : 0.0) +
-              b[DM_BODY_WORK];
+              w->flows.energy + b[DM_BODY_WORK];
     *unknown = 0;
     for (uint32_t k = 0; k < w->nwalls && !w->energy_tracking; k++) {
         const dm_wall *wall = &w->walls[k];
         if (wall->kind && !wall->drum_part)
             for (int c = 0; c < 3; c++)
-                *unknown |= wall->vel[c] != 0.0 || wall->omega[c] != 0.0;
+                *unknown |= wall->vel[c] != 0.0 || wall->omega[c] != 0.0 || wall->harmonic ||
+                            wall->surface;
     }
     return s;
 }
@@ -247,7 +249,7 @@ static demill_status fail_back(demill_world *w, const char *why)
         demill_status s;
         dm_watch_energy e;
         int unknown;
-        if ((s = dm_prepare_step(w)) || (s = dm_integrate(w, g->call_start - w->base.steps)) ||
+        if ((s = dm_prepare_step(w)) || (s = dm_advance(w, g->call_start - w->base.steps)) ||
             (s = energies(w, &e, &unknown)) || (s = take(w, 1, &e)))
             return dm_fail(w, s, "%s; and going back to where this call started failed: %s",
                            msg, w->base.error);
@@ -320,7 +322,7 @@ demill_status dm_watched_steps(demill_world *w, uint64_t steps)
     const int any = steps > 0;
     while (steps) {
         const uint64_t n = steps < g->countdown ? steps : g->countdown;
-        if ((s = dm_integrate(w, n)))
+        if ((s = dm_advance(w, n)))
             return s == DEMILL_ERR_UNSTABLE ? fail_back(w, w->base.error) : s;
         steps -= n;
         g->countdown -= (uint32_t)n;

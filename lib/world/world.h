@@ -30,11 +30,16 @@ demill_status dm_resolve(const demill_world *w, demill_id id, int kind, const ch
 demill_status dm_enter(const demill_world *w, demill_id id, int kind, const char *what,
                        uint32_t *slot);
 demill_id dm_particle_id(const demill_world *w, uint32_t storage);
-/* The id of a wall slot: the wall's own id, or the drum's for its walls. */
+/* The id of a wall slot: the wall's own id, the drum's for its walls, a
+ * capped wall's for its caps. */
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
+/* Removes the user's wall in this slot (its contacts, handle and mesh). */
+void dm_wall_release(demill_world *w, uint32_t slot);
 demill_id dm_material_id(const demill_world *w, uint32_t material);
 demill_id dm_drum_id(const demill_world *w);
 demill_id dm_body_id(const demill_world *w, uint32_t slot);
+demill_id dm_feed_id(const demill_world *w, uint32_t slot);
+demill_id dm_outlet_id(const demill_world *w, uint32_t slot);
 
 /* ---- particles (particles.c, material.c) ------------------------------------------ */
 demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const double *positions,
@@ -50,6 +55,9 @@ demill_status dm_particle_mass_checked(demill_world *w, uint32_t mat, double r, 
  * dm_particle_mass_checked(); otherwise its error, and no mass changed. */
 #define DM_ALL_MATERIALS UINT32_MAX
 demill_status dm_masses_update(demill_world *w, uint32_t mat, const char *who);
+/* Removes the particles whose entry of map (one per particle, from
+ * w->grid.inv) is DM_FREE, keeping the others' order and contacts. */
+void dm_particles_compact(demill_world *w, uint32_t *map);
 
 /* ---- overlaps of new particles (overlap.c) ----------------------------------------- */
 typedef struct dm_sphere_entry {
@@ -69,7 +77,50 @@ int64_t dm_spheres_find(const dm_sphere_index *ix, const double *x, double r, ui
                         double *depth);
 uint32_t dm_wall_overlap(const demill_world *w, const double *x, double r, double *depth);
 
-/* ---- running (step.c, progress.c, watchdog.c, timestep.c) ------------------------------ */
+/* ---- size distributions (fill.c), regions (region.c), placing (place.c) ------------ */
+/* Checks a distribution (DEMILL_SIZES_*) and turns it into classes; `who`
+ * names the API function in messages. */
+demill_status dm_sizes_make(demill_world *w, const char *who, int32_t dist, const double *p,
+                            size_t np, dm_sizes *out);
+/* The relative number of particles of each class in a unit of mass of
+ * material mat (the fraction of the mass over the mean particle mass). */
+void dm_sizes_numbers(const demill_world *w, uint32_t mat, const dm_sizes *s, double *number);
+/* A diameter drawn from class k (log-uniform in it). */
+double dm_sizes_draw(const dm_sizes *s, uint32_t k, dm_rng *rng);
+/* DEMILL_OK unless a particle of the smallest or largest size of a class
+ * with particles has a mass or inertia that is not finite and positive. */
+demill_status dm_sizes_check_mass(demill_world *w, const char *who, uint32_t mat,
+                                  const dm_sizes *s, const size_t *count);
+
+/* Checks a region (DEMILL_REGION_*; bounded: not a half-space). */
+demill_status dm_region_parse(demill_world *w, const char *who, int32_t kind, const double *p,
+                              size_t np, bool bounded, dm_region *out);
+/* Whether a sphere at x of radius m lies inside (m = 0: its centre). */
+bool dm_region_contains(const demill_world *w, const dm_region *r, const double *x, double m);
+void dm_region_bounds(const demill_world *w, const dm_region *r, double lo[3], double hi[3]);
+/* The volume (in 2D the area) of a region; the drum's less its lifters. */
+double dm_region_measure(const demill_world *w, const dm_region *r);
+/* Whether a sphere of radius m fits in the region anywhere. */
+bool dm_region_fits(const demill_world *w, const dm_region *r, double m);
+/* A random centre (3 doubles) of a sphere of radius m inside the region,
+ * uniform in the part of it whose sphere lies within band[0] <= x[axis] <=
+ * band[1]; -1 when 64 tries found none. */
+int dm_region_sample(const demill_world *w, const dm_region *r, dm_rng *rng, double m, int axis,
+                     const double band[2], double *x);
+/* Places n spheres of the given radii in turn in the region, clear of the
+ * walls, of the world's particles and of each other, from the bottom up:
+ * each at the lowest free place of a set of random candidates in a layer at
+ * the region's bottom, the layer deepened by the sphere's diameter after
+ * each set without a free place, up to `sets` sets; centres into pos (3
+ * doubles each). *placed: how many were placed (the first that found no
+ * place stops it). Fails only when memory runs out. */
+demill_status dm_place(demill_world *w, const dm_region *reg, size_t n, const double *radii,
+                       uint32_t sets, dm_rng *rng, double *pos, size_t *placed);
+
+/* ---- running (step.c, flows.c, progress.c, watchdog.c, timestep.c) ---------------------- */
+/* dm_integrate(), with the outlets and feeds acting after every step while
+ * the world has any. */
+demill_status dm_advance(demill_world *w, uint64_t steps);
 /* Steps a prepared world, under the watchdog when it is on. */
 demill_status dm_run_steps(demill_world *w, uint64_t steps);
 /* Runs `steps` steps of a prepared world, reporting to its callback. */
@@ -77,6 +128,11 @@ demill_status dm_progress_steps(demill_world *w, uint64_t steps);
 demill_status dm_watched_steps(demill_world *w, uint64_t steps);
 /* DEMILL_ERR_UNSTABLE unless every position, velocity and spin is finite. */
 demill_status dm_check_finite(demill_world *w);
+/* Reads the whole file at path into *bytes (malloc'd, *size bytes; the
+ * caller frees it). Fails with DEMILL_ERR_IO or DEMILL_ERR_OUT_OF_MEMORY,
+ * the message starting with fn and path. */
+demill_status dm_read_file(demill_world *w, const char *fn, const char *path, uint8_t **bytes,
+                           size_t *size);
 void dm_watch_free(demill_world *w);
 /* DEMILL_ERR_UNSTABLE, naming the pair, unless the time step is within the
  * stability limit of every pair of materials that can meet. */

@@ -27,6 +27,7 @@ from .constants import *  # noqa: F403 - the constants and enums
 from .constants import VERSION_NUMBER, VERSION_STRING, Kind, Status
 from .drum import Drum, Lifter
 from .errors import *  # noqa: F403 - the exceptions
+from .flows import Feed, FeedTotals, Outlet, OutletTotals
 from .grinding import Grinding
 from .objects import Body, Contacts, Material, Pair, Particle, Particles, Wall
 from .state import Snapshot, VtkSeries
@@ -35,7 +36,8 @@ from .world import Progress, TimeStep, World
 __version__ = VERSION_STRING
 __all__ = (constants.__all__ + errors.__all__ + [
     "World", "Material", "Pair", "Particle", "Particles", "Wall", "Body", "Contacts", "Drum",
-    "Lifter", "Snapshot", "VtkSeries", "Grinding", "Progress", "TimeStep", "ParamInfo", "library_path",
+    "Lifter", "Feed", "FeedTotals", "Outlet", "OutletTotals",
+    "Snapshot", "VtkSeries", "Grinding", "Progress", "TimeStep", "ParamInfo", "library_path",
     "version", "version_number", "check_version", "id_kind", "param_info", "particle_field_size",
     "contact_field_size", "strerror"])
 

@@ -102,6 +102,8 @@ PROTOTYPES = {
     "demill_drum_remove": (status, (WorldP, id_t)),
     "demill_drum_set": (status, (WorldP, id_t, c_int32, c_double)),
     "demill_drum_get": (status, (WorldP, id_t, c_int32, dptr)),
+    "demill_drum_set_material": (status, (WorldP, id_t, c_int32, id_t)),
+    "demill_drum_get_material": (status, (WorldP, id_t, c_int32, idptr)),
     "demill_drum_add_lifter": (status, (WorldP, id_t, c_double, c_double, c_double, c_double)),
     "demill_drum_lifter_get": (status, (WorldP, id_t, c_uint32, c_int32, dptr)),
     "demill_drum_fill": (status, (WorldP, id_t, id_t, c_int32, dptr, c_size_t, c_int32, c_double,
@@ -119,8 +121,8 @@ PROTOTYPES = {
 }
 
 #: Functions newer than the oldest library this binding supports (progress,
-#: VTK output, snapshots and checkpoints, object listing, grinding): bound
-#: when the library has them.
+#: VTK output, snapshots and checkpoints, object listing, mesh walls, finite
+#: walls and wall motions, grinding): bound when the library has them.
 OPTIONAL_PROTOTYPES = {
     # body.h
     "demill_body_add": (status, (WorldP, c_double, dptr, c_int32, c_uint32, idptr)),
@@ -144,6 +146,38 @@ OPTIONAL_PROTOTYPES = {
     "demill_world_save_buffer": (status, (WorldP, c_void_p, c_size_t, sizeptr)),
     "demill_world_load_buffer": (status, (WorldP, c_void_p, c_size_t)),
     "demill_world_ids": (status, (WorldP, c_int32, idptr, c_size_t, sizeptr)),
+    "demill_wall_add_mesh": (status, (WorldP, id_t, c_size_t, dptr, c_size_t, POINTER(c_uint32),
+                                      idptr)),
+    "demill_wall_add_stl": (status, (WorldP, id_t, c_void_p, c_size_t, c_double, dptr, idptr)),
+    "demill_wall_load_stl": (status, (WorldP, id_t, c_char_p, c_double, dptr, idptr)),
+    "demill_drum_attach_wall": (status, (WorldP, id_t, id_t, c_int32)),
+    "demill_wall_add_polyline": (status, (WorldP, id_t, c_size_t, dptr, c_int32, idptr)),
+    "demill_wall_mesh_info": (status, (WorldP, id_t, sizeptr, sizeptr)),
+    # insert.h
+    "demill_fill_region": (status, (WorldP, c_int32, dptr, c_size_t, id_t, c_int32, dptr,
+                                    c_size_t, c_int32, c_double, c_uint64, idptr, c_size_t,
+                                    sizeptr)),
+    "demill_feed_create": (status, (WorldP, c_int32, dptr, c_size_t, id_t, c_int32, dptr,
+                                    c_size_t, c_double, dptr, c_double, c_double, c_uint64,
+                                    idptr)),
+    "demill_feed_remove": (status, (WorldP, id_t)),
+    "demill_feed_read": (status, (WorldP, id_t, dptr, POINTER(c_uint64), dptr)),
+    "demill_outlet_create": (status, (WorldP, c_int32, dptr, c_size_t, c_size_t, dptr, c_double,
+                                      idptr)),
+    "demill_outlet_remove": (status, (WorldP, id_t)),
+    "demill_outlet_read": (status, (WorldP, id_t, POINTER(c_uint64), dptr, c_size_t, sizeptr,
+                                    dptr)),
+    # wall.h: finite walls, harmonic motion, surface velocity
+    "demill_wall_add_cylinder": (status, (WorldP, id_t, dptr, dptr, c_double, c_double, c_int32,
+                                          idptr)),
+    "demill_wall_add_cone": (status, (WorldP, id_t, dptr, dptr, c_double, c_double, c_double,
+                                      c_int32, idptr)),
+    "demill_wall_add_disc": (status, (WorldP, id_t, dptr, dptr, c_double, c_double, idptr)),
+    "demill_wall_add_rectangle": (status, (WorldP, id_t, dptr, dptr, dptr, c_double, c_double,
+                                           idptr)),
+    "demill_wall_set_harmonic": (status, (WorldP, id_t, c_int32, dptr, c_double, c_double,
+                                          c_double)),
+    "demill_wall_set_surface_velocity": (status, (WorldP, id_t, dptr)),
     # grinding.h
     "demill_grinding_create": (status, (c_double, c_uint32, POINTER(GrindingP))),
     "demill_grinding_destroy": (None, (GrindingP,)),

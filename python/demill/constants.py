@@ -12,9 +12,9 @@ from enum import IntEnum, IntFlag
 __all__ = ["VERSION_MAJOR", "VERSION_MINOR", "VERSION_PATCH", "VERSION_NUMBER",
            "VERSION_STRING", "ID_NONE", "Status", "Kind", "Integrator", "WorldKey",
            "MaterialKey", "Normal", "Damping", "Tangential", "Rolling", "PairKey",
-           "ParticleField", "IdField", "AddFlag", "WallField", "BodyAxis", "BodyFlag",
-           "BodyField", "ContactField", "Energy", "DrumKey", "LifterField", "Sizes", "Fill",
-           "Spectrum"]
+           "ParticleField", "IdField", "AddFlag", "WallField", "Caps", "Harmonic", "BodyAxis",
+           "BodyFlag", "BodyField", "ContactField", "Energy", "DrumKey", "DrumPart",
+           "LifterField", "Sizes", "Fill", "Region", "Spectrum"]
 
 VERSION_MAJOR = 0
 VERSION_MINOR = 1
@@ -60,7 +60,9 @@ class Kind(IntEnum):
     PARTICLE = 2
     WALL = 3
     DRUM = 4
-    BODY = 5
+    FEED = 5
+    OUTLET = 6
+    BODY = 7
 
 
 class Integrator(IntEnum):
@@ -200,6 +202,23 @@ class WallField(IntEnum):
     ANGULAR_VELOCITY = 5
     FORCE = 6
     TORQUE = 7
+    SURFACE_VELOCITY = 8
+
+
+class Caps(IntEnum):
+    """Caps of a finite cylinder or cone (``DEMILL_CAPS_*``): START | END is BOTH."""
+
+    NONE = 0
+    START = 1
+    END = 2
+    BOTH = 3
+
+
+class Harmonic(IntEnum):
+    """Modes of a wall's harmonic motion (``DEMILL_HARMONIC_*``)."""
+
+    TRANSLATION = 1
+    ROTATION = 2
 
 
 class BodyAxis(IntFlag):
@@ -253,11 +272,12 @@ class Energy(IntEnum):
     DISSIPATED_ROLLING = 10
     DISSIPATED = 11
     TOTAL = 12
-    BODY_KINETIC = 13
-    BODY_ELASTIC = 14
-    BODY_POTENTIAL = 15
-    BODY_DISSIPATED = 16
-    BODY_WORK = 17
+    FLOW = 13
+    BODY_KINETIC = 14
+    BODY_ELASTIC = 15
+    BODY_POTENTIAL = 16
+    BODY_DISSIPATED = 17
+    BODY_WORK = 18
 
 
 class DrumKey(IntEnum):
@@ -277,6 +297,7 @@ class DrumKey(IntEnum):
     CRITICAL_DIAMETER = 414
     FILL_POROSITY = 415
     SAMPLE_INTERVAL = 416
+    SHELL = 417
     CRITICAL_SPEED = 450
     CURRENT_SPEED = 451
     ANGLE = 452
@@ -296,6 +317,17 @@ class DrumKey(IntEnum):
     ENERGY_DISSIPATED = 466
     DISSIPATION_MEAN = 467
     LIFTER_COUNT = 468
+    FORCE_X = 469
+    FORCE_Y = 470
+    FORCE_Z = 471
+
+
+class DrumPart(IntEnum):
+    """Parts of the drum, each with a material (``DEMILL_DRUM_PART_*``)."""
+
+    SHELL = 1
+    CAPS = 2
+    LIFTERS = 3
 
 
 class LifterField(IntEnum):
@@ -324,6 +356,16 @@ class Fill(IntEnum):
     FRACTION = 3
 
 
+class Region(IntEnum):
+    """Kinds of region of ``World.fill_region``, feeds and outlets
+    (``DEMILL_REGION_*``)."""
+
+    BOX = 1
+    CYLINDER = 2
+    HALF_SPACE = 3
+    DRUM = 4
+
+
 class Spectrum(IntEnum):
     """Kinds of wall in the collision spectrum (``DEMILL_SPECTRUM_*``)."""
 
@@ -350,12 +392,16 @@ C_PREFIXES = {
     BodyAxis: "DEMILL_BODY_AXIS_",
     BodyFlag: "DEMILL_BODY_",
     BodyField: "DEMILL_BODY_",
+    Caps: "DEMILL_CAPS_",
+    Harmonic: "DEMILL_HARMONIC_",
     ContactField: "DEMILL_CONTACT_",
     Energy: "DEMILL_ENERGY_",
     DrumKey: "DEMILL_DRUM_",
+    DrumPart: "DEMILL_DRUM_PART_",
     LifterField: "DEMILL_LIFTER_",
     Sizes: "DEMILL_SIZES_",
     Fill: "DEMILL_FILL_",
+    Region: "DEMILL_REGION_",
     Spectrum: "DEMILL_SPECTRUM_",
 }
 

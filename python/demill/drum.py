@@ -6,9 +6,9 @@ import ctypes
 import numpy as np
 
 from ._core import Keyed, Param, as_id, doubles, first, ptr, read_counted, read_field
-from .constants import DrumKey, Kind, LifterField
+from .constants import DrumKey, DrumPart, Kind, LifterField
 from .errors import BufferTooSmall
-from .objects import Handle, count
+from .objects import Handle, Material, count
 
 
 class Drum(Handle, Keyed):
@@ -38,6 +38,7 @@ class Drum(Handle, Keyed):
     critical_diameter = Param(DrumKey.CRITICAL_DIAMETER)
     fill_porosity = Param(DrumKey.FILL_POROSITY)
     sample_interval = Param(DrumKey.SAMPLE_INTERVAL, int)
+    shell = Param(DrumKey.SHELL, int)
     critical_speed = Param(DrumKey.CRITICAL_SPEED)
     current_speed = Param(DrumKey.CURRENT_SPEED)
     angle = Param(DrumKey.ANGLE)
@@ -57,12 +58,39 @@ class Drum(Handle, Keyed):
     energy_dissipated = Param(DrumKey.ENERGY_DISSIPATED)
     dissipation_mean = Param(DrumKey.DISSIPATION_MEAN)
     lifter_count = Param(DrumKey.LIFTER_COUNT, int)
+    force_x = Param(DrumKey.FORCE_X)
+    force_y = Param(DrumKey.FORCE_Y)
+    force_z = Param(DrumKey.FORCE_Z)
+
+    @property
+    def force(self):
+        """Force of the particles on the drum at the last force evaluation,
+        N: ``(x, y, z)``."""
+        return np.array([self.force_x, self.force_y, self.force_z])
 
     _getter, _setter = "demill_drum_get", "demill_drum_set"
 
     def remove(self):
         """Removes the drum and its walls; its id becomes invalid."""
         self.world._call("demill_drum_remove", self.id)
+
+    def set_material(self, part, material):
+        """Gives a part of the drum (:class:`DrumPart`) its own material."""
+        self.world._call("demill_drum_set_material", self.id, int(DrumPart(part)),
+                         as_id(material))
+
+    def material(self, part):
+        """The :class:`Material` of a part of the drum (:class:`DrumPart`)."""
+        out = ctypes.c_uint64()
+        self.world._call("demill_drum_get_material", self.id, int(DrumPart(part)),
+                         ctypes.byref(out))
+        return Material(self.world, out.value)
+
+    def attach_wall(self, wall, part):
+        """Makes ``wall`` (a mesh, polyline or plane of this world) a part
+        (:class:`DrumPart`) of the drum: it turns with the drum from where it
+        is now and counts in the drum's torque, power and charge shape."""
+        self.world._call("demill_drum_attach_wall", self.id, as_id(wall), int(DrumPart(part)))
 
     def add_lifter(self, angle, height, width, face_angle=0.0):
         """Adds one lifter: centre line at polar angle ``angle`` (rad, drum

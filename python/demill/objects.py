@@ -239,8 +239,11 @@ class Particles:
 
 
 class Wall(Handle, Keyed):
-    """A plane wall (:meth:`World.add_plane`). Its fields are read-only
-    3-vectors; :meth:`set_motion` moves it."""
+    """A wall: a plane (:meth:`World.add_plane`), a triangle mesh
+    (:meth:`World.add_mesh`), a polyline (:meth:`World.add_polyline`) or a
+    finite wall (:meth:`World.add_cylinder` and the others). Its fields are
+    read-only 3-vectors; :meth:`set_motion` and :meth:`set_harmonic` move
+    it."""
 
     __slots__ = ()
     kind = Kind.WALL
@@ -253,6 +256,8 @@ class Wall(Handle, Keyed):
                              "Angular velocity about the centre, rad/s.")
     force = Param(WallField.FORCE, None, "Force of the particles on the wall, N.")
     torque = Param(WallField.TORQUE, None, "Torque of the particles about the centre, N m.")
+    surface_velocity = Param(WallField.SURFACE_VELOCITY, None,
+                             "Velocity of the surface along itself, m/s.")
 
     def _get(self, field):
         return read_field(self.world, "demill_wall_get", self.id, int(field))
@@ -265,6 +270,28 @@ class Wall(Handle, Keyed):
                                              (angular_velocity, "angular_velocity"),
                                              (centre, "centre")))
         self.world._call("demill_wall_set_motion", self.id, ptr(v), ptr(w), ptr(c))
+
+    @property
+    def mesh_size(self):
+        """A mesh's or polyline's (vertices, triangles or segments)."""
+        nv, ne = ctypes.c_size_t(), ctypes.c_size_t()
+        self.world._call("demill_wall_mesh_info", self.id, ctypes.byref(nv), ctypes.byref(ne))
+        return nv.value, ne.value
+
+    def set_harmonic(self, mode, axis, amplitude, frequency, phase=0.0):
+        """Sets a harmonic motion from now on (:class:`~demill.Harmonic`):
+        the wall moves along ``axis`` by, or turns about it through its
+        centre by, ``amplitude`` sin(2π ``frequency`` t + ``phase``), t
+        from now; its pose now is the pose at zero."""
+        self.world._call("demill_wall_set_harmonic", self.id, int(mode),
+                         ptr(vector(axis, "axis")), float(amplitude), float(frequency),
+                         float(phase))
+
+    def set_surface_velocity(self, velocity):
+        """Moves the wall's surface along itself at ``velocity`` (a belt;
+        None: 0), the geometry staying put."""
+        v = vector(velocity, "velocity")
+        self.world._call("demill_wall_set_surface_velocity", self.id, ptr(v))
 
     def remove(self):
         """Removes the wall; its id becomes invalid."""

@@ -7,12 +7,13 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._core import (Closable, Keyed, Param, VectorParam, as_id, check, configure, ptr,
+from ._core import (Closable, Keyed, Param, VectorParam, as_id, check, configure, doubles, ptr,
                     read_counted, strerror, vector)
 from ._lib import ProgressFn, WorldP, lib
-from .constants import BodyFlag, Energy, Integrator, Kind, Status, WorldKey
+from .constants import BodyFlag, Caps, Energy, Integrator, Kind, Status, WorldKey
 from .drum import Drum
-from .errors import WorldClosed
+from .errors import BufferTooSmall, WorldClosed
+from .flows import Feed, Outlet
 from .objects import Body, Contacts, Material, Pair, Particle, Particles, Wall, count
 from .state import Snapshot, VtkSeries
 
@@ -247,6 +248,94 @@ class World(Closable, Keyed):
                    ctypes.byref(out))
         return Wall(self, out.value)
 
+    def add_mesh(self, material, vertices, triangles):
+        """Adds a triangle-mesh wall (3D): ``vertices`` n x 3 (m),
+        ``triangles`` m x 3 vertex indices from 0. Particles touch it from
+        both sides. A :class:`Wall`."""
+        v = doubles(vertices, (-1, 3), "vertices")
+        t = np.ascontiguousarray(triangles, dtype=np.uint32)
+        if t.ndim != 2 or t.shape[1] != 3:
+            raise ValueError(f"triangles: expected an array of shape n x 3, got {t.shape}")
+        out = ctypes.c_uint64()
+        self._call("demill_wall_add_mesh", as_id(material), v.shape[0], ptr(v), t.shape[0],
+                   t.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32)), ctypes.byref(out))
+        return Wall(self, out.value)
+
+    def add_stl(self, material, source, scale=1.0, transform=None):
+        """Adds a triangle-mesh wall (3D) from an STL file, ASCII or binary:
+        ``source`` is its path (``str`` or ``os.PathLike``) or its bytes.
+        Each point x becomes A (scale x) + t with ``transform`` = (A, t), A
+        3 x 3 and t of 3 (None: none); ``scale=0.001`` for a file in mm. A
+        :class:`Wall`."""
+        xf = None
+        if transform is not None:
+            a, t = transform
+            xf = doubles(np.concatenate([np.ravel(doubles(a, (3, 3), "transform A")),
+                                         doubles(t, (3,), "transform t")]), (12,), "transform")
+        out = ctypes.c_uint64()
+        xp = ptr(xf) if xf is not None else None
+        if isinstance(source, (bytes, bytearray, memoryview)):
+            data = bytes(source)
+            self._call("demill_wall_add_stl", as_id(material), data, len(data), float(scale),
+                       xp, ctypes.byref(out))
+        else:
+            self._call("demill_wall_load_stl", as_id(material), os.fsencode(source),
+                       float(scale), xp, ctypes.byref(out))
+        return Wall(self, out.value)
+
+    def add_polyline(self, material, points, closed=False):
+        """Adds a polyline wall (2D): the segments between consecutive
+        ``points`` (n x 2, or n x 3 with z = 0, m), and back to the first if
+        ``closed``. Particles touch it from both sides. A :class:`Wall`."""
+        p = doubles(points, None, "points")
+        if p.ndim == 2 and p.shape[1] == 2:
+            p = np.hstack([p, np.zeros((p.shape[0], 1))])
+        p = doubles(p, (-1, 3), "points")
+        out = ctypes.c_uint64()
+        self._call("demill_wall_add_polyline", as_id(material), p.shape[0], ptr(p),
+                   1 if closed else 0, ctypes.byref(out))
+        return Wall(self, out.value)
+
+    def _add_wall(self, function, material, *args):
+        out = ctypes.c_uint64()
+        self._call(function, as_id(material), *args, ctypes.byref(out))
+        return Wall(self, out.value)
+
+    def add_cylinder(self, material, point, axis, radius, length, caps=Caps.NONE):
+        """Adds a finite cylinder of ``radius`` about the axis from
+        ``point`` over ``length`` along ``axis``, a thin surface touched
+        from both sides, closed at the ends ``caps`` names
+        (:class:`~demill.Caps`); a :class:`Wall`. 3D only."""
+        return self._add_wall("demill_wall_add_cylinder", material,
+                              ptr(vector(point, "point")), ptr(vector(axis, "axis")),
+                              float(radius), float(length), int(caps))
+
+    def add_cone(self, material, point, axis, radius_start, radius_end, length,
+                 caps=Caps.NONE):
+        """Adds a cone or frustum: radius ``radius_start`` at ``point`` and
+        ``radius_end`` at ``length`` along ``axis`` (one may be 0), closed
+        at the ends ``caps`` names; a :class:`Wall`. 3D only."""
+        return self._add_wall("demill_wall_add_cone", material,
+                              ptr(vector(point, "point")), ptr(vector(axis, "axis")),
+                              float(radius_start), float(radius_end), float(length), int(caps))
+
+    def add_disc(self, material, centre, normal, outer_radius, inner_radius=0.0):
+        """Adds a disc, or an annulus with a hole of ``inner_radius`` (an
+        orifice plate), touched from both sides; a :class:`Wall`. 3D only."""
+        return self._add_wall("demill_wall_add_disc", material,
+                              ptr(vector(centre, "centre")), ptr(vector(normal, "normal")),
+                              float(outer_radius), float(inner_radius))
+
+    def add_rectangle(self, material, centre, normal, direction, half_width, half_height):
+        """Adds a rectangle patch about ``centre`` normal to ``normal``,
+        ``half_width`` along ``direction`` (its part in the plane) and
+        ``half_height`` across it, touched from both sides; a
+        :class:`Wall`. 3D only."""
+        return self._add_wall("demill_wall_add_rectangle", material,
+                              ptr(vector(centre, "centre")), ptr(vector(normal, "normal")),
+                              ptr(vector(direction, "direction")), float(half_width),
+                              float(half_height))
+
     def add_body(self, mass, centre, free_axes, gravity=True):
         """Adds a body of ``mass`` kg at ``centre`` that moves along
         ``free_axes`` (:class:`~demill.BodyAxis`, or'ed); gravity acts on it
@@ -264,6 +353,60 @@ class World(Closable, Keyed):
                    ctypes.byref(out))
         return configure(Drum(self, out.value), params)
 
+    def fill_region(self, region, region_params, material, distribution, params, target, value,
+                    seed=1):
+        """Fills a region (:class:`~demill.Region` and its numbers) with
+        particles of one material, as :meth:`Drum.fill` fills the drum, and
+        returns their ids (uint64 array)."""
+        r = doubles(region_params).reshape(-1)
+        p = doubles(params).reshape(-1)
+        args = (int(region), ptr(r), r.size, as_id(material), int(distribution), ptr(p), p.size,
+                int(target), float(value), count(seed, "seed"))
+        need = ctypes.c_size_t()
+        probe = np.empty(1, dtype=np.uint64)
+        try:  # capacity 0 asks for the number of particles, adding none
+            self._call("demill_fill_region", *args, ptr(probe), 0, ctypes.byref(need))
+        except BufferTooSmall:
+            pass
+        ids = np.empty(need.value, dtype=np.uint64)
+        added = ctypes.c_size_t()
+        self._call("demill_fill_region", *args, ptr(ids), ids.size, ctypes.byref(added))
+        return ids[:added.value]
+
+    def add_feed(self, region, region_params, material, distribution, params, mass_rate,
+                 velocity=(0, 0, 0), start=0.0, stop=float("inf"), seed=1):
+        """A :class:`Feed` inserting particles of ``material`` into a region
+        at ``mass_rate`` kg/s from ``start`` to ``stop`` s."""
+        r = doubles(region_params).reshape(-1)
+        p = doubles(params).reshape(-1)
+        out = ctypes.c_uint64()
+        self._call("demill_feed_create", int(region), ptr(r), r.size, as_id(material),
+                   int(distribution), ptr(p), p.size, float(mass_rate),
+                   ptr(vector(velocity, "velocity")), float(start), float(stop),
+                   count(seed, "seed"), ctypes.byref(out))
+        return Feed(self, out.value)
+
+    def add_outlet(self, region, region_params, edges=(), interval=1.0):
+        """An :class:`Outlet` removing the particles whose centre enters a
+        region, counted in size classes of diameter below each of ``edges``
+        (m) and above the last, with rates over ``interval`` s."""
+        r = doubles(region_params).reshape(-1)
+        e = doubles(edges).reshape(-1)
+        out = ctypes.c_uint64()
+        self._call("demill_outlet_create", int(region), ptr(r), r.size, e.size,
+                   ptr(e) if e.size else None, float(interval), ctypes.byref(out))
+        return Outlet(self, out.value)
+
+    @property
+    def feeds(self):
+        """Every feed, as a list of :class:`Feed`."""
+        return [Feed(self, i) for i in self.ids(Kind.FEED)]
+
+    @property
+    def outlets(self):
+        """Every outlet, as a list of :class:`Outlet`."""
+        return [Outlet(self, i) for i in self.ids(Kind.OUTLET)]
+
     def ids(self, kind):
         """The ids of every live object of a :class:`~demill.Kind`."""
         def call(buf, capacity, n):
@@ -277,7 +420,8 @@ class World(Closable, Keyed):
 
     @property
     def walls(self):
-        """Every plane wall, as a list of :class:`Wall`."""
+        """Every wall (planes, meshes, polylines, finite walls), as a list of
+        :class:`Wall`."""
         return [Wall(self, i) for i in self.ids(Kind.WALL)]
 
     @property

@@ -335,6 +335,28 @@ class Drum(unittest.TestCase):
             with self.assertRaises(demill.InvalidHandle):
                 drum.power
 
+    def test_part_materials_and_force(self):
+        """Each part has a material; the force on the drum is what its
+        contacts take from the particles, M g - Σ f_i (Newton's third law:
+        the particles' own contacts cancel in Σ f_i)."""
+        with demill.World(2, time_step=2e-5) as w:
+            steel, rubber = w.material(density=7800), w.material(density=1200)
+            for m in (steel, rubber):
+                w.pair(steel, m, normal=Normal.LINEAR, damping=demill.Damping.RESTITUTION,
+                       tangential=Tangential.COULOMB)
+            drum = w.add_drum(steel, diameter=0.2, lifters=4)
+            self.assertEqual(drum.material(demill.DrumPart.LIFTERS), steel)
+            drum.set_material(demill.DrumPart.LIFTERS, rubber)
+            self.assertEqual(drum.material(demill.DrumPart.LIFTERS), rubber)
+            self.assertEqual(drum.material(demill.DrumPart.SHELL), steel)
+            with self.assertRaises(demill.DimensionError):
+                drum.material(demill.DrumPart.CAPS)
+            drum.fill(steel, demill.Sizes.CLASSES, [0.01, 1.0], demill.Fill.COUNT, 60, seed=3)
+            weight = w.particles.masses.sum() * 9.81
+            w.step(2000)
+            taken = [0.0, -weight, 0.0] - w.particles.forces.sum(axis=0)
+            np.testing.assert_allclose(drum.force, taken, rtol=0, atol=1e-12 * weight)
+
 
 if __name__ == "__main__":
     unittest.main()

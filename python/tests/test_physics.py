@@ -3,13 +3,15 @@ binary collisions of known restitution, Hooke's law in a contact, the
 energy account, masses and exact wall motion."""
 
 import math
+import os
+import tempfile
 import unittest
 
 import numpy as np
 from helpers import linear_contact_time, linear_world, sphere_mass
 
 import demill
-from demill import Damping, Energy, Integrator, Normal
+from demill import Damping, Energy, Integrator, Normal, Tangential
 
 
 class FreeFall(unittest.TestCase):
@@ -184,6 +186,51 @@ class Walls(unittest.TestCase):
                 wall.point
 
 
+class FiniteWalls(unittest.TestCase):
+    def test_closest_points_and_motions(self):
+        """A sphere of radius 0.01 held 0.007 from a face (the linear law,
+        k = 5e4 N/m) feels k (r - d) = 150 N along the face's normal; 0.005
+        from a rim along a 3-4-5 direction, 250 N along it. A harmonic
+        translation puts the wall at A sin(2πft) and gives it the velocity
+        2πfA cos(2πft); a surface velocity reads back as set."""
+        w, m = linear_world(3)
+        w.pair(m, m, damping=demill.Damping.NONE, tangential=Tangential.NONE)
+        r, k = 0.01, 5e4
+        walls = [w.add_cylinder(m, (0, 0, 0), (0, 0, 1), 0.1, 0.2, demill.Caps.END),
+                 w.add_cone(m, (1, 0, 0), (0, 0, 1), 0.0, 0.1, 0.1),
+                 w.add_disc(m, (2, 0, 0), (0, 0, 1), 0.1, 0.05),
+                 w.add_rectangle(m, (3, 0, 0), (0, 1, 0), (1, 0, 0), 0.1, 0.05)]
+        cases = [((0.05, 0, 0.2 - 0.007), (0, 0, -150)),         # the cylinder's cap
+                 ((0.103, 0, 0.204), (150, 0, 200)),             # its convex rim
+                 ((2.047, 0, 0.004), (-150, 0, 200)),            # the annulus's hole rim
+                 ((3.02, 0.007, 0.01), (0, 150, 0))]             # the rectangle's face
+        for x, f in cases:
+            (pid,) = w.particles.add(m, [x], r)
+            w.step(0)
+            np.testing.assert_allclose(w.particle(pid).force, f, atol=1e-9 * k * r)
+            w.particles.remove([pid])
+        self.assertEqual(len(w.walls), 4)
+        dt, n, a, freq = 1e-4, 37, 0.002, 5.0
+        w.time_step = dt
+        rect = walls[3]
+        rect.set_harmonic(demill.Harmonic.TRANSLATION, (0, 2, 0), a, freq)
+        rect.set_surface_velocity((0.5, 0, 0))
+        w.step(n)
+        t, om = n * dt, 2 * math.pi * freq
+        np.testing.assert_allclose(rect.centre, (3, a * math.sin(om * t), 0), atol=1e-15)
+        np.testing.assert_allclose(rect.velocity, (0, a * om * math.cos(om * t), 0), atol=1e-14)
+        np.testing.assert_array_equal(rect.surface_velocity, (0.5, 0, 0))
+        with self.assertRaises(demill.InvalidValue):
+            w.add_disc(m, (0, 0, 0), (0, 0, 1), 0.1, 0.1)
+        with self.assertRaises(demill.UnknownKey):
+            rect.set_harmonic(7, (0, 1, 0), a, freq)
+        w.close()
+        w2, m2 = linear_world(2)
+        with self.assertRaises(demill.DimensionError):
+            w2.add_cylinder(m2, (0, 0, 0), (0, 1, 0), 0.1, 0.2)
+        w2.close()
+
+
 class TimeStepGuide(unittest.TestCase):
     def test_linear_suggestion(self):
         """For a linear pair: contact time π/ω (undamped: e = 1 is not
@@ -202,3 +249,71 @@ class TimeStepGuide(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class MeshWalls(unittest.TestCase):
+    def settle_on(self, dim, add_floor):
+        """A ball of 1 cm settles on a floor at y = 0 (0.1 s with e = 0.2):
+        the floor then carries its weight m g."""
+        w, m = linear_world(dim, 0.2, gravity=(0, -9.81, 0))
+        w.time_step = 1e-5
+        wall = add_floor(w, m)
+        (pid,) = w.particles.add(m, (0.0013, 0.0101, 0.0007 if dim == 3 else 0.0), 0.01)
+        w.step(10000)
+        weight = w.particle(pid).mass * 9.81
+        np.testing.assert_allclose(wall.force, (0, -weight, 0), rtol=0, atol=1e-9 * weight)
+        self.assertEqual(w.wall_contact_count, 1)
+        w.close()
+
+    def test_mesh_floor_carries_the_weight(self):
+        """Two triangles of a square, touched from above (their normal
+        points down: a mesh has two sides)."""
+        verts = [(-1, 0, -1), (1, 0, -1), (1, 0, 1), (-1, 0, 1)]
+        tris = [(0, 1, 2), (0, 2, 3)]
+        self.settle_on(3, lambda w, m: w.add_mesh(m, verts, tris))
+
+    def test_stl_floor_carries_the_weight(self):
+        """The same square as an ASCII STL file in mm (scale 0.001), from
+        its path and from its bytes, shifted by the transform's t."""
+        text = "solid floor\n"
+        for tri in ((0, 1, 2), (0, 2, 3)):
+            corners = [(-1000, -500, -1000), (1000, -500, -1000), (1000, -500, 1000),
+                       (-1000, -500, 1000)]
+            text += " facet normal 0 1 0\n  outer loop\n"
+            text += "".join("   vertex %g %g %g\n" % corners[k] for k in tri)
+            text += "  endloop\n endfacet\n"
+        text += "endsolid floor\n"
+        shift = (np.eye(3), (0, 0.5, 0))
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "floor.stl")
+            with open(path, "w") as f:
+                f.write(text)
+            self.settle_on(3, lambda w, m: w.add_stl(m, path, 0.001, shift))
+            with demill.World(3) as w:
+                with self.assertRaisesRegex(demill.FileError, "nothing.stl"):
+                    w.add_stl(w.material(), os.path.join(tmp, "nothing.stl"))
+        self.settle_on(3, lambda w, m: w.add_stl(m, text.encode(), 0.001, shift))
+        with demill.World(3) as w:
+            with self.assertRaisesRegex(demill.FormatError, "line 3"):
+                w.add_stl(w.material(), text.replace("outer", "inner").encode())
+
+    def test_polyline_floor_carries_the_weight(self):
+        pts = [(-1, 0), (0, 0), (1, 0)]
+        self.settle_on(2, lambda w, m: w.add_polyline(m, pts))
+
+    def test_mesh_size_and_errors(self):
+        with demill.World(3) as w:
+            m = w.material()
+            wall = w.add_mesh(m, [(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)])
+            self.assertEqual(wall.mesh_size, (3, 1))
+            with self.assertRaisesRegex(demill.InvalidValue, "triangle 0.*zero area"):
+                w.add_mesh(m, [(0, 0, 0), (1, 0, 0), (2, 0, 0)], [(0, 1, 2)])
+            with self.assertRaisesRegex(demill.DimensionError, "2D"):
+                w.add_polyline(m, [(0, 0), (1, 0)])
+            self.assertEqual(len(w.walls), 1)
+        with demill.World(2) as w:
+            m = w.material()
+            self.assertEqual(w.add_polyline(m, [(0, 0), (1, 0), (1, 1)], closed=True).mesh_size,
+                             (3, 3))
+            with self.assertRaisesRegex(demill.DimensionError, "3D"):
+                w.add_mesh(m, [(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)])

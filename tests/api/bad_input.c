@@ -1316,7 +1316,7 @@ static void bad_walls(scene *sc)
             "angular");
         BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_set_motion(w, wall, v0, w0, cz), "centre");
     }
-    static const int32_t unknown[] = {0, 8, 99, -1};
+    static const int32_t unknown[] = {0, 9, 99, -1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -1332,6 +1332,247 @@ static void bad_walls(scene *sc)
 START_TEST(wall_values)
 {
     both_dims(NULL, bad_walls, NULL);
+}
+END_TEST
+
+/* The finite walls' constructors (3D only), harmonic motion and surface
+ * velocity: every bad value refused with its code and a message naming it,
+ * the world unchanged. */
+static void bad_finite_walls(scene *sc)
+{
+    demill_world *w = sc->w;
+    const int flat = sc->dim == 2;
+    const demill_id mat = sc->mat[1], wall = sc->wall[0];
+    const double p[3] = {0.3, 0.05, 0}, a[3] = {0, 1, 0}, x[3] = {1, 0, 0};
+    demill_id out = DEMILL_ID_NONE;
+    if (flat) {
+        ctx(sc, "finite walls in 2D");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_wall_add_cylinder(w, mat, p, a, 0.1, 0.2, DEMILL_CAPS_NONE, &out), "3D");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_wall_add_cone(w, mat, p, a, 0.1, 0.0, 0.2, DEMILL_CAPS_NONE, &out), "3D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_add_disc(w, mat, p, a, 0.1, 0.0, &out), "3D");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_wall_add_rectangle(w, mat, p, a, x, 0.1, 0.1, &out), "3D");
+    } else {
+        for (int c = 0; c < 3; c++)
+            for (int j = 0; j < 3; j++) {
+                double pb[3], ab[3];
+                memcpy(pb, p, sizeof pb);
+                memcpy(ab, a, sizeof ab);
+                pb[c] = ab[(c + 1) % 3] = nonfinite[j];
+                ctx(sc, "finite walls: point[%d] = %g", c, nonfinite[j]);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_cylinder(w, mat, pb, a, 0.1, 0.2, DEMILL_CAPS_NONE, &out),
+                    "point", NONFINITE);
+                BAD(sc, DEMILL_ERR_NOT_FINITE, demill_wall_add_disc(w, mat, pb, a, 0.1, 0, &out),
+                    "point", NONFINITE);
+                ctx(sc, "finite walls: axis[%d] = %g", (c + 1) % 3, nonfinite[j]);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_cone(w, mat, p, ab, 0.1, 0, 0.2, DEMILL_CAPS_NONE, &out),
+                    "axis", NONFINITE);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_rectangle(w, mat, p, a, ab, 0.1, 0.1, &out), "direction",
+                    NONFINITE);
+                ctx(sc, "finite walls: a size of %g", nonfinite[j]);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_cylinder(w, mat, p, a, nonfinite[j], 0.2, 0, &out),
+                    "radius", NONFINITE);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_disc(w, mat, p, a, 0.1, nonfinite[j], &out), "inner",
+                    NONFINITE);
+                BAD(sc, DEMILL_ERR_NOT_FINITE,
+                    demill_wall_add_rectangle(w, mat, p, a, x, 0.1, nonfinite[j], &out),
+                    "half_height", NONFINITE);
+            }
+        const double zero[3] = {0, 0, 0}, up[3] = {0, 5, 0};
+        ctx(sc, "finite walls: bad shapes");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_wall_add_cylinder(w, mat, p, zero, 0.1, 0.2, 0, &out), "axis", "zero");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_cylinder(w, mat, p, a, -0.1, 0.2, 0, &out),
+            "radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_cylinder(w, mat, p, a, 0.0, 0.2, 0, &out),
+            "radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_cylinder(w, mat, p, a, 0.1, 0.0, 0, &out),
+            "length");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_cylinder(w, mat, p, a, 0.1, -1, 0, &out),
+            "length");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_cylinder(w, mat, p, a, 0.1, 0.2, 4, &out),
+            "caps");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_wall_add_cone(w, mat, p, a, 0.1, -0.01, 0.2, 0, &out), "radius_end");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_disc(w, mat, p, zero, 0.1, 0, &out),
+            "normal", "zero");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_disc(w, mat, p, a, 0.1, 0.1, &out),
+            "inner_radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_disc(w, mat, p, a, 0.1, 0.2, &out),
+            "inner_radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_disc(w, mat, p, a, 0.0, 0.0, &out),
+            "outer_radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_disc(w, mat, p, a, 0.1, -0.1, &out),
+            "inner_radius");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_rectangle(w, mat, p, a, up, 0.1, 0.1, &out),
+            "parallel");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_wall_add_rectangle(w, mat, p, a, zero, 0.1, 0.1, &out), "direction");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_rectangle(w, mat, p, a, x, 0.0, 0.1, &out),
+            "half_width");
+        ctx(sc, "finite walls: NULL arguments");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_cylinder(w, mat, NULL, a, 0.1, 0.2, 0, &out),
+            "point");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_cone(w, mat, p, NULL, 0.1, 0, 0.2, 0, &out),
+            "axis");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_disc(w, mat, p, a, 0.1, 0, NULL), "out");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_rectangle(w, mat, p, a, NULL, 0.1, 0.1, &out),
+            "direction");
+    }
+
+    /* harmonic motion */
+    const double z[3] = {0, 0, 1}, zero[3] = {0, 0, 0};
+    ctx(sc, "wall_set_harmonic bad mode, axis, values");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_wall_set_harmonic(w, wall, 0, a, 1e-3, 10, 0), "mode");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_wall_set_harmonic(w, wall, 3, a, 1e-3, 10, 0), "mode");
+    BAD(sc, DEMILL_ERR_NULL_POINTER,
+        demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, NULL, 1e-3, 10, 0), "axis");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, zero, 1e-3, 10, 0), "axis");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, a, 1e-3, 0, 0),
+        "frequency");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_ROTATION, z, 1e-3, -5, 0), "frequency");
+    for (int j = 0; j < 3; j++) {
+        ctx(sc, "wall_set_harmonic with %g", nonfinite[j]);
+        BAD(sc, DEMILL_ERR_NOT_FINITE,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, a, nonfinite[j], 10, 0),
+            "amplitude", NONFINITE);
+        BAD(sc, DEMILL_ERR_NOT_FINITE,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, a, 1e-3, nonfinite[j], 0),
+            "frequency", NONFINITE);
+        BAD(sc, DEMILL_ERR_NOT_FINITE,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_ROTATION, z, 1e-3, 10, nonfinite[j]),
+            "phase", NONFINITE);
+        const double an[3] = {nonfinite[j], 1, 0};
+        BAD(sc, DEMILL_ERR_NOT_FINITE,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, an, 1e-3, 10, 0),
+            "axis", NONFINITE);
+        const double un[3] = {0.1, nonfinite[j], 0};
+        ctx(sc, "wall_set_surface_velocity with %g", nonfinite[j]);
+        BAD(sc, DEMILL_ERR_NOT_FINITE, demill_wall_set_surface_velocity(w, wall, un), "velocity",
+            NONFINITE);
+    }
+    if (flat) {
+        ctx(sc, "wall motions out of the plane in 2D");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_TRANSLATION, z, 1e-3, 10, 0), "axis");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_wall_set_harmonic(w, wall, DEMILL_HARMONIC_ROTATION, a, 1e-3, 10, 0), "z");
+        const double uz[3] = {0.1, 0, 0.1};
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_set_surface_velocity(w, wall, uz), "velocity");
+    }
+}
+
+START_TEST(finite_wall_values)
+{
+    both_dims(NULL, bad_finite_walls, NULL);
+}
+END_TEST
+
+/* A mesh (3D: a roof of two triangles) or polyline (2D: a V) beside the
+ * stack, so that the bad calls meet a world with one. */
+static void setup_mesh(scene *sc)
+{
+    static const double v[] = {0.1,  0.02, -0.05, 0.15, 0.05, -0.05,
+                               0.15, 0.05, 0.05,  0.1,  0.02, 0.05};
+    static const double p[] = {0.1, 0.05, 0, 0.13, 0.01, 0, 0.16, 0.05, 0};
+    static const uint32_t t[] = {0, 1, 2, 0, 2, 3};
+    demill_world *w = sc->w;
+    if (sc->dim == 3)
+        DM_OK(w, demill_wall_add_mesh(w, sc->mat[0], 4, v, 2, t, &sc->wall[sc->nwall]));
+    else
+        DM_OK(w, demill_wall_add_polyline(w, sc->mat[0], 3, p, 0, &sc->wall[sc->nwall]));
+    sc->nwall++;
+}
+
+static void bad_meshes(scene *sc)
+{
+    demill_world *w = sc->w;
+    const demill_id mat = sc->mat[1];
+    demill_id out = DEMILL_ID_NONE;
+    double v[] = {0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 1};
+    uint32_t t[] = {0, 1, 2, 1, 3, 2};
+    size_t nv, ne;
+    if (sc->dim == 2) {
+        ctx(sc, "wall_add_mesh in 2D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_add_mesh(w, mat, 4, v, 2, t, &out), "3D");
+        double p[] = {0, 0, 0, 0.1, 0, 0, 0.2, 0.05, 0};
+        ctx(sc, "wall_add_polyline bad points");
+        for (int j = 0; j < 3; j++) {
+            p[4] = nonfinite[j];
+            BAD(sc, DEMILL_ERR_NOT_FINITE, demill_wall_add_polyline(w, mat, 3, p, 0, &out),
+                "vertex 1", NONFINITE);
+        }
+        p[4] = 0.0;
+        p[5] = 0.01;
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_add_polyline(w, mat, 3, p, 0, &out), "point 1",
+            "z");
+        p[5] = 0.0;
+        p[6] = 0.1;
+        p[7] = 0.0;
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_polyline(w, mat, 3, p, 0, &out),
+            "segment 1", "zero length");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_polyline(w, mat, 2, p, 1, &out),
+            "points");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_polyline(w, mat, 1, p, 0, &out),
+            "points");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_polyline(w, mat, 3, p, 2, &out),
+            "closed");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_polyline(w, mat, 3, NULL, 0, &out),
+            "points");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_polyline(w, mat, 3, p, 0, NULL), "out");
+    } else {
+        double p[] = {0, 0, 0, 0.1, 0, 0, 0.2, 0.05, 0};
+        ctx(sc, "wall_add_polyline in 3D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_wall_add_polyline(w, mat, 3, p, 0, &out), "2D");
+        ctx(sc, "wall_add_mesh bad vertices");
+        for (int j = 0; j < 3; j++) {
+            v[7] = nonfinite[j];
+            BAD(sc, DEMILL_ERR_NOT_FINITE, demill_wall_add_mesh(w, mat, 4, v, 2, t, &out),
+                "vertex 2", NONFINITE);
+        }
+        v[7] = 0.0;
+        ctx(sc, "wall_add_mesh bad triangles");
+        t[4] = 4;
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_mesh(w, mat, 4, v, 2, t, &out),
+            "triangle 1", "vertex 4");
+        t[4] = 1; /* triangle 1 is (1, 1, 2) */
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_mesh(w, mat, 4, v, 2, t, &out),
+            "triangle 1", "zero area");
+        t[4] = 3; /* vertex 3 on the line through 1 and 2: 1 + 2 (2 - 1) */
+        v[9] = -1.0, v[11] = 2.0;
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_mesh(w, mat, 4, v, 2, t, &out),
+            "triangle 1", "zero area");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_add_mesh(w, mat, 4, v, 0, t, &out),
+            "triangles");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_mesh(w, mat, 4, NULL, 2, t, &out),
+            "vertices");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_mesh(w, mat, 4, v, 2, NULL, &out),
+            "triangles");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_add_mesh(w, mat, 4, v, 2, t, NULL), "out");
+    }
+    ctx(sc, "wall_mesh_info");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_mesh_info(w, sc->wall[0], &nv, &ne), "mesh");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_mesh_info(w, sc->wall[1], NULL, &ne),
+        "n_vertices");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_wall_mesh_info(w, sc->wall[1], &nv, NULL),
+        "n_elements");
+    DM_OK(w, demill_wall_mesh_info(w, sc->wall[1], &nv, &ne));
+    ck_assert(nv == (sc->dim == 3 ? 4u : 3u) && ne == 2);
+}
+
+START_TEST(mesh_values)
+{
+    both_dims(setup_mesh, bad_meshes, NULL);
 }
 END_TEST
 
@@ -1436,7 +1677,8 @@ static void bad_bodies(scene *sc)
     BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_get(w, b, 7, o), "body field");
     BAD(sc, DEMILL_ERR_NULL_POINTER, demill_body_get(w, b, DEMILL_BODY_POSITION, NULL), "out");
     BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_energy(w, b, DEMILL_ENERGY_TOTAL, o), "energy");
-    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_energy(w, b, 18, o), "energy");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_energy(w, b, DEMILL_ENERGY_FLOW, o), "energy");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_body_energy(w, b, 19, o), "energy");
     BAD(sc, DEMILL_ERR_NULL_POINTER, demill_body_energy(w, b, DEMILL_ENERGY_BODY_WORK, NULL),
         "value");
     BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_body_remove(w, sc->wall[1]), "body");
@@ -1786,7 +2028,7 @@ static void bad_reads(scene *sc)
         ctx(sc, "world_energy term %d into NULL", (int)t);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_world_energy(w, t, NULL), "NULL");
     }
-    static const int32_t unknown_e[] = {0, 18, 100, -1};
+    static const int32_t unknown_e[] = {0, 19, 100, -1};
     for (size_t k = 0; k < sizeof unknown_e / sizeof unknown_e[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown_e[k]);
@@ -2163,6 +2405,8 @@ int main(void)
     tcase_add_test(tc, particle_set_values);
     tcase_add_test(tc, wall_values);
     tcase_add_test(tc, body_values);
+    tcase_add_test(tc, finite_wall_values);
+    tcase_add_test(tc, mesh_values);
     tcase_add_test(tc, removed_handles);
     tcase_add_test(tc, foreign_handles);
     tcase_add_test(tc, wrong_kind_and_none_handles);

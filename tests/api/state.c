@@ -10,7 +10,9 @@
  * every part of the state: a 3D mill with lifters turning up to speed over a
  * ramp, Hertz-Mindlin contacts with rolling friction, a collision spectrum
  * and particles removed (free handles); a 2D box of discs with a moving
- * piston wall, linear contacts, on each of the three integrators; the same
+ * piston wall, linear contacts, on each of the three integrators; finite
+ * walls of every kind (a capped cylinder, an annulus, a rectangle, a cone)
+ * in harmonic, rigid and belt motion, with balls thrown at each; the same
  * box as a body on a spring and a damper, driven, with a floor of fixed
  * discs (velocity Verlet).
  *
@@ -29,6 +31,7 @@
  * steps. (tests/fuzz/ runs the loader under libFuzzer for longer.)
  */
 #define _POSIX_C_SOURCE 200809L /* getpid */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,7 +45,7 @@ static const char *self; /* this program, run again as the new process */
 /* ------------------------------------------------------------------------ */
 /* Scenes                                                                     */
 
-/* A 3D mill: 8 lifters, 5 and 6 mm balls filled to 25 %, a few removed, a
+/* A 3D mill: 8 lifters of the balls' steel in a liner shell, 5 and 6 mm balls filled to 25 %, a few removed, a
  * spectrum recorded, turning up to 75 % of critical over a 0.05 s ramp. */
 static demill_world *mill3d(int integrator)
 {
@@ -63,6 +66,7 @@ static demill_world *mill3d(int integrator)
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTERS, 8));
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTER_HEIGHT, 0.008));
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTER_WIDTH, 0.008));
+    DM_OK(w, demill_drum_set_material(w, drum, DEMILL_DRUM_PART_LIFTERS, balls));
     const double sizes[4] = {0.005, 0.5, 0.006, 0.5};
     demill_id ids[2000];
     size_t added;
@@ -136,16 +140,72 @@ static demill_world *box2d_body(void)
     return w;
 }
 
+/* Finite walls in every motion: a can (a cylinder capped below) vibrating
+ * up and down whose surface moves as a belt, an orifice plate (annulus)
+ * rocking about its axis, a tilted rectangle rocking about its normal and
+ * a hopper (cone) turning, with balls thrown at each. */
+static demill_world *walls3d(void)
+{
+    demill_world *w;
+    demill_id balls, liner, can, plate, shelf, hopper;
+    ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+    dm_test_mill_materials(w, &balls, &liner);
+    const double o[3] = {0, 0, 0}, y[3] = {0, 1, 0}, x[3] = {1, 0, 0}, belt[3] = {0.5, 0, 0.2};
+    const double ring[3] = {0, 0.06, 0}, top[3] = {0, 0.07, 0}, mid[3] = {0.01, 0.03, 0};
+    const double tilt[3] = {0.3, 1, 0}, spin[3] = {0, 20, 0};
+    DM_OK(w, demill_wall_add_cylinder(w, liner, o, y, 0.05, 0.1, DEMILL_CAPS_START, &can));
+    DM_OK(w, demill_wall_set_harmonic(w, can, DEMILL_HARMONIC_TRANSLATION, y, 5e-4, 30, 0.3));
+    DM_OK(w, demill_wall_set_surface_velocity(w, can, belt));
+    DM_OK(w, demill_wall_add_disc(w, liner, ring, y, 0.05, 0.02, &plate));
+    DM_OK(w, demill_wall_set_harmonic(w, plate, DEMILL_HARMONIC_ROTATION, y, 0.2, 10, 0));
+    DM_OK(w, demill_wall_add_rectangle(w, liner, mid, tilt, x, 0.02, 0.02, &shelf));
+    DM_OK(w, demill_wall_set_harmonic(w, shelf, DEMILL_HARMONIC_ROTATION, tilt, 0.1, 15, 1));
+    DM_OK(w, demill_wall_add_cone(w, liner, top, y, 0.02, 0.05, 0.03, DEMILL_CAPS_NONE,
+                                  &hopper));
+    DM_OK(w, demill_wall_set_motion(w, hopper, NULL, spin, NULL));
+    enum { N = 22 };
+    double p[3 * N], v[3 * N], r[N];
+    for (int k = 0; k < N; k++) {
+        const double a = 2 * 3.14159265358979 * k / 6;
+        r[k] = 0.004;
+        v[3 * k] = v[3 * k + 2] = 0;
+        v[3 * k + 1] = -0.3;
+        if (k < 9) { /* on the can's floor */
+            p[3 * k] = 0.012 * (k % 3 - 1) - 0.015;
+            p[3 * k + 1] = 0.0042;
+            p[3 * k + 2] = 0.012 * (k / 3 - 1);
+        } else if (k < 15) { /* above the plate */
+            p[3 * k] = 0.035 * cos(a);
+            p[3 * k + 1] = 0.0655;
+            p[3 * k + 2] = 0.035 * sin(a);
+        } else if (k < 21) { /* in the hopper, thrown outwards */
+            p[3 * k] = 0.026 * cos(a);
+            p[3 * k + 1] = 0.085;
+            p[3 * k + 2] = 0.026 * sin(a);
+            v[3 * k] = 0.5 * cos(a);
+            v[3 * k + 2] = 0.5 * sin(a);
+        } else { /* onto the shelf */
+            p[3 * k] = 0.01;
+            p[3 * k + 1] = 0.0375;
+            p[3 * k + 2] = 0;
+        }
+    }
+    DM_OK(w, demill_particles_add(w, balls, N, p, r, v, DEMILL_ADD_NO_OVERLAP, NULL));
+    return w;
+}
+
 static demill_world *scene(int which)
 {
     static const int integrators[3] = {DEMILL_INTEGRATOR_VELOCITY_VERLET,
                                        DEMILL_INTEGRATOR_SYMPLECTIC_EULER,
                                        DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT};
-    return which == 0   ? mill3d(DEMILL_INTEGRATOR_VELOCITY_VERLET)
-           : which == 4 ? box2d_body()
-                        : box2d(integrators[which - 1]);
+    if (which == 4)
+        return walls3d();
+    if (which == 5)
+        return box2d_body();
+    return which == 0 ? mill3d(DEMILL_INTEGRATOR_VELOCITY_VERLET) : box2d(integrators[which - 1]);
 }
-#define SCENES 5
+#define SCENES 6
 #define HALF 2500 /* n steps: 0.025 s, with many neighbour rebuilds and contacts */
 
 /* ------------------------------------------------------------------------ */
@@ -291,7 +351,8 @@ START_TEST(snapshot_restores_bitwise)
     same_bytes(first, again, "the run repeated from the snapshot");
 
     /* into another world, of the other dimension, whose ids then name it */
-    const int dim = _i == 0 ? 3 : 2;
+    const int steel = _i == 0 || _i == 4; /* the 3D scenes, of the mill's materials */
+    const int dim = steel ? 3 : 2;
     ck_assert_int_eq(demill_world_create(5 - dim, &other), DEMILL_OK);
     DM_OK(other, demill_snapshot_restore(other, snap));
     double d;
@@ -307,12 +368,12 @@ START_TEST(snapshot_restores_bitwise)
     DM_OK(other, demill_world_ids(other, DEMILL_KIND_PARTICLE, NULL, 0, &np));
     DM_OK(w, demill_world_get(w, DEMILL_WORLD_PARTICLE_COUNT, &d));
     ck_assert_uint_eq(np, (size_t)d);
-    ck_assert_uint_eq(nm, _i == 0 ? 2 : 1);
+    ck_assert_uint_eq(nm, steel ? 2 : 1);
     ck_assert_uint_eq(nd, _i == 0 ? 1 : 0);
-    ck_assert_uint_eq(nw, _i == 0 ? 0 : 4);
+    ck_assert_uint_eq(nw, _i == 0 ? 0 : 4); /* a capped wall is one wall */
     double density;
     DM_OK(other, demill_material_get(other, ids[0], DEMILL_MATERIAL_DENSITY, &density));
-    ck_assert(density == (_i == 0 ? 7800 : 2500));
+    ck_assert(density == (steel ? 7800 : 2500));
     if (_i == 0) {
         demill_id drum, mine;
         DM_OK(other, demill_world_ids(other, DEMILL_KIND_DRUM, &drum, 1, NULL));
@@ -423,9 +484,13 @@ START_TEST(truncated_and_corrupt_checkpoints_are_refused)
                 "a corrupted byte");
     }
     memcpy(bad, good.b, good.n);
-    const uint32_t newer = 4;
+    uint32_t newer; /* the format after the one this library writes */
+    memcpy(&newer, good.b + 8, 4);
+    newer++;
     memcpy(bad + 8, &newer, 4);
-    refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "format version 4", "a newer format");
+    char word[32];
+    snprintf(word, sizeof word, "format version %u", (unsigned)newer);
+    refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, word, "a newer format");
     memcpy(bad, good.b, good.n);
     memcpy(bad + good.n, "trailing", 8);
     refused(target, before, bad, good.n + 8, DEMILL_ERR_FORMAT, "trailing", "trailing bytes");
@@ -538,6 +603,44 @@ START_TEST(drum_values_the_api_refuses_are_refused)
         refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, cases[c].word, cases[c].word);
     }
     /* unchanged, it loads */
+    DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
+    release(w, target, good, before, bad);
+}
+END_TEST
+
+/* A checkpoint is held to the bounds the API holds a finite wall and its
+ * motion to: a cone's radius below 0, a rectangle's half-width that is not
+ * finite, a harmonic frequency below 0 or not finite, written behind a
+ * repaired checksum, are refused on load. */
+START_TEST(finite_wall_values_the_api_refuses_are_refused)
+{
+    demill_world *w, *target;
+    demill_id m, cone, rect;
+    ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+    ck_assert_int_eq(demill_world_create(3, &target), DEMILL_OK);
+    DM_OK(w, demill_material_create(w, &m));
+    const double o[3] = {0, 0, 0}, y[3] = {0, 1, 0}, x[3] = {1, 0, 0};
+    const double radius = 0.0789, half = 0.0321, freq = 13.7;
+    DM_OK(w, demill_wall_add_cone(w, m, o, y, 0.0456, radius, 0.1, DEMILL_CAPS_START, &cone));
+    DM_OK(w, demill_wall_add_rectangle(w, m, o, y, x, half, 0.0123, &rect));
+    DM_OK(w, demill_wall_set_harmonic(w, rect, DEMILL_HARMONIC_ROTATION, x, 0.1, freq, 0));
+    bytes good = checkpoint_of(w), before = checkpoint_of(target);
+    const struct {
+        double value, bad;
+        const char *word;
+    } cases[] = {{radius, -0.01, "inconsistent"},
+                 {half, NAN, "not finite"},
+                 {freq, -2.0, "inconsistent"},
+                 {freq, INFINITY, "not finite"}};
+    unsigned char *bad = malloc(good.n);
+    ck_assert_ptr_nonnull(bad);
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        const size_t at = unique_offset(good, &cases[c].value, 8);
+        memcpy(bad, good.b, good.n);
+        memcpy(bad + at, &cases[c].bad, 8);
+        dm_test_ckpt_repair(bad, good.n);
+        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, cases[c].word, "a finite wall");
+    }
     DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
     release(w, target, good, before, bad);
 }
@@ -864,6 +967,7 @@ int main(int argc, char **argv)
         {"repaired", corruption_behind_a_repaired_checksum_never_crashes, 1},
         {"drum", drum_values_the_api_refuses_are_refused, 1},
         {"impacts", impact_recordings_not_finite_are_refused, 1},
+        {"finite_walls", finite_wall_values_the_api_refuses_are_refused, 1},
         {"empty", empty_state_into_a_refining_world, 1},
         {"files", file_errors, 1},
         {"accepted", accepted_states_reload, 1},

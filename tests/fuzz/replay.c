@@ -1,4 +1,4 @@
-/* replay.c: runs the fuzz target (checkpoint.c) on files or on every file
+/* replay.c: runs a fuzz target (checkpoint.c, api.c, stl.c) on files or on every file
  * of directories given as arguments, without libFuzzer: CTest's regression
  * run over tests/fuzz/corpus/. Prints how many inputs ran. */
 #define _POSIX_C_SOURCE 200809L /* opendir */

@@ -10,8 +10,8 @@ velocities, spins, radii and materials as set; masses 4/3 pi r^3 rho;
 forces m g (nothing touches); the shell's points on the circle of radius
 D/2; lifters at their polar angle plus the drum's angle (speed times the
 world's time); the plane's patch on the plane, facing its normal, as wide as
-the scene's box; the series' frames at increasing times and in free fall
-between them. Without the vtk module the test fails: CI installs it.
+the scene's box; the finite walls' points on their surfaces; the series'
+frames at increasing times and in free fall between them. Without the vtk module the test fails: CI installs it.
 """
 import math
 import os
@@ -344,6 +344,44 @@ class ReadBack(unittest.TestCase):
         self.assertEqual(array(data, "part", "cell"), [0])
         # a scene of one point has no extent: the patch is 1 m wide
         self.check_plane(points(data), cells(data), PLANE3, (PLANE3["p"], 0.5), 3)
+
+    def test_finite_walls(self):
+        """Every point of a finite wall's cells lies on its surface: the
+        cylinder's at radius 0.1 from its axis between heights 0 and 0.2
+        (its caps' at height 0 or 0.2 and radius 0 or 0.1), the cone's at
+        radius h from its axis (apex at h = 0), the annulus's in its plane
+        at radius 0.04 or 0.1, the rectangle's at its 4 corners; 120 cells
+        for each surface of revolution (side, caps, cone, annulus) and one
+        for the rectangle; all of part 0, one wall id per wall."""
+        data = read(self.path("finite_walls.vtp"))
+        pts, cl = points(data), cells(data)
+        part, wall = array(data, "part", "cell"), array(data, "wall", "cell")
+        self.assertEqual(set(part), {0})
+        ids = sorted(set(wall), key=wall.index)
+        self.assertEqual(len(ids), 4)
+        self.assertTrue(all(kind(i) == KIND_WALL for i in ids), "not wall ids")
+        by_wall = [[c for c, i in zip(cl, wall) if i == w] for w in ids]
+        self.assertEqual([len(c) for c in by_wall], [360, 120, 120, 1])
+
+        def on(k, test, what):
+            for name, c in by_wall[k]:
+                self.assertEqual(name, "poly")
+                for q in c:
+                    self.assertTrue(test(pts[q]), "%s: point %s" % (what, pts[q]))
+
+        def near(a, b):
+            return abs(a - b) <= 1e-12
+
+        on(0, lambda p: (near(math.hypot(p[0], p[2]), 0.1) and -1e-12 <= p[1] <= 0.2 + 1e-12)
+           or ((near(p[1], 0) or near(p[1], 0.2)) and math.hypot(p[0], p[2]) <= 0.1 + 1e-12),
+           "cylinder")
+        on(1, lambda p: near(math.hypot(p[0] - 0.5, p[1]), p[2]) and -1e-12 <= p[2] <= 0.1 + 1e-12,
+           "cone")
+        on(2, lambda p: near(p[0], -0.5) and (near(math.hypot(p[1], p[2]), 0.1) or
+                                              near(math.hypot(p[1], p[2]), 0.04)), "annulus")
+        corners = {(sx * 0.2, 0.0, 0.5 + sz * 0.1) for sx in (-1, 1) for sz in (-1, 1)}
+        got = {tuple(round(c, 12) + 0.0 for c in pts[q]) for q in by_wall[3][0][1]}
+        self.assertEqual(got, corners)
 
     # ---- the series ----
     def test_series(self):

@@ -28,6 +28,12 @@
  * empty: a 3D world with nothing: empty_particles.vtu, empty_walls.vtp.
  * plane: a 3D world with only the plane wall of 3d:
  *   plane_walls.vtp.
+ * finite: a 3D world with a cylinder about the axis from (0, 0, 0) along
+ *   (0, 1, 0), radius 0.1, length 0.2, capped at both ends; a cone from
+ *   (0.5, 0, 0) along (0, 0, 1), radius 0 there and 0.1 at length 0.1; an
+ *   annulus about (-0.5, 0, 0), normal (1, 0, 0), radii 0.1 and 0.04; a
+ *   rectangle about (0, 0, 0.5), normal (0, 1, 0), half-widths 0.2 along
+ *   (1, 0, 0) and 0.1 across: finite_walls.vtp.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -178,6 +184,22 @@ static void scene_empty_and_plane(void)
     demill_world_destroy(w);
 }
 
+static void scene_finite(void)
+{
+    demill_world *w;
+    check(demill_world_create(3, &w), "world");
+    g_world = w;
+    demill_id m = material(w, 7800), id;
+    const double o[3] = {0, 0, 0}, y[3] = {0, 1, 0}, cone[3] = {0.5, 0, 0}, z[3] = {0, 0, 1};
+    const double ring[3] = {-0.5, 0, 0}, x[3] = {1, 0, 0}, rect[3] = {0, 0, 0.5};
+    check(demill_wall_add_cylinder(w, m, o, y, 0.1, 0.2, DEMILL_CAPS_BOTH, &id), "cylinder");
+    check(demill_wall_add_cone(w, m, cone, z, 0.0, 0.1, 0.1, DEMILL_CAPS_NONE, &id), "cone");
+    check(demill_wall_add_disc(w, m, ring, x, 0.1, 0.04, &id), "annulus");
+    check(demill_wall_add_rectangle(w, m, rect, y, x, 0.2, 0.1, &id), "rectangle");
+    check(demill_vtk_write_walls(w, path("finite_walls.vtp")), "finite walls");
+    demill_world_destroy(w);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -188,5 +210,6 @@ int main(int argc, char **argv)
     scene3d();
     scene2d();
     scene_empty_and_plane();
+    scene_finite();
     return EXIT_SUCCESS;
 }

@@ -33,7 +33,14 @@
  *    rest in a pocket, its centre √(4r² − s²/2) above theirs (s the spacing:
  *    it touches four), while the floor's positions, velocities and spins stay
  *    bitwise what they were and the floor's balls, which overlap, never form
- *    contacts with each other. */
+ *    contacts with each other.
+ * Walls of the other kinds:
+ *  - a mesh, a rectangle and an open cylinder attached to a body move with
+ *    it and stay where it leaves them when it is removed (a ball pressed
+ *    into them feels the force of the same wall added there: bitwise once
+ *    the body is removed);
+ *  - a wall of the drum, a capped finite wall and a wall in harmonic motion
+ *    are refused, the world unchanged. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -284,6 +291,147 @@ START_TEST(ball_on_rough_floor)
 }
 END_TEST
 
+/* The checkpoint of w, to compare the world before and after a refused call. */
+static unsigned char *saved(demill_world *w, size_t *n)
+{
+    DM_OK(w, demill_world_save_buffer(w, NULL, 0, n));
+    unsigned char *b = malloc(*n);
+    ck_assert_ptr_nonnull(b);
+    DM_OK(w, demill_world_save_buffer(w, b, *n, n));
+    return b;
+}
+
+/* demill_body_attach_wall() refuses, with a message naming the reason and
+ * the world left as it was: a wall attached to the drum, a finite wall with
+ * caps (its caps would not follow) and a wall in harmonic motion; a body's
+ * wall cannot be given a harmonic motion or be attached to the drum. */
+START_TEST(attach_refuses_walls_it_cannot_move)
+{
+    demill_id mat, body, drum, plane, can, shaker;
+    demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_RESTITUTION, &mat);
+    const double c[3] = {0, 0, 0}, p[3] = {0, 0.2, 0}, y[3] = {0, 1, 0}, o[3] = {0.5, 0, 0};
+    DM_OK(w, demill_body_add(w, 1.0, c, DEMILL_BODY_AXIS_Y, 0, &body));
+    DM_OK(w, demill_drum_create(w, mat, &drum));
+    DM_OK(w, demill_wall_add_plane(w, mat, p, y, &plane));
+    DM_OK(w, demill_drum_attach_wall(w, drum, plane, DEMILL_DRUM_PART_SHELL));
+    DM_OK(w, demill_wall_add_cylinder(w, mat, o, y, 0.05, 0.1, DEMILL_CAPS_BOTH, &can));
+    DM_OK(w, demill_wall_add_plane(w, mat, c, y, &shaker));
+    DM_OK(w, demill_wall_set_harmonic(w, shaker, DEMILL_HARMONIC_TRANSLATION, y, 1e-3, 20, 0));
+    const struct {
+        demill_id wall;
+        const char *word;
+    } cases[3] = {{plane, "drum"}, {can, "caps"}, {shaker, "harmonic"}};
+    for (int k = 0; k < 3; k++) {
+        size_t n0, n1;
+        unsigned char *before = saved(w, &n0);
+        ck_assert_int_eq(demill_body_attach_wall(w, body, cases[k].wall),
+                         DEMILL_ERR_INVALID_VALUE);
+        ck_assert_msg(strstr(demill_world_last_error(w), cases[k].word), "%s",
+                      demill_world_last_error(w));
+        unsigned char *after = saved(w, &n1);
+        ck_assert(n0 == n1 && memcmp(before, after, n0) == 0);
+        free(before);
+        free(after);
+    }
+    /* and once attached, a wall cannot be given a harmonic motion */
+    demill_id free_wall;
+    DM_OK(w, demill_wall_add_plane(w, mat, o, y, &free_wall));
+    DM_OK(w, demill_body_attach_wall(w, body, free_wall));
+    ck_assert_int_eq(demill_wall_set_harmonic(w, free_wall, DEMILL_HARMONIC_TRANSLATION, y, 1e-3,
+                                              20, 0),
+                     DEMILL_ERR_INVALID_VALUE);
+    /* nor be attached to the drum */
+    ck_assert_int_eq(demill_drum_attach_wall(w, drum, free_wall, DEMILL_DRUM_PART_SHELL),
+                     DEMILL_ERR_INVALID_VALUE);
+    ck_assert(strstr(demill_world_last_error(w), "body"));
+    demill_world_destroy(w);
+}
+END_TEST
+
+/* A floor y = y0 (kind 0: a mesh of two triangles, 1: a rectangle, 2: an
+ * open cylinder's side seen from inside, its axis along x at height y0 +
+ * 0.1) of material mat. */
+static demill_id add_floor(demill_world *w, demill_id mat, int kind, double y0)
+{
+    demill_id id;
+    if (kind == 0) {
+        const double v[12] = {-0.1, y0, -0.1, 0.1, y0, -0.1, 0.1, y0, 0.1, -0.1, y0, 0.1};
+        const uint32_t t[6] = {0, 1, 2, 0, 2, 3};
+        DM_OK(w, demill_wall_add_mesh(w, mat, 4, v, 2, t, &id));
+    } else if (kind == 1) {
+        const double c[3] = {0, y0, 0}, n[3] = {0, 1, 0}, e[3] = {1, 0, 0};
+        DM_OK(w, demill_wall_add_rectangle(w, mat, c, n, e, 0.1, 0.1, &id));
+    } else {
+        const double p[3] = {-0.1, y0 + 0.1, 0}, x[3] = {1, 0, 0};
+        DM_OK(w, demill_wall_add_cylinder(w, mat, p, x, 0.1, 0.2, DEMILL_CAPS_NONE, &id));
+    }
+    return id;
+}
+
+/* The y force on floor of a ball of radius 0.01 m whose centre is at
+ * height y, after one step. */
+static double press(demill_world *w, demill_id mat, demill_id floor, double y)
+{
+    const double r = 0.01, x[3] = {0.003, y, 0.002}, v[3] = {0, 0, 0};
+    DM_OK(w, demill_particles_add(w, mat, 1, x, &r, v, 0, NULL));
+    DM_OK(w, demill_world_step(w, 1));
+    double f[3];
+    DM_OK(w, demill_wall_get(w, floor, DEMILL_WALL_FORCE, f));
+    return f[1];
+}
+
+/* A mesh, a rectangle and an open cylinder attached to a body move with it,
+ * and stay where it left them when it is removed: a ball pressed 1e-4 m into
+ * them feels the force it feels from the same wall added where the body has
+ * put it. */
+START_TEST(finite_and_mesh_walls_follow_the_body)
+{
+    for (int kind = 0; kind < 3; kind++) {
+        for (int removed = 0; removed < 2; removed++) {
+            demill_id mat, body, floor, ref_mat;
+            demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_NONE, &mat);
+            const double c[3] = {0, 0, 0};
+            DM_OK(w, demill_body_add(w, 1e4, c, DEMILL_BODY_AXIS_Y, DEMILL_BODY_NO_GRAVITY,
+                                     &body));
+            DM_OK(w, demill_body_set_spring(w, body, DEMILL_BODY_AXIS_Y, 1e8, 0.0, 0.03));
+            floor = add_floor(w, mat, kind, 0.0);
+            DM_OK(w, demill_body_attach_wall(w, body, floor));
+            DM_OK(w, demill_world_step(w, 200));
+            double x[3], v[3], dt;
+            DM_OK(w, demill_body_get(w, body, DEMILL_BODY_POSITION, x));
+            DM_OK(w, demill_body_get(w, body, DEMILL_BODY_VELOCITY, v));
+            DM_OK(w, demill_world_get(w, DEMILL_WORLD_TIME_STEP, &dt));
+            ck_assert(x[1] > 1e-4); /* it has moved */
+            double ball = x[1] + 0.01 - 1e-4;
+            if (removed) {
+                DM_OK(w, demill_body_remove(w, body));
+            } else {
+                DM_OK(w, demill_body_set_spring(w, body, DEMILL_BODY_AXIS_Y, 0.0, 0.0, 0.0));
+                ball += v[1] * dt; /* where the floor will be at the step's forces */
+            }
+            const double got = press(w, mat, floor, ball);
+            double y0 = x[1];
+            if (!removed) { /* where the floor was at the step's forces */
+                double x1[3];
+                DM_OK(w, demill_body_get(w, body, DEMILL_BODY_POSITION, x1));
+                y0 = x1[1];
+            }
+            demill_world *ref = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_NONE,
+                                              &ref_mat);
+            const demill_id ref_floor = add_floor(ref, ref_mat, kind, y0);
+            const double want = press(ref, ref_mat, ref_floor, ball);
+            ck_assert_msg(want < 0 && got < 0, "kind %d: forces %g %g", kind, got, want);
+            /* removed: the same floor, bit for bit; attached: the ball's first
+             * kick saw the floor a step's travel (6e-6 m) lower than the
+             * reference does, which moves the ball by 1.4e-9 m */
+            DM_ASSERT_REL(got, want, removed ? 1e-12 : 1e-4);
+            demill_world_destroy(ref);
+            demill_world_destroy(w);
+        }
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("bodies");
@@ -293,6 +441,8 @@ int main(void)
     tcase_add_test(tc, balls_in_box_energy_balance);
     tcase_add_test(tc, hit_on_fixed_ball);
     tcase_add_test(tc, ball_on_rough_floor);
+    tcase_add_test(tc, attach_refuses_walls_it_cannot_move);
+    tcase_add_test(tc, finite_and_mesh_walls_follow_the_body);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }

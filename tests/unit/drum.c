@@ -1594,10 +1594,103 @@ START_TEST(lifter_force_resting_particle)
                 NEAR(pf[q], 0.0, 1e-8 * W);
             }
             DM_ASSERT_REL(drum_get(w, s.drum, DEMILL_DRUM_TORQUE), -0.003 * W, 1e-8);
+            DM_ASSERT_REL(drum_get(w, s.drum, DEMILL_DRUM_FORCE_Y), -W, 1e-8);
         }
         double peak = NAN;
         DM_OK(w, demill_drum_lifter_get(w, s.drum, 0, DEMILL_LIFTER_FORCE_PEAK, &peak));
         DM_ASSERT_REL(peak, W, 1e-8);
+        demill_world_destroy(w);
+    }
+}
+END_TEST
+
+/* Parts of the drum with materials of their own. The lifters (and in 3D
+ * the end caps) get a second material whose pair with the particles has the
+ * linear stiffness 2 KN, the shell keeps KN. Particles pressed by DELTA onto
+ * the lifter's leading face (as in lifter_force_pressed_particle), onto the
+ * shell at 12 o'clock and onto the +z cap at the axis feel 2 KN DELTA, KN
+ * DELTA and 2 KN DELTA, each along the wall's inward normal: the force on
+ * the drum is (2 KN DELTA, KN DELTA, 2 KN DELTA) in 3D (z = 0 in 2D), the
+ * sum of the three by Newton's third law. */
+START_TEST(part_materials)
+{
+    for (int dim = 2; dim <= 3; dim++) {
+        scene s = lifter_scene(dim, 0.0);
+        demill_world *w = s.w;
+        demill_id hard, got;
+        DM_OK(w, demill_material_create(w, &hard));
+        DM_OK(w, demill_pair_set(w, s.mat, hard, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
+        DM_OK(w, demill_pair_set(w, s.mat, hard, DEMILL_PAIR_NORMAL_STIFFNESS, 2 * KN));
+        DM_OK(w, demill_pair_set(w, hard, hard, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
+        for (int32_t part = DEMILL_DRUM_PART_SHELL; part <= DEMILL_DRUM_PART_LIFTERS; part++) {
+            if (dim == 2 && part == DEMILL_DRUM_PART_CAPS) {
+                ck_assert_int_eq(demill_drum_set_material(w, s.drum, part, hard),
+                                 DEMILL_ERR_DIMENSION);
+                ck_assert_int_eq(demill_drum_get_material(w, s.drum, part, &got),
+                                 DEMILL_ERR_DIMENSION);
+                continue;
+            }
+            DM_OK(w, demill_drum_get_material(w, s.drum, part, &got));
+            ck_assert(got == s.wallmat);
+            if (part != DEMILL_DRUM_PART_SHELL)
+                DM_OK(w, demill_drum_set_material(w, s.drum, part, hard));
+        }
+        ck_assert_int_eq(demill_drum_set_material(w, s.drum, 0, hard), DEMILL_ERR_UNKNOWN_KEY);
+        ck_assert_int_eq(demill_drum_set_material(w, s.drum, 4, hard), DEMILL_ERR_UNKNOWN_KEY);
+        ck_assert_int_eq(demill_drum_set_material(w, s.drum, 1, s.drum),
+                         DEMILL_ERR_INVALID_HANDLE);
+        ck_assert_int_eq(demill_drum_get_material(w, s.drum, 1, NULL), DEMILL_ERR_NULL_POINTER);
+        DM_OK(w, demill_drum_get_material(w, s.drum, DEMILL_DRUM_PART_LIFTERS, &got));
+        ck_assert(got == hard);
+
+        const double half = 0.5 * DRUM_L;
+        double c[9] = {-0.0124, -0.142, 0, 0, DRUM_R - RP + DELTA, 0, 0, 0, half - RP + DELTA};
+        double r[3] = {RP, RP, RP};
+        DM_OK(w, demill_particles_add(w, s.mat, dim == 3 ? 3 : 2, c, r, NULL, 0, NULL));
+        DM_OK(w, demill_world_step(w, 0));
+        double lf[3];
+        DM_OK(w, demill_drum_lifter_get(w, s.drum, 0, DEMILL_LIFTER_FORCE, lf));
+        DM_ASSERT_REL(lf[0], 2 * KN * DELTA, 1e-10);
+        const double want[3] = {2 * KN * DELTA, KN * DELTA, dim == 3 ? 2 * KN * DELTA : 0.0};
+        for (int q = 0; q < 3; q++)
+            NEAR(drum_get(w, s.drum, DEMILL_DRUM_FORCE_X + q), want[q], 1e-10 * KN * DELTA);
+        demill_world_destroy(w);
+    }
+}
+END_TEST
+
+/* The charge angles of a charge of balls and fines, at rest (the angles are
+ * read from positions). One ball of d = 10 mm at radius 0.14 m in the middle
+ * of each 5° bin from φ = -40° to 120° (32 bins), in the default drum (R =
+ * 0.15, no lifters: the ring is 0.13 < r < 0.15), and 20 fines of d = 1 mm in
+ * each of the 6 bins from 0° to 30°. The balls fill the ring from -40° to
+ * 120°, which is the charge: toe -40°, shoulder 120°. Counted by number the
+ * six bins of fines (21 each) would set the threshold at 10.5 and the charge
+ * would be 0° to 30°; by volume each of them holds 1.02 balls. */
+START_TEST(charge_angles_weigh_by_volume)
+{
+    for (int dim = 2; dim <= 3; dim++) {
+        scene s = drum_scene(dim, DEMILL_DAMPING_NONE);
+        demill_world *w = s.w;
+        const double deg = M_PI / 180.0;
+        double x[3 * (32 + 120)] = {0}, r[32 + 120];
+        int n = 0;
+        for (int k = 0; k < 32; k++, n++) {
+            const double phi = (-37.5 + 5.0 * k) * deg;
+            x[3 * n] = 0.14 * sin(phi);
+            x[3 * n + 1] = -0.14 * cos(phi);
+            r[n] = 0.005;
+        }
+        for (int b = 0; b < 6; b++)
+            for (int k = 0; k < 20; k++, n++) { /* 5 angles x 4 radii, 2 mm apart */
+                const double phi = (5.0 * b + 0.5 + 1.0 * (k % 5)) * deg, rho = 0.132 + 0.002 * (k / 5);
+                x[3 * n] = rho * sin(phi);
+                x[3 * n + 1] = -rho * cos(phi);
+                r[n] = 0.0005;
+            }
+        DM_OK(w, demill_particles_add(w, s.mat, (size_t)n, x, r, NULL, 0, NULL));
+        NEAR(drum_get(w, s.drum, DEMILL_DRUM_TOE_ANGLE), -40.0 * deg, 1e-12);
+        NEAR(drum_get(w, s.drum, DEMILL_DRUM_SHOULDER_ANGLE), 120.0 * deg, 1e-12);
         demill_world_destroy(w);
     }
 }
@@ -1611,6 +1704,7 @@ int main(void)
     tcase_add_test(geo, geometry_rectangular_lifter);
     tcase_add_test(geo, geometry_inclined_lifter);
     tcase_add_test(geo, geometry_turned_drum);
+    tcase_add_test(geo, charge_angles_weigh_by_volume);
     suite_add_tcase(s, geo);
     TCase *speed = tcase_create("speed");
     tcase_add_test(speed, speed_views);
@@ -1639,6 +1733,8 @@ int main(void)
     TCase *lift = tcase_create("lifter");
     tcase_add_test(lift, lifter_force_pressed_particle);
     tcase_add_test(lift, lifter_force_resting_particle);
+    tcase_add_test(lift, part_materials);
+
     suite_add_tcase(s, lift);
     return dm_test_run(s);
 }

@@ -16,18 +16,19 @@
 #include "physics/contact/contact.h"
 #include "physics/geometry/geometry.h"
 
-/* Makes room for n pairs in a bucket. */
-static int bucket_reserve(dm_bucket *b, uint32_t n)
+/* Makes room for n pairs in a bucket (walls: with their mesh elements). */
+static int bucket_reserve(dm_bucket *b, uint32_t n, int walls)
 {
     if (n <= b->cap)
         return 0;
     size_t cap = dm_grown_capacity(b->cap, n);
-    void **const arrays[] = {(void **)&b->i, (void **)&b->j, (void **)&b->on, (void **)&b->hist};
+    void **const arrays[] = {(void **)&b->i, (void **)&b->j, (void **)&b->on, (void **)&b->hist,
+                             (void **)&b->t};
     const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint8_t),
-                            (size_t)b->hs * sizeof(double)};
+                            (size_t)b->hs * sizeof(double), sizeof(uint32_t)};
     /* the history too where the kernel keeps none (then a byte): the kernels
      * offset its pointer by 0 for every pair, undefined on NULL */
-    if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 4, cap))
+    if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, walls ? 5 : 4, cap))
         return -1;
     b->cap = (uint32_t)cap;
     return 0;
@@ -44,11 +45,13 @@ void dm_nlist_free(demill_world *w)
     free(g->scratch);
     free(g->ci);
     free(g->cj);
+    free(g->ct);
     free(g->ck);
     free(g->ch);
     for (int t = 0; t < g->npb; t++) {
         free(g->pb[t].i);
         free(g->pb[t].j);
+        free(g->pb[t].t);
         free(g->pb[t].k);
     }
     free(g->pb);
@@ -91,15 +94,16 @@ static int carry_collect(demill_world *w)
                 if (g->nc == g->ccap) {
                     size_t cap = dm_grown_capacity(g->ccap, (size_t)g->nc + 1);
                     void **const arrays[] = {(void **)&g->ci, (void **)&g->cj, (void **)&g->ck,
-                                             (void **)&g->ch};
+                                             (void **)&g->ch, (void **)&g->ct};
                     const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint16_t),
-                                            DM_MAX_HIST * sizeof(double)};
-                    if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 4, cap))
+                                            DM_MAX_HIST * sizeof(double), sizeof(uint32_t)};
+                    if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 5, cap))
                         return -1;
                     g->ccap = (uint32_t)cap;
                 }
                 g->ci[g->nc] = b->i[p];
                 g->cj[g->nc] = b->j[p];
+                g->ct[g->nc] = side ? b->t[p] : 0;
                 g->ck[g->nc] = (uint16_t)(k + side * DM_KERNELS);
                 double *ch = g->ch + DM_MAX_HIST * (size_t)g->nc;
                 memset(ch, 0, DM_MAX_HIST * sizeof *ch); /* a longer new layout gets zeros */
@@ -113,7 +117,8 @@ static int carry_collect(demill_world *w)
 }
 
 /* Puts carried histories back into the new lists. Pairs are listed in
- * increasing i, so a row index finds (i, j) among i's few pairs. */
+ * increasing i, so a row index finds (i, j) among i's few pairs; a
+ * particle-wall contact matches on the mesh element too. */
 static void carry_restore(demill_world *w)
 {
     dm_grid *g = &w->grid;
@@ -149,7 +154,7 @@ static void carry_restore(demill_world *w)
                     sign = w->dim == 3 ? -1.0 : 1.0; /* the 3D spring vector turns; the 2D scalar not */
                 }
                 for (uint32_t q = g->row[i]; q < g->row[i + 1]; q++)
-                    if (b->j[q] == j) {
+                    if (b->j[q] == j && (!side || b->t[q] == g->ct[c])) {
                         b->on[q] = 1;
                         for (int d = 0; d < b->hs; d++)
                             b->hist[(size_t)b->hs * q + d] =
@@ -168,13 +173,17 @@ static const int stencil_rows[5][2] = {{0, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
 
 #define SCAN_BLOCK 64
 
-static void pairbuf_push(dm_pairbuf *pb, uint32_t i, uint32_t j, int k)
+/* A pair of kernel k (plus DM_KERNELS for particle-wall pairs), with its
+ * mesh element t (0 but for a mesh wall). */
+static void pairbuf_push(dm_pairbuf *pb, uint32_t i, uint32_t j, uint32_t t, int k)
 {
     if (pb->n == pb->cap) {
         size_t cap = dm_grown_capacity(pb->cap, (size_t)pb->n + 1);
-        void **const arrays[] = {(void **)&pb->i, (void **)&pb->j, (void **)&pb->k};
-        const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint8_t)};
-        if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 3, cap)) {
+        void **const arrays[] = {(void **)&pb->i, (void **)&pb->j, (void **)&pb->k,
+                                 (void **)&pb->t};
+        const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint8_t),
+                                sizeof(uint32_t)};
+        if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 4, cap)) {
             pb->failed = true;
             return;
         }
@@ -182,6 +191,7 @@ static void pairbuf_push(dm_pairbuf *pb, uint32_t i, uint32_t j, int k)
     }
     pb->i[pb->n] = i;
     pb->j[pb->n] = j;
+    pb->t[pb->n] = t;
     pb->k[pb->n++] = (uint8_t)k;
     pb->next[k]++;
 }
@@ -213,9 +223,22 @@ static void scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t
             const int kern = row[P->mat[near[q]]].kernel;
             /* two fixed particles do not touch */
             if (kern >= 0 && (!fixed || !dm_particle_fixed(P, near[q])))
-                pairbuf_push(pb, i, near[q], kern);
+                pairbuf_push(pb, i, near[q], 0, kern);
         }
     }
+}
+
+/* A mesh element near a particle: a candidate pair (dm_mesh_near). */
+typedef struct near_args {
+    dm_pairbuf *pb;
+    uint32_t i, wall;
+    int k;
+} near_args;
+
+static void push_element(void *ctx, uint32_t t)
+{
+    const near_args *a = ctx;
+    pairbuf_push(a->pb, a->i, a->wall, t, a->k);
 }
 
 typedef struct search_args {
@@ -286,11 +309,18 @@ static void search_range(demill_world *w, void *arg, int t, uint32_t begin, uint
     for (uint32_t i = start[c0], i1 = start[cell]; i < i1; i++)
         for (uint32_t k = 0; k < w->nwalls && !dm_particle_fixed(P, i); k++) {
             const dm_wall *wall = &w->walls[k];
+            if (wall->kind == DM_WALL_MESH) { /* each element within reach */
+                const int kern = tab[P->mat[i] * nm + wall->material].kernel;
+                near_args na = {pb, i, k, kern + DM_KERNELS};
+                if (kern >= 0)
+                    dm_mesh_near(wall, P->x + D * i, D, P->r[i] + skin, push_element, &na);
+                continue;
+            }
             if (!wall->kind || dm_wall_distance_bound(wall, P->x + D * i, D) >= P->r[i] + skin)
                 continue;
             const int kern = tab[P->mat[i] * nm + wall->material].kernel;
             if (kern >= 0)
-                pairbuf_push(pb, i, k, kern + DM_KERNELS);
+                pairbuf_push(pb, i, k, 0, kern + DM_KERNELS);
         }
 }
 
@@ -306,6 +336,8 @@ static void place_range(demill_world *w, void *arg, int t, uint32_t begin, uint3
         const uint32_t p = pb->next[k]++;
         b->i[p] = pb->i[q];
         b->j[p] = pb->j[q];
+        if (b->t)
+            b->t[p] = pb->t[q];
         b->on[p] = 0;
         for (int c = 0; c < b->hs; c++)
             b->hist[(size_t)b->hs * p + c] = 0.0;
@@ -339,7 +371,7 @@ static int pair_search(demill_world *w, const int64_t nc[3])
             g->pb[t].next[k] = (uint32_t)total;
             total += count;
         }
-        if (total > UINT32_MAX || bucket_reserve(b, (uint32_t)total))
+        if (total > UINT32_MAX || bucket_reserve(b, (uint32_t)total, k >= DM_KERNELS))
             return -1;
         b->n = (uint32_t)total;
     }

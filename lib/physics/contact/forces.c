@@ -185,6 +185,16 @@ static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca
     }
 }
 
+/* The geometry of a range's mesh candidates, before any chunk runs: a
+ * contact that moves on to another element of a mesh carries its history
+ * there, and the two may lie in chunks that run on different threads. */
+static void mesh_range(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)
+{
+    (void)t;
+    const chunk_args *ca = a;
+    dm_wgeom_meshes(w, begin, end, ca->dt_hist > 0.0);
+}
+
 static void run_chunks2(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)
 {
     (void)t;
@@ -216,6 +226,8 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
      * are in cache; else the ranges sum their particles' forces afterwards */
     chunk_args ca = {.vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach, .tally = tally,
                      .direct = dm_ranges(w, n) == 1};
+    if (dm_walls_have_mesh(w))
+        dm_parallel(w, n, mesh_range, &ca);
     dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
     const uint32_t nchunks = q->nchunks;
     dm_tally t = {0};

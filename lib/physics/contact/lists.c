@@ -34,6 +34,8 @@ void dm_bucket_move(dm_bucket *b, uint32_t to, uint32_t from, uint32_t i, uint32
 {
     b->i[to] = i;
     b->j[to] = j;
+    if (b->t)
+        b->t[to] = b->t[from];
     b->on[to] = b->on[from];
     memmove(b->hist + (size_t)b->hs * to, b->hist + (size_t)b->hs * from,
             (size_t)b->hs * sizeof *b->hist);
@@ -57,6 +59,7 @@ static void clist_free(dm_clist *l)
     for (int k = 0; k < DM_KERNELS; k++) {
         free(l->b[k].i);
         free(l->b[k].j);
+        free(l->b[k].t);
         free(l->b[k].hist);
         free(l->b[k].on);
     }

@@ -1,5 +1,6 @@
 /* io.h: output files: VTK XML with raw appended data (vtkxml.c) and the
- * walls' surfaces to draw in them (surfaces.c). Uses the base and the state. */
+ * walls' surfaces to draw in them (surfaces.c); input files: STL meshes
+ * (stl.c). Uses the base and the state. */
 #ifndef DM_IO_H
 #define DM_IO_H
 
@@ -75,5 +76,37 @@ typedef struct dm_mesh {
  * of those sizes); -1 when out of memory, with nothing to free. */
 int dm_walls_mesh(const demill_world *w, dm_mesh *m);
 void dm_mesh_free(dm_mesh *m);
+
+/* ---- STL files (stl.c) ------------------------------------------------------------------ */
+/* The most triangles a file may have. */
+#define DM_STL_MAX_TRIANGLES (UINT32_C(1) << 28)
+/* A triangle's height under this fraction of its longest edge: zero area. */
+#define DM_STL_FLAT 1e-12
+
+/* A welded triangle mesh read from an STL file. */
+typedef struct dm_stl_mesh {
+    double *v;        /* 3 per vertex: scaled and transformed, each point once */
+    uint32_t *tri;    /* 3 per triangle: its corners' vertices in the file's winding
+                       * (reversed by a mirroring transform, so it still says which
+                       * side was outside) */
+    uint32_t nv, nt;  /* vertices, triangles */
+    uint32_t flipped; /* triangles whose normal in the file points against their winding */
+} dm_stl_mesh;
+
+/* Reads the size bytes of an ASCII or binary STL file into *out: each
+ * point x of the file becomes A (scale x) + t, with xf = {A row by row, t}
+ * (NULL: A = I, t = 0), and points exactly equal after that are one
+ * vertex. Returns DEMILL_OK; DEMILL_ERR_FORMAT for input that is not a
+ * usable STL file (empty, foreign, truncated, malformed, a coordinate not
+ * finite, a zero-area triangle, no triangles or more than
+ * DM_STL_MAX_TRIANGLES); DEMILL_ERR_INVALID_VALUE for a scale not finite
+ * and positive or a transform not finite or singular;
+ * DEMILL_ERR_OUT_OF_MEMORY. On an error err (errlen bytes, may be 0) says
+ * what is wrong, naming the triangle (from 1) and its line or byte, and
+ * *out is empty, with nothing to free. */
+demill_status dm_stl_parse(const uint8_t *bytes, size_t size, double scale, const double xf[12],
+                           dm_stl_mesh *out, char *err, size_t errlen);
+/* Frees a mesh dm_stl_parse() made and empties it. */
+void dm_stl_free(dm_stl_mesh *m);
 
 #endif /* DM_IO_H */

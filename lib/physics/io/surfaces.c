@@ -1,11 +1,15 @@
 /* surfaces.c: the walls' surfaces as points, lines (2D) and polygons (3D)
- * for drawing: a plane as a patch about the scene, the drum's shell, caps
- * and lifters (clipped to the shell) at the drum's angle. Built twice by the
+ * for drawing: a plane as a patch about the scene, a mesh's triangles and a
+ * polyline's segments where the wall is now, the finite walls (cylinders,
+ * cones, discs, caps: rings of quadrilaterals; rectangles) at their pose,
+ * the drum's shell, caps and lifters (clipped to the shell) at the drum's
+ * angle. Built twice by the
  * same code: first with no arrays, to count, then into arrays of those
  * sizes. */
 #include <math.h>
 #include <stdlib.h>
 
+#include "physics/geometry/geometry.h"
 #include "physics/io/io.h"
 
 #define SHELL_SEGMENTS 120                          /* of the drum's circle */
@@ -255,6 +259,94 @@ static void lifter(dm_mesh *m, const demill_world *w, const dm_wall *wall)
     cell(m, 1, v, (size_t)n);
 }
 
+/* A mesh wall: its triangles (3D) or segments (2D) where it is now. */
+static void mesh_surface(dm_mesh *m, const dm_wall *wall)
+{
+    const dm_trimesh *t = wall->mesh;
+    const size_t first = m->npt;
+    for (uint32_t k = 0; k < t->nv; k++) {
+        double x[3];
+        dm_mesh_vertex_at(wall, k, x);
+        point(m, x[0], x[1], x[2]);
+    }
+    for (uint32_t e = 0; e < t->nt; e++) {
+        size_t v[3];
+        for (int k = 0; k < t->nel; k++)
+            v[k] = first + t->el[(size_t)t->nel * e + k];
+        cell(m, t->nel == 3, v, (size_t)t->nel);
+    }
+}
+
+/* Two unit vectors u, v with (u, v, n) right-handed, n a unit vector. */
+static void frame_about(const double n[3], double u[3], double v[3])
+{
+    int a = 0;
+    for (int k = 1; k < 3; k++)
+        a = fabs(n[k]) < fabs(n[a]) ? k : a;
+    double e[3] = {0, 0, 0};
+    e[a] = 1.0;
+    u[0] = n[1] * e[2] - n[2] * e[1];
+    u[1] = n[2] * e[0] - n[0] * e[2];
+    u[2] = n[0] * e[1] - n[1] * e[0];
+    const double len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for (int k = 0; k < 3; k++)
+        u[k] /= len;
+    v[0] = n[1] * u[2] - n[2] * u[1];
+    v[1] = n[2] * u[0] - n[0] * u[2];
+    v[2] = n[0] * u[1] - n[1] * u[0];
+}
+
+/* A surface of revolution at its pose: quadrilaterals between the circles
+ * of its segment's two ends (triangles where one is a point). */
+static void revolved(dm_mesh *m, const dm_wall *wall)
+{
+    double u[3], v[3];
+    frame_about(wall->n, u, v);
+    size_t first[2];
+    for (int end = 0; end < 2; end++) {
+        const double rho = wall->seg[2 * end], h = wall->seg[2 * end + 1];
+        first[end] = m->npt;
+        for (int k = 0; k < SHELL_SEGMENTS; k++) {
+            const double a = 2.0 * DM_PI * k / SHELL_SEGMENTS, ca = rho * cos(a), sa = rho * sin(a);
+            point(m, wall->p[0] + ca * u[0] + sa * v[0] + h * wall->n[0],
+                  wall->p[1] + ca * u[1] + sa * v[1] + h * wall->n[1],
+                  wall->p[2] + ca * u[2] + sa * v[2] + h * wall->n[2]);
+        }
+    }
+    for (int k = 0; k < SHELL_SEGMENTS; k++) {
+        const size_t k1 = (size_t)((k + 1) % SHELL_SEGMENTS);
+        const size_t q[4] = {first[0] + (size_t)k, first[0] + k1, first[1] + k1,
+                             first[1] + (size_t)k};
+        if (wall->seg[0] == 0.0)
+            cell(m, 1, q + 1, 3);
+        else if (wall->seg[2] == 0.0)
+            cell(m, 1, q, 3);
+        else
+            cell(m, 1, q, 4);
+    }
+}
+
+/* A rectangle at its pose, counter-clockwise about its normal. */
+static void rectangle(dm_mesh *m, const dm_wall *wall)
+{
+    double e[3], f[3];
+    for (int r = 0; r < 3; r++)
+        e[r] = wall->rot[3 * r] * wall->e0[0] + wall->rot[3 * r + 1] * wall->e0[1] +
+               wall->rot[3 * r + 2] * wall->e0[2];
+    const double *n = wall->n;
+    f[0] = n[1] * e[2] - n[2] * e[1];
+    f[1] = n[2] * e[0] - n[0] * e[2];
+    f[2] = n[0] * e[1] - n[1] * e[0];
+    static const double corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    size_t q[4];
+    for (int k = 0; k < 4; k++) {
+        const double a = corner[k][0] * wall->seg[0], b = corner[k][1] * wall->seg[1];
+        q[k] = point(m, wall->p[0] + a * e[0] + b * f[0], wall->p[1] + a * e[1] + b * f[1],
+                     wall->p[2] + a * e[2] + b * f[2]);
+    }
+    cell(m, 1, q, 4);
+}
+
 static void walls_mesh(dm_mesh *m, const demill_world *w)
 {
     double centre[3];
@@ -266,11 +358,19 @@ static void walls_mesh(dm_mesh *m, const demill_world *w)
         m->cur_wall = k;
         m->cur_part = wall->drum_part;
         m->cur_lifter = wall->drum_part == DM_PART_LIFTER ? wall->lifter : -1;
-        switch (wall->drum_part) {
+        switch (dm_wall_attached(wall) ? DM_PART_NONE : wall->drum_part) {
         case DM_PART_SHELL: shell(m, w); break;
         case DM_PART_CAP: end_cap(m, w, wall); break;
         case DM_PART_LIFTER: lifter(m, w, wall); break;
-        default: plane_patch(m, wall, w->dim, centre, h);
+        default:
+            if (wall->mesh)
+                mesh_surface(m, wall);
+            else if (wall->kind == DM_WALL_REVOLVED)
+                revolved(m, wall);
+            else if (wall->kind == DM_WALL_RECT)
+                rectangle(m, wall);
+            else
+                plane_patch(m, wall, w->dim, centre, h);
         }
     }
 }

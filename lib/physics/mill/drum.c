@@ -151,19 +151,19 @@ static dm_wall *drum_wall_new(demill_world *w, int kind, int part)
     wall->kind = kind;
     wall->drum_part = part;
     wall->handle = DM_FREE;
-    wall->material = d->material;
+    wall->material = d->material[part - 1];
     wall->lifter = -1;
-    w->mat_walls[d->material]++;
+    w->mat_walls[wall->material]++;
     d->wall_slot[d->nwall++] = slot;
     return wall;
 }
 
-/* Rebuilds the drum's walls from its description, at the current angle.
- * Fails (changing nothing) only when memory runs out. */
+/* Rebuilds the drum's walls from its description, at the current angle (the
+ * walls attached to it stay as they are). Fails (changing nothing) only when memory runs out. */
 demill_status dm_drum_walls_build(demill_world *w)
 {
     dm_drum *d = &w->drum;
-    const uint32_t need = 1 + (w->dim == 3 ? 2 : 0) + d->nlifters;
+    const uint32_t need = (d->shell ? 1 + (w->dim == 3 ? 2 : 0) : 0) + d->nlifters;
     /* make room first so that the build cannot fail half-way */
     if (w->nwalls + need > w->cap_walls) {
         uint32_t cap = w->cap_walls ? w->cap_walls : 16;
@@ -177,9 +177,9 @@ demill_status dm_drum_walls_build(demill_world *w)
     }
     dm_drum_walls_remove(w);
     const double R = 0.5 * d->diameter;
-    dm_wall *shell = drum_wall_new(w, DM_WALL_SHELL, DM_PART_SHELL);
-    shell->radius = R;
-    if (w->dim == 3)
+    if (d->shell)
+        drum_wall_new(w, DM_WALL_SHELL, DM_PART_SHELL)->radius = R;
+    if (w->dim == 3 && d->shell)
         for (int side = 0; side < 2; side++) {
             dm_wall *cap = drum_wall_new(w, DM_WALL_PLANE, DM_PART_CAP);
             cap->p0[2] = side ? 0.5 * d->length : -0.5 * d->length;
@@ -251,13 +251,20 @@ demill_status dm_drum_check_lifter(demill_world *w, const dm_lifter_spec *l, dou
 
 /* ---- measurements -------------------------------------------------------------- */
 
-/* The z-torque the particles exert on the drum's walls. */
-double dm_drum_torque(const demill_world *w)
+/* The load on the drum's walls and on those attached to it. */
+double dm_drum_load(const demill_world *w, double *force)
 {
-    const dm_drum *d = &w->drum;
-    double t = 0.0;
-    for (uint32_t k = 0; k < d->nwall; k++)
-        t += w->walls[d->wall_slot[k]].torque[2];
+    double t = 0.0, f[3] = {0.0, 0.0, 0.0};
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        const dm_wall *wall = &w->walls[k];
+        if (!wall->kind || !wall->drum_part)
+            continue;
+        t += wall->torque[2];
+        for (int c = 0; c < 3; c++)
+            f[c] += wall->force[c];
+    }
+    if (force)
+        memcpy(force, f, sizeof f);
     return t;
 }
 
@@ -299,14 +306,16 @@ void dm_drum_measure(demill_world *w)
     if (!d->alive)
         return;
     const double dt = w->dt;
-    d->torque = dm_drum_torque(w);
+    d->torque = dm_drum_load(w, NULL);
     d->power = -d->torque * d->omega;
     d->energy_in += d->power * dt;
     d->energy_dissipated = 0.0;
-    for (uint32_t k = 0; k < d->nwall; k++) {
-        const dm_wall *wall = &w->walls[d->wall_slot[k]];
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        const dm_wall *wall = &w->walls[k];
+        if (!wall->kind || !wall->drum_part)
+            continue;
         d->energy_dissipated += wall->dissipated;
-        if (wall->drum_part != DM_PART_LIFTER)
+        if (wall->lifter < 0) /* not one of the analytic lifters */
             continue;
         const int l = wall->lifter;
         d->lifter_energy[l] = wall->dissipated;

@@ -35,8 +35,9 @@ demill_status dm_drum_check_lifter(demill_world *w, const dm_lifter_spec *l, dou
 /* After a force evaluation: torque, power, lifter loads, and the means of
  * completed revolutions. */
 void dm_drum_measure(demill_world *w);
-/* The z-torque the particles exert on the drum's walls. */
-double dm_drum_torque(const demill_world *w);
+/* The load the particles put on the drum's walls: returns the z-torque
+ * about the axis and, when force is not NULL, stores the force. */
+double dm_drum_load(const demill_world *w, double *force);
 /* The power from the charge's centre of mass at speed omega. */
 double dm_drum_power_cm(const demill_world *w, double omega);
 /* The charge's toe, shoulder and centre-of-mass angles (shape.c). */

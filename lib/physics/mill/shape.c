@@ -3,25 +3,36 @@
  *
  * Angles φ are measured at the axis from the downward vertical, positive in
  * the direction of rotation. The particles in the ring R - h - 2d < r < R next
- * to the shell (h the tallest lifter, d the largest particle diameter) are
- * counted in 5° bins of φ; a bin belongs to the charge if its count is at
- * least half the median of the ten fullest bins; the largest run of
- * consecutive charge bins (around the circle) is the charge, its lower edge
- * the toe and its upper edge the shoulder. A lifter takes room from its bins,
- * which with coarse particles can drop them below the threshold and cut the
- * charge in pieces, so gaps no wider than a lifter (in bins) with charge bins
- * on both sides count as charge; for fine charges this changes nothing. The
- * centre-of-mass angle is φ of the mass-weighted centre of all particles. */
+ * to the shell (h the tallest lifter, or the deepest lifter mesh attached to
+ * the drum: R less its vertices' smallest distance from the axis; d the
+ * largest particle diameter) are
+ * summed in 5° bins of φ, each by its volume relative to the largest
+ * particle's ((r/r_max)³, in 2D its area (r/r_max)²), so that a bin holds how
+ * much of the ring is solid: exactly a count, as in the reference rule, when
+ * the particles are all of one size, and not ruled by the fines when they are
+ * not (fine ore gathered in a few bins would set the threshold by count and
+ * leave only those bins as the charge). A bin belongs to the charge if its
+ * fill is at least half the median of the ten fullest bins; the largest run
+ * of consecutive charge bins (around the circle) is the charge, its lower
+ * edge the toe and its upper edge the shoulder. A lifter takes room from its
+ * bins, which with coarse particles can drop them below the threshold and
+ * cut the charge in pieces, so gaps no wider than a lifter (in bins; a
+ * lifter mesh's width is the arc at R of the widest angle one of its
+ * triangles spans about the axis) with
+ * charge bins on both sides count as charge; for fine charges this changes
+ * nothing. The centre-of-mass angle is φ of the mass-weighted centre of all
+ * particles. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "physics/geometry/geometry.h"
 #include "physics/mill/mill.h"
 
 static int cmp_desc(const void *a, const void *b)
 {
-    const uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    const double x = *(const double *)a, y = *(const double *)b;
     return (x < y) - (x > y);
 }
 
@@ -43,6 +54,11 @@ void dm_charge_shape(const demill_world *w, double angles[3])
     double hmax = 0.0, dmax = 0.0, mx = 0.0, my = 0.0, mass = 0.0;
     for (uint32_t k = 0; k < d->nlifters; k++)
         hmax = fmax(hmax, d->lifters[k].height);
+    for (uint32_t k = 0; k < w->nwalls; k++) { /* lifters attached as meshes: their depth */
+        const dm_wall *wall = &w->walls[k];
+        if (wall->kind && wall->mesh && wall->drum_part == DM_PART_LIFTER)
+            hmax = fmax(hmax, 0.5 * d->diameter - dm_mesh_axis_distance(wall, 0));
+    }
     for (uint32_t i = 0; i < P->n; i++) {
         dmax = fmax(dmax, 2.0 * P->r[i]);
         mx += P->m[i] * P->x[D * i];
@@ -51,15 +67,16 @@ void dm_charge_shape(const demill_world *w, double angles[3])
     }
     angles[2] = charge_angle(mx / mass, my / mass, s);
 
-    const double R = 0.5 * d->diameter, inner = R - hmax - 2.0 * dmax;
-    uint32_t bins[DM_SHAPE_BINS] = {0}, sorted[DM_SHAPE_BINS];
+    const double R = 0.5 * d->diameter, inner = R - hmax - 2.0 * dmax, rmax = 0.5 * dmax;
+    double bins[DM_SHAPE_BINS] = {0}, sorted[DM_SHAPE_BINS];
     const double width = 2.0 * DM_PI / DM_SHAPE_BINS;
     for (uint32_t i = 0; i < P->n; i++) {
         const double x = P->x[D * i], y = P->x[D * i + 1], r = sqrt(x * x + y * y);
         if (!(r > inner && r < R)) /* (also a particle flown off to inf or NaN) */
             continue;
         int b = (int)floor((charge_angle(x, y, s) + DM_PI) / width);
-        bins[b < 0 ? 0 : b >= DM_SHAPE_BINS ? DM_SHAPE_BINS - 1 : b]++;
+        const double q = P->r[i] / rmax, size = D == 3 ? q * q * q : q * q;
+        bins[b < 0 ? 0 : b >= DM_SHAPE_BINS ? DM_SHAPE_BINS - 1 : b] += size;
     }
     memcpy(sorted, bins, sizeof bins);
     qsort(sorted, DM_SHAPE_BINS, sizeof *sorted, cmp_desc);
@@ -72,6 +89,11 @@ void dm_charge_shape(const demill_world *w, double angles[3])
     double lifter_width = 0.0;
     for (uint32_t k = 0; k < d->nlifters; k++)
         lifter_width = fmax(lifter_width, d->lifters[k].width);
+    for (uint32_t k = 0; k < w->nwalls; k++) { /* a lifter mesh: its widest element's arc */
+        const dm_wall *wall = &w->walls[k];
+        if (wall->kind && wall->mesh && wall->drum_part == DM_PART_LIFTER)
+            lifter_width = fmax(lifter_width, R * dm_mesh_widest_angle(wall));
+    }
     const int gap = (int)ceil(lifter_width / R / width);
     for (int b = 0; b < DM_SHAPE_BINS; b++) {
         if (raw[b])

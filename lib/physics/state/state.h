@@ -11,6 +11,7 @@
 #include <math.h>
 
 #include "base/handles.h"
+#include "base/random.h"
 
 #define DM_MAX_MATERIALS 256
 
@@ -58,6 +59,37 @@ typedef struct dm_pairparam {
 } dm_pairparam;
 
 /* ---- walls (geometry/walls.c) ------------------------------------------- */
+/* A node of a mesh's bounding-volume hierarchy: the box of its elements; an
+ * inner node's children are nodes first and first + 1, a leaf's elements
+ * order[first .. first + count - 1]. */
+typedef struct dm_bvh_node {
+    double lo[3], hi[3];
+    uint32_t first, count; /* count 0: an inner node */
+} dm_bvh_node;
+
+/* A triangle mesh (3D) or a polyline (2D) wall (geometry/mesh.c): elements
+ * (triangles or segments) in the mesh's own frame, which frame_rot and
+ * frame_off place in the wall's reference frame (X = frame_rot V + frame_off),
+ * with what the contact rule needs: unit normals, the edges (triangles) and
+ * the elements incident to each edge and vertex (CSR, in increasing element
+ * order, so the first is the owner), and an AABB tree over the elements. */
+typedef struct dm_trimesh {
+    size_t bytes;           /* the one block holding the mesh and its arrays */
+    int nel;                /* vertices per element: 3 (triangles) or 2 (segments) */
+    uint32_t nv, nt, ne;    /* vertices, elements, edges (triangles only) */
+    double *v;              /* 3 per vertex */
+    uint32_t *el;           /* nel vertex indices per element */
+    double *nrm;            /* 3 per element: unit normal (right hand; 2D: (e_y, -e_x)/|e|) */
+    uint32_t *el_edge;      /* 3 per triangle: its edge from vertex k to k + 1 */
+    uint32_t *edge_start, *edge_el; /* ne + 1, and the triangles incident to each edge */
+    uint32_t *vert_start, *vert_el; /* nv + 1, and the elements incident to each vertex */
+    dm_bvh_node *node;      /* the tree, node 0 its root */
+    uint32_t nnodes;
+    uint32_t *order;        /* elements in leaf order */
+    double frame_rot[9], frame_off[3];
+    double bs_centre[3], bs_radius; /* a sphere about every vertex, in the mesh's frame */
+} dm_trimesh;
+
 #define DM_MAX_POLY 8 /* vertices of a lifter's cross-section, at most */
 
 typedef struct dm_wall {
@@ -92,12 +124,46 @@ typedef struct dm_wall {
      * its reference (p0, n0, c0) shifted by the body's motion since body_ref */
     uint32_t body;         /* body slot + 1; 0: not attached */
     double body_ref[3];    /* the body's position when the wall was attached */
+    dm_trimesh *mesh;      /* DM_WALL_MESH: its mesh (owned), else NULL */
+    /* finite walls (DM_WALL_REVOLVED, DM_WALL_RECT), thin surfaces given in
+     * the reference frame about the point p0 and the unit axis or normal n0 */
+    double seg[4];         /* REVOLVED: the meridian segment turned about the axis,
+                              from (rho, h) = (seg[0], seg[1]) to (seg[2], seg[3]);
+                              RECT: half-widths along e0 and along n0 × e0 */
+    double nb[4];          /* REVOLVED: at each end, the direction (rho, h) in which
+                              the face sharing it (a cap) leaves it; 0 0: none */
+    int own;               /* REVOLVED: bit k: end k is a rim of this face */
+    double e0[3];          /* RECT: unit in-plane direction, reference frame */
+    double bh;             /* bounding sphere: centre p + bh n, radius brad */
+    uint32_t parent;       /* a cap: slot + 1 of the wall it closes; 0: none */
+    uint32_t parts[2];     /* slots + 1 of its caps; 0: none */
+    /* harmonic motion (replaces the rigid motion while set) and surface velocity */
+    int harmonic;          /* DM_HARMONIC_*, 0: the rigid motion of vel and omega */
+    double h_axis[3], h_amp, h_freq, h_phase, h_t0;
+    int surface;           /* 1: surf0 is set */
+    double surf0[3];       /* surface velocity, reference frame */
 } dm_wall;
 
 /* Wall kinds: a plane (half-space), the inside of a cylindrical shell about
- * the z axis, a prism along z with a convex polygonal cross-section. */
-enum { DM_WALL_PLANE = 1, DM_WALL_SHELL = 2, DM_WALL_PRISM = 3 };
+ * the z axis, a prism along z with a convex polygonal cross-section, a
+ * triangle mesh (3D) or polyline (2D), a thin surface touched from both
+ * sides; the finite walls, thin surfaces too: the surface swept by a segment
+ * turned about an axis (finite cylinder, cone, disc, annulus, cap), a
+ * rectangle. */
+enum {
+    DM_WALL_PLANE = 1, DM_WALL_SHELL = 2, DM_WALL_PRISM = 3, DM_WALL_MESH = 4,
+    DM_WALL_REVOLVED = 5, DM_WALL_RECT = 6
+};
+/* Harmonic motions: the centre moves along h_axis, or the wall turns about it. */
+enum { DM_HARMONIC_TRANSLATE = 1, DM_HARMONIC_ROTATE = 2 };
+/* The drum's parts, numbered as DEMILL_DRUM_PART_* */
 enum { DM_PART_NONE = 0, DM_PART_SHELL = 1, DM_PART_CAP = 2, DM_PART_LIFTER = 3 };
+/* Whether a wall of the drum is one a user attached to it (it keeps its own
+ * handle, demill_drum_attach_wall) rather than one the drum built. */
+static inline bool dm_wall_attached(const dm_wall *wall)
+{
+    return wall->drum_part && wall->handle != DM_FREE;
+}
 
 /* ---- bodies (bodies/bodies.c) -------------------------------------------- */
 /* A rigid body moved by the particles on its walls, springs and dampers to
@@ -141,6 +207,8 @@ typedef struct dm_bucket {
     int hs;                  /* history doubles per pair */
     uint32_t n, cap;
     uint32_t *i, *j;         /* for walls: i = particle, j = wall slot */
+    uint32_t *t;             /* walls only (NULL for particle pairs): the mesh element, 0
+                                for other walls */
     double *hist;            /* zeros unless on */
     uint8_t *on;             /* 1: touching at the last step */
     uint32_t base;           /* pair id of the first pair (see dm_results) */
@@ -157,7 +225,7 @@ typedef struct dm_clist {
 /* The pairs one range of the neighbour search found, in the order found;
  * k is the kernel, plus DM_KERNELS for particle-wall pairs. */
 typedef struct dm_pairbuf {
-    uint32_t *i, *j;
+    uint32_t *i, *j, *t;               /* t: the mesh element of a particle-wall pair */
     uint8_t *k;
     uint32_t n, cap;
     bool failed;                       /* out of memory */
@@ -171,7 +239,7 @@ typedef struct dm_grid {
     uint32_t cap;
     double *scratch;          /* 3 doubles per particle */
     /* contacts whose history is carried over a build */
-    uint32_t *ci, *cj;
+    uint32_t *ci, *cj, *ct;   /* ct: mesh element (particle-wall), else 0 */
     uint16_t *ck;             /* kernel (pp) or kernel + DM_KERNELS (pw) */
     double *ch;               /* DM_MAX_HIST doubles each */
     uint32_t nc, ccap;
@@ -257,8 +325,10 @@ typedef struct dm_spectrum {
 
 typedef struct dm_drum {
     bool alive;
-    uint32_t material;
+    uint32_t material[3];   /* material slot of each part: shell, caps, lifters
+                               (index DM_PART_* - 1) */
     double diameter, length, porosity;
+    bool shell;             /* the analytic shell and caps (DEMILL_DRUM_SHELL) */
     /* the evenly spaced lifters, and the lifters in use */
     uint32_t even_count;
     double lifter_h, lifter_w, lifter_face, lifter_phase;
@@ -336,6 +406,70 @@ typedef struct dm_progress {
     uint64_t every;         /* steps between reports */
 } dm_progress;
 
+/* ---- regions, feeds and outlets (the world layer's: world/region.c, world/flows.c) ---- */
+#define DM_SIZE_CLASSES 32   /* size classes of a distribution, at most */
+#define DM_MAX_FEEDS 16
+#define DM_MAX_OUTLETS 16
+#define DM_OUTLET_CLASSES 32 /* size classes an outlet counts, at most */
+
+/* A region of space (DEMILL_REGION_*) and its parameters as the API gave them. */
+typedef struct dm_region {
+    int kind;
+    double p[7];
+} dm_region;
+
+/* A size distribution as classes: diameters in [lo, hi] (log-uniform within
+ * a class; lo = hi for a discrete size) and mass fractions summing to 1. */
+typedef struct dm_sizes {
+    uint32_t n;
+    double lo[DM_SIZE_CLASSES], hi[DM_SIZE_CLASSES], fraction[DM_SIZE_CLASSES];
+} dm_sizes;
+
+/* The slot of a feed or an outlet: alive, and the generation of its id
+ * (DM_GEN_LAST: retired). */
+typedef struct dm_flow_slot {
+    bool alive;
+    uint16_t gen;
+} dm_flow_slot;
+
+/* A feed: particles of one material inserted into a region at a mass rate. */
+typedef struct dm_feed {
+    dm_flow_slot id;
+    uint32_t material;
+    dm_region region;
+    dm_sizes sizes;
+    double number[DM_SIZE_CLASSES]; /* cumulative number fractions of the classes */
+    double rate, vel[3], t_start, t_stop;
+    dm_rng rng;             /* sizes and positions */
+    double next_d;          /* diameter of the next particle to insert */
+    double mass;            /* inserted so far, kg */
+    uint64_t count;
+} dm_feed;
+
+/* An outlet: particles whose centre is in its region are removed at the end
+ * of a step and counted per size class. */
+typedef struct dm_outlet {
+    dm_flow_slot id;
+    dm_region region;
+    uint32_t nedges;        /* classes: nedges + 1 */
+    double edges[DM_OUTLET_CLASSES - 1];
+    uint64_t count[DM_OUTLET_CLASSES];
+    double mass[DM_OUTLET_CLASSES];
+    double interval;        /* of the rate, s */
+    double t_next;          /* the end of the current interval */
+    double interval_mass, last_mass; /* removed in the current and the last interval */
+    uint64_t interval_count, last_count;
+} dm_outlet;
+
+typedef struct dm_flows {
+    uint32_t nfeeds, noutlets; /* slots in use or retired: the ids' indices */
+    uint32_t live;             /* feeds and outlets alive */
+    dm_feed feeds[DM_MAX_FEEDS];
+    dm_outlet outlets[DM_MAX_OUTLETS];
+    double energy;          /* kinetic and potential energy brought in by feeds less
+                               what outlets took out, J */
+} dm_flows;
+
 /* ---- the world ------------------------------------------------------------- */
 struct demill_world {
     dm_base base;           /* first: the base layer's part (lib/base/base.h) */
@@ -401,6 +535,8 @@ struct demill_world {
 
     dm_tally tally;
     bool events;            /* contacts keep their dissipated energy (spectrum) */
+
+    dm_flows flows;         /* feeds and outlets */
 };
 
 /* |g| */
