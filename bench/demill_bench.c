@@ -59,6 +59,9 @@ static void usage(FILE *f)
           "  --settle S --rotate S   seconds before the timed window [0.3 0.3]\n"
           "  --energy                keep the energy tally on\n"
           "  --no-watchdog           switch the stability watchdog off\n"
+          "  --mesh FILE.stl         the drum's shell, caps and lifters from this STL file\n"
+          "                          (m), turning with the drum in place of its analytic\n"
+          "                          walls (drum3d-mesh: bench/peers/peers.py stl drum3d)\n"
           "  --dump-packing FILE     write the initial packing (x y z r) and exit\n",
           f);
 }
@@ -74,7 +77,7 @@ static void fail(demill_world *w, demill_status s, const char *what)
 
 int main(int argc, char **argv)
 {
-    const char *scene = "drum3d", *dump = NULL;
+    const char *scene = "drum3d", *dump = NULL, *mesh = NULL;
     long particles = 0, threads = 1, steps = 10000;
     double settle = 0.3, rotate = 0.3;
     int energy = 0, watchdog = 1;
@@ -92,6 +95,8 @@ int main(int argc, char **argv)
             return EXIT_FAILURE;
         } else if (!strcmp(a, "--scene")) {
             scene = argv[++k];
+        } else if (!strcmp(a, "--mesh")) {
+            mesh = argv[++k];
         } else if (!strcmp(a, "--dump-packing")) {
             dump = argv[++k];
         } else if (!strcmp(a, "--particles")) {
@@ -110,6 +115,10 @@ int main(int argc, char **argv)
         }
     }
     const int is3d = !strcmp(scene, "drum3d");
+    if (mesh && !is3d) {
+        fprintf(stderr, "demill_bench: --mesh needs --scene drum3d\n");
+        return EXIT_FAILURE;
+    }
     if (!is3d && strcmp(scene, "drum2d")) {
         fprintf(stderr, "demill_bench: unknown scene %s\n", scene);
         return EXIT_FAILURE;
@@ -155,6 +164,13 @@ int main(int argc, char **argv)
     demill_id steel, drum;
     if (scene_world(&geo, &w, &steel, &drum))
         return EXIT_FAILURE;
+    if (mesh) { /* the drum's surfaces from the mesh alone */
+        demill_id wall;
+        fail(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTERS, 0), "lifters");
+        fail(w, demill_drum_set(w, drum, DEMILL_DRUM_SHELL, 0), "shell");
+        fail(w, demill_wall_load_stl(w, steel, mesh, 1.0, NULL, &wall), "mesh");
+        fail(w, demill_drum_attach_wall(w, drum, wall, DEMILL_DRUM_PART_SHELL), "mesh");
+    }
     fail(w, demill_world_set(w, DEMILL_WORLD_THREADS, (double)threads), "threads");
     fail(w, demill_world_set(w, DEMILL_WORLD_ENERGY_TRACKING, energy), "energy tracking");
     fail(w, demill_world_set(w, DEMILL_WORLD_WATCHDOG, watchdog), "watchdog");
@@ -163,7 +179,7 @@ int main(int argc, char **argv)
     free(rad);
     fprintf(stderr, "demill_bench: %s, %ld particles, %ld threads: settling %g s, turning %g s, "
                     "then timing %ld steps\n",
-            scene, particles, threads, settle, rotate, steps);
+            mesh ? "drum3d-mesh" : scene, particles, threads, settle, rotate, steps);
     fail(w, demill_world_step(w, (uint64_t)llround(settle / geo.time_step)), "settling");
     fail(w, demill_drum_set(w, drum, DEMILL_DRUM_SPEED_FRACTION, 0.75), "speed");
     fail(w, demill_world_step(w, (uint64_t)llround(rotate / geo.time_step)), "turning");
@@ -179,7 +195,8 @@ int main(int argc, char **argv)
             contacts / particles, wall_contacts / particles, rebuilds);
     printf("bench scene=%s code=libdemill threads=%ld particles=%ld steps=%ld "
            "particle_steps_per_s=%.3g peak_rss_mb=%.1f\n",
-           scene, threads, particles, steps, (double)particles * steps / (t1 - t0),
+           mesh ? "drum3d-mesh" : scene, threads, particles, steps,
+           (double)particles * steps / (t1 - t0),
            peak_rss_kb() / 1024.0);
     demill_world_destroy(w);
     return EXIT_SUCCESS;

@@ -130,17 +130,22 @@ DEMILL_API demill_status demill_feed_create(demill_world *w, int32_t region,
     return DEMILL_OK;
 }
 
+/* Ends a feed's or an outlet's life: its id becomes invalid, its slot free. */
+static void release(demill_world *w, dm_flow_slot *id)
+{
+    id->alive = false;
+    id->gen++;
+    w->flows.live--;
+    dm_changed(w);
+}
+
 DEMILL_API demill_status demill_feed_remove(demill_world *w, demill_id feed)
 {
     uint32_t slot;
     demill_status s = dm_enter(w, feed, DEMILL_KIND_FEED, "feed", &slot);
     if (s)
         return s;
-    dm_feed *f = &w->flows.feeds[slot];
-    f->id.alive = false;
-    f->id.gen++;
-    w->flows.live--;
-    dm_changed(w);
+    release(w, &w->flows.feeds[slot].id);
     return DEMILL_OK;
 }
 
@@ -266,11 +271,7 @@ DEMILL_API demill_status demill_outlet_remove(demill_world *w, demill_id outlet)
     demill_status s = dm_enter(w, outlet, DEMILL_KIND_OUTLET, "outlet", &slot);
     if (s)
         return s;
-    dm_outlet *o = &w->flows.outlets[slot];
-    o->id.alive = false;
-    o->id.gen++;
-    w->flows.live--;
-    dm_changed(w);
+    release(w, &w->flows.outlets[slot].id);
     return DEMILL_OK;
 }
 

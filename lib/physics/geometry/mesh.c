@@ -61,6 +61,14 @@ static int outside_edge(const dm_trimesh *m, uint32_t t, int k, const double *x)
     return (a == lo ? s : -s) <= 0.0;
 }
 
+/* The signed distance from x to element t's plane (its line in 2D), a lower
+ * bound of the distance to the element. */
+static double plane_distance(const dm_trimesh *m, uint32_t t, const double *x)
+{
+    const double *a = vert(m, m->el[(size_t)m->nel * t]), *nt = m->nrm + 3 * (size_t)t;
+    return (x[0] - a[0]) * nt[0] + (x[1] - a[1]) * nt[1] + (x[2] - a[2]) * nt[2];
+}
+
 /* The region of element t that holds the closest point to x: Ericson (2005),
  * Real-Time Collision Detection, §5.1.5 (triangles) and §5.1.2 (segments),
  * the vertices' regions first, then the edges', then the interior; each test
@@ -98,8 +106,7 @@ static int element_closest(const dm_trimesh *m, uint32_t t, const double *x, dou
     const uint32_t *e = m->el + (size_t)m->nel * t;
     const double *nt = m->nrm + 3 * t;
     if (region == REGION_FACE) {
-        const double *a = vert(m, e[0]);
-        const double d = (x[0] - a[0]) * nt[0] + (x[1] - a[1]) * nt[1] + (x[2] - a[2]) * nt[2];
+        const double d = plane_distance(m, t, x);
         for (int c = 0; c < 3; c++)
             n[c] = d >= 0.0 ? -nt[c] : nt[c];
         *dist = fabs(d);
@@ -447,12 +454,14 @@ void dm_walls_free_meshes(demill_world *w)
 
 /* ---- queries ------------------------------------------------------------------ */
 
+
 /* The squared distance from x to a node's box. */
 static double box_dist2(const dm_bvh_node *nd, const double *x)
 {
     double s = 0.0;
     for (int c = 0; c < 3; c++) {
-        const double d = fmax(fmax(nd->lo[c] - x[c], x[c] - nd->hi[c]), 0.0);
+        const double below = nd->lo[c] - x[c], above = x[c] - nd->hi[c];
+        const double d = below > 0.0 ? below : above > 0.0 ? above : 0.0; /* (no libm call) */
         s += d * d;
     }
     return s;
@@ -475,10 +484,13 @@ void dm_trimesh_near(const dm_trimesh *m, const double *x, double reach, dm_near
             continue;
         }
         for (uint32_t q = nd->first; q < nd->first + nd->count; q++) {
+            const uint32_t t = m->order[q];
             double d, n[3];
-            element_closest(m, m->order[q], x, &d, n);
+            if (!(fabs(plane_distance(m, t, x)) < reach))
+                continue; /* no nearer than its plane */
+            element_closest(m, t, x, &d, n);
             if (d < reach)
-                fn(ctx, m->order[q]);
+                fn(ctx, t);
         }
     }
 }
@@ -718,14 +730,29 @@ void dm_wgeom_meshes(demill_world *w, uint32_t begin, uint32_t end, int carry)
         while (p < b->n && b->i[p] < end) {
             const uint32_t i = b->i[p], j = b->j[p], p0 = p;
             const dm_wall *wall = &w->walls[j];
+            const double r = w->p.r[i];
+            double V[3];
+            if (wall->kind == DM_WALL_MESH)
+                to_mesh(wall, w->p.x + D * i, D, V);
             for (; p < b->n && b->i[p] == i && b->j[p] == j; p++) {
                 if (wall->kind != DM_WALL_MESH)
                     continue;
-                double V[3], d, nm[3], n[3];
-                to_mesh(wall, w->p.x + D * i, D, V);
-                const int valid = element_contact(wall->mesh, b->t[p], V, &d, nm);
+                const dm_trimesh *m = wall->mesh;
+                double d, nm[3], n[3];
+                /* an element no nearer than its plane's distance: most candidates, within
+                 * the skin but not touching, end here, before the contact rule */
+                const double *nt = m->nrm + 3 * (size_t)b->t[p];
+                const double h = plane_distance(m, b->t[p], V);
+                int valid = 0;
+                if (fabs(h) >= r) {
+                    d = fabs(h);
+                    for (int c = 0; c < 3; c++)
+                        nm[c] = h >= 0.0 ? -nt[c] : nt[c];
+                } else {
+                    valid = element_contact(m, b->t[p], V, &d, nm);
+                }
                 to_world(wall, nm, n);
-                const double delta = w->p.r[i] - d;
+                const double delta = r - d;
                 dm_wgeom_store(w, g0 + p, i, wall, valid || delta <= 0.0 ? delta : 0.0, n);
             }
             if (carry && wall->kind == DM_WALL_MESH && p - p0 > 1)

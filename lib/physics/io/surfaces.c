@@ -77,6 +77,25 @@ static double scene_box(const demill_world *w, double centre[3])
     return d2 > 0.0 ? 0.5 * sqrt(d2) : 0.5;
 }
 
+/* Two unit vectors u, v with (u, v, n) right-handed, n a unit vector. */
+static void frame_about(const double n[3], double u[3], double v[3])
+{
+    int a = 0;
+    for (int k = 1; k < 3; k++)
+        a = fabs(n[k]) < fabs(n[a]) ? k : a;
+    double e[3] = {0, 0, 0};
+    e[a] = 1.0;
+    u[0] = n[1] * e[2] - n[2] * e[1];
+    u[1] = n[2] * e[0] - n[0] * e[2];
+    u[2] = n[0] * e[1] - n[1] * e[0];
+    const double len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for (int k = 0; k < 3; k++)
+        u[k] /= len;
+    v[0] = n[1] * u[2] - n[2] * u[1];
+    v[1] = n[2] * u[0] - n[0] * u[2];
+    v[2] = n[0] * u[1] - n[1] * u[0];
+}
+
 /* A plane wall: the square (2D: segment) of half width h centred at the
  * point of the plane nearest `centre`, counter-clockwise about the normal. */
 static void plane_patch(dm_mesh *m, const dm_wall *wall, int dim, const double centre[3], double h)
@@ -93,21 +112,8 @@ static void plane_patch(dm_mesh *m, const dm_wall *wall, int dim, const double c
         cell(m, 0, v, 2);
         return;
     }
-    /* u: across the axis along which n is smallest; v = n × u */
-    int a = 0;
-    for (int k = 1; k < 3; k++)
-        a = fabs(n[k]) < fabs(n[a]) ? k : a;
-    double u[3] = {0, 0, 0}, e[3] = {0, 0, 0}, t[3];
-    e[a] = 1.0;
-    u[0] = n[1] * e[2] - n[2] * e[1];
-    u[1] = n[2] * e[0] - n[0] * e[2];
-    u[2] = n[0] * e[1] - n[1] * e[0];
-    const double len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (int k = 0; k < 3; k++)
-        u[k] /= len;
-    t[0] = n[1] * u[2] - n[2] * u[1];
-    t[1] = n[2] * u[0] - n[0] * u[2];
-    t[2] = n[0] * u[1] - n[1] * u[0];
+    double u[3], t[3];
+    frame_about(n, u, t);
     static const double corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
     size_t v[4];
     for (int k = 0; k < 4; k++)
@@ -277,24 +283,6 @@ static void mesh_surface(dm_mesh *m, const dm_wall *wall)
     }
 }
 
-/* Two unit vectors u, v with (u, v, n) right-handed, n a unit vector. */
-static void frame_about(const double n[3], double u[3], double v[3])
-{
-    int a = 0;
-    for (int k = 1; k < 3; k++)
-        a = fabs(n[k]) < fabs(n[a]) ? k : a;
-    double e[3] = {0, 0, 0};
-    e[a] = 1.0;
-    u[0] = n[1] * e[2] - n[2] * e[1];
-    u[1] = n[2] * e[0] - n[0] * e[2];
-    u[2] = n[0] * e[1] - n[1] * e[0];
-    const double len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (int k = 0; k < 3; k++)
-        u[k] /= len;
-    v[0] = n[1] * u[2] - n[2] * u[1];
-    v[1] = n[2] * u[0] - n[0] * u[2];
-    v[2] = n[0] * u[1] - n[1] * u[0];
-}
 
 /* A surface of revolution at its pose: quadrilaterals between the circles
  * of its segment's two ends (triangles where one is a point). */
