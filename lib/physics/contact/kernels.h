@@ -137,10 +137,9 @@ DM_INLINE void dm_pp_kin(const int D, const int SPIN, const int ROLL, const dm_p
         for (int c = 0; c < W; c++)
             k->wrel[c] = wp[W * i + c] - wp[W * j + c];
     k->rstar = rad[i] * rad[j] / sum;
-    /* against a fixed particle (1/m = 0), the moving one's mass: selects,
-     * which the kinematics loops vectorise */
-    const double mi = P->m[i], mj = P->m[j], both = mi * mj / (mi + mj);
-    k->mstar = P->im[i] == 0.0 ? mj : P->im[j] == 0.0 ? mi : both;
+    /* 1/m* = 1/m_i + 1/m_j: against a fixed particle (1/m = 0) the moving
+     * one's mass, without a branch */
+    k->mstar = 1.0 / (P->im[i] + P->im[j]);
 }
 
 /* Particle-wall kinematics of a touching candidate, from its geometry gk. */
