@@ -255,9 +255,11 @@ DEMILL_API demill_status demill_drum_set_material(demill_world *world, demill_id
 DEMILL_API demill_status demill_drum_get_material(demill_world *world, demill_id drum,
                                                   int32_t part, demill_id *out);
 
-/** Makes a wall (a mesh, a polyline or a plane) a part of the drum: from
- *  now on it turns with the drum, its own motion replaced. Its geometry is
- *  taken where it is now, at the drum's current angle, so nothing jumps.
+/** Makes a wall (a mesh, a polyline, a plane or a finite wall: cylinder,
+ *  cone, disc or rectangle, a capped wall with its caps) a part of the
+ *  drum: from now on it turns with the drum, its own motion (rigid or
+ *  harmonic) replaced. Its geometry is taken where it is now, at the drum's
+ *  current angle, so nothing jumps; a surface velocity turns with it.
  *  It counts in everything the drum reports: torque, power, the force on
  *  the drum, energy in and dissipated, the collision spectrum's row of its
  *  part (shell and caps, or lifters) and, as part DEMILL_DRUM_PART_LIFTERS,
@@ -276,8 +278,7 @@ DEMILL_API demill_status demill_drum_get_material(demill_world *world, demill_id
  *          not valid in this world, the drum's id given as the wall),
  *          DEMILL_ERR_UNKNOWN_KEY (no such part), DEMILL_ERR_DIMENSION (the
  *          caps of a 2D drum) or DEMILL_ERR_INVALID_VALUE (the wall is
- *          attached already, to the drum or to a body, or is a finite
- *          wall: only planes, meshes and polylines can be attached). */
+ *          attached already, to the drum or to a body). */
 DEMILL_API demill_status demill_drum_attach_wall(demill_world *world, demill_id drum,
                                                  demill_id wall, int32_t part);
 

@@ -910,13 +910,15 @@ static demill_status check_walls(demill_world *t)
                   (wl->kind == DM_WALL_MESH) == (wl->mesh != NULL) &&
                   wl->material < t->nmat && wl->npoly >= 0 && wl->npoly <= DM_MAX_POLY &&
                   finite_wall_ok(t, k);
-        if (dm_wall_attached(wl)) { /* a user's wall, attached to the drum */
+        if (dm_wall_attached(wl) && !wl->parent) { /* a user's wall, attached to the drum */
             user++;
             ok &= d->alive && wl->drum_part <= DM_PART_LIFTER && wl->lifter == -1 &&
                   (wl->drum_part != DM_PART_CAP || t->dim == 3) && wl->handle < t->wh.n &&
                   t->wh.slot[wl->handle] == k;
-        } else if (wl->parent) {
-            ok &= wl->handle == DM_FREE && !wl->drum_part;
+        } else if (wl->parent) { /* a cap, attached to the drum with its wall or not */
+            ok &= wl->handle == DM_FREE && wl->parent - 1 < t->nwalls &&
+                  wl->drum_part == t->walls[wl->parent - 1].drum_part &&
+                  (!wl->drum_part || wl->lifter == -1);
         } else if (wl->drum_part) {
             drum++;
             bool listed = false;

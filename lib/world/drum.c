@@ -66,8 +66,8 @@ DEMILL_API demill_status demill_drum_remove(demill_world *w, demill_id drum)
     if (s)
         return s;
     dm_drum_walls_remove(w);
-    for (uint32_t k = 0; k < w->nwalls; k++)
-        if (w->walls[k].kind && dm_wall_attached(&w->walls[k]))
+    for (uint32_t k = 0; k < w->nwalls; k++) /* (a capped wall's release frees its caps) */
+        if (w->walls[k].kind && dm_wall_attached(&w->walls[k]) && !w->walls[k].parent)
             dm_wall_release(w, k);
     dm_spectrum_free(w);
     w->drum.alive = false;
@@ -221,11 +221,11 @@ DEMILL_API demill_status demill_drum_attach_wall(demill_world *w, demill_id drum
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                        "drum_attach_wall: the wall is attached to body 0x%llx and moves with it",
                        (unsigned long long)dm_body_id(w, wl->body - 1));
-    if (wl->kind != DM_WALL_PLANE && wl->kind != DM_WALL_MESH)
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "drum_attach_wall: only planes, meshes and polylines turn with the drum "
-                       "(a finite wall cannot be attached yet)");
     dm_wall_attach(wl, part, w->time, w->drum.theta, w->drum.omega);
+    for (int q = 0; q < 2; q++) /* a capped wall's caps, which share its pose */
+        if (wl->parts[q])
+            dm_wall_attach(&w->walls[wl->parts[q] - 1], part, w->time, w->drum.theta,
+                           w->drum.omega);
     w->nlist_valid = false;
     w->forces_valid = false;
     dm_changed(w);

@@ -553,6 +553,9 @@ DEMILL_API demill_status demill_wall_set_harmonic(demill_world *w, demill_id id,
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: frequency = %g must be positive", fn,
                        frequency);
     dm_wall *wall = &w->walls[slot];
+    if (wall->drum_part)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "%s: the wall is attached to the drum and turns with it", fn);
     if (wall->body)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                        "%s: the wall is attached to body 0x%llx and moves with it", fn,

@@ -87,9 +87,10 @@ class Drum(Handle, Keyed):
         return Material(self.world, out.value)
 
     def attach_wall(self, wall, part):
-        """Makes ``wall`` (a mesh, polyline or plane of this world) a part
-        (:class:`DrumPart`) of the drum: it turns with the drum from where it
-        is now and counts in the drum's torque, power and charge shape."""
+        """Makes ``wall`` (a mesh, polyline, plane or finite wall of this
+        world) a part (:class:`DrumPart`) of the drum: it turns with the drum
+        from where it is now and counts in the drum's torque, power and
+        charge shape."""
         self.world._call("demill_drum_attach_wall", self.id, as_id(wall), int(DrumPart(part)))
 
     def add_lifter(self, angle, height, width, face_angle=0.0):

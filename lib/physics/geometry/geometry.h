@@ -91,8 +91,9 @@ void dm_mesh_vertex_at(const dm_wall *wall, uint32_t k, double *out);
 double dm_mesh_reach(const dm_wall *wall);
 /* Before a mesh wall's current pose becomes its reference (dm_wall_rebase). */
 void dm_mesh_rebase(dm_wall *wall);
-/* A mesh wall's current geometry placed by its frame in the frame of a drum
- * at angle theta (the wall's pose then being the drum's: c0 = 0). */
+/* A mesh wall at rest in its reference (rebased: dm_wall_rebase) placed by
+ * its frame in the frame of a drum at angle theta (the wall's pose then
+ * being the drum's: c0 = 0). */
 void dm_mesh_into_drum(dm_wall *wall, double theta);
 /* The smallest (far = 0) or largest (far = 1) distance of a mesh wall's
  * vertices from the z axis. */

@@ -615,8 +615,7 @@ void dm_mesh_rebase(dm_wall *wall)
 
 void dm_mesh_into_drum(dm_wall *wall, double theta)
 {
-    dm_mesh_rebase(wall); /* now X = B V + b in the world */
-    dm_trimesh *m = wall->mesh;
+    dm_trimesh *m = wall->mesh; /* X = B V + b in the world */
     const double c = cos(theta), s = sin(theta);
     double B[9], b[3];
     for (int col = 0; col < 3; col++) { /* B := R(theta)^T B */

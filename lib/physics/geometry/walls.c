@@ -205,15 +205,19 @@ static void wall_at_drum(dm_wall *wall, double theta, double omega)
 
 void dm_wall_attach(dm_wall *wall, int part, double now, double theta, double omega)
 {
-    dm_wall_at(wall, now);
+    dm_wall_rebase(wall, now, now); /* the reference is the wall where it is now */
     if (wall->mesh) {
         dm_mesh_into_drum(wall, theta);
         wall->reach = dm_mesh_axis_distance(wall, 1);
     }
     const double c = cos(theta), s = sin(theta);
     const double Rt[9] = {c, s, 0, -s, c, 0, 0, 0, 1}; /* back by the drum's angle */
-    mat_vec(Rt, wall->p, wall->p0);
-    mat_vec(Rt, wall->n, wall->n0);
+    double *const world[4] = {wall->p0, wall->n0, wall->e0, wall->surf0};
+    for (int q = 0; q < 4; q++) {
+        double v[3];
+        mat_vec(Rt, world[q], v);
+        memcpy(world[q], v, sizeof v);
+    }
     memset(wall->c0, 0, sizeof wall->c0);
     wall->drum_part = part;
     wall->lifter = -1;

@@ -159,10 +159,11 @@ enum { DM_HARMONIC_TRANSLATE = 1, DM_HARMONIC_ROTATE = 2 };
 /* The drum's parts, numbered as DEMILL_DRUM_PART_* */
 enum { DM_PART_NONE = 0, DM_PART_SHELL = 1, DM_PART_CAP = 2, DM_PART_LIFTER = 3 };
 /* Whether a wall of the drum is one a user attached to it (it keeps its own
- * handle, demill_drum_attach_wall) rather than one the drum built. */
+ * handle, demill_drum_attach_wall), or a cap of one, rather than one the
+ * drum built. */
 static inline bool dm_wall_attached(const dm_wall *wall)
 {
-    return wall->drum_part && wall->handle != DM_FREE;
+    return wall->drum_part && (wall->handle != DM_FREE || wall->parent);
 }
 
 /* ---- bodies (bodies/bodies.c) -------------------------------------------- */
