@@ -282,6 +282,46 @@ DEMILL_API demill_status demill_drum_get_material(demill_world *world, demill_id
 DEMILL_API demill_status demill_drum_attach_wall(demill_world *world, demill_id drum,
                                                  demill_id wall, int32_t part);
 
+/** Adds lifters or liners to the drum from their cross-section: a polyline
+ *  of `n_points` points (x, y) in the drum's frame at drum angle 0 (the
+ *  axis at the origin, polar angles as for demill_drum_add_lifter()),
+ *  open or closed (the last point joined to the first), repeated
+ *  `copies` times about the axis, copy k turned by 2πk/copies
+ *  counter-clockwise: one lifter's profile makes `copies` evenly spaced
+ *  lifters. In 3D each segment is extruded along the axis over the drum's
+ *  length (z from -length/2 to length/2) into two triangles, in 2D it is a
+ *  segment. The result is one mesh (3D) or polyline (2D) wall of the given
+ *  material, attached to the drum as part `part` at its current angle
+ *  (demill_drum_attach_wall(): it turns with the drum, counts in its
+ *  torque, power, force and energy, and as part DEMILL_DRUM_PART_LIFTERS
+ *  in the charge shape); its id is a wall's, for demill_wall_remove().
+ *  The surface is thin and touched from either side, as a mesh's is: an
+ *  open profile need only trace the faces the charge can reach. Changing
+ *  the drum's diameter or length later does not change it.
+ *  @param world    the world.
+ *  @param drum     the drum's id.
+ *  @param material the wall's material.
+ *  @param part     the part it becomes, DEMILL_DRUM_PART_*.
+ *  @param n_points the number of points: 2 to 65536 (open), 3 to 65536
+ *                  (closed).
+ *  @param points   2 n_points doubles, x and y of each point, m: finite,
+ *                  at most the drum's radius from the axis (a point on
+ *                  the shell is inside), no two consecutive points equal.
+ *  @param closed   1: the last point is joined to the first; 0: not.
+ *  @param copies   the number of copies about the axis, 1 to 1024.
+ *  @param[out] out receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (drum or material),
+ *          DEMILL_ERR_UNKNOWN_KEY (no such part), DEMILL_ERR_DIMENSION (the
+ *          caps of a 2D drum), DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE (a point that is not finite),
+ *          DEMILL_ERR_INVALID_VALUE (closed not 0 or 1, too few or too
+ *          many points, copies out of range, a point outside the shell, a
+ *          segment of zero length) or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_drum_add_profile(demill_world *world, demill_id drum,
+                                                 demill_id material, int32_t part,
+                                                 size_t n_points, const double *points,
+                                                 int closed, uint32_t copies, demill_id *out);
+
 /** Adds one lifter to the drum.
  *  @param world      the world.
  *  @param drum       the drum's id.

@@ -8,7 +8,7 @@ import numpy as np
 from ._core import Keyed, Param, as_id, doubles, first, ptr, read_counted, read_field
 from .constants import DrumKey, DrumPart, Kind, LifterField
 from .errors import BufferTooSmall
-from .objects import Handle, Material, count
+from .objects import Handle, Material, Wall, count
 
 
 class Drum(Handle, Keyed):
@@ -92,6 +92,20 @@ class Drum(Handle, Keyed):
         from where it is now and counts in the drum's torque, power and
         charge shape."""
         self.world._call("demill_drum_attach_wall", self.id, as_id(wall), int(DrumPart(part)))
+
+    def add_profile(self, material, part, points, closed=False, copies=1):
+        """Adds lifters or liners from their cross-section: ``points`` (n x
+        2, m) in the drum's frame at drum angle 0, joined in order (and back
+        to the first if ``closed``), repeated ``copies`` times evenly about
+        the axis; extruded over the drum's length in 3D. One mesh (3D) or
+        polyline (2D) :class:`Wall` of ``material``, attached as ``part``
+        (:class:`DrumPart`)."""
+        p = doubles(points, (-1, 2), "points")
+        out = ctypes.c_uint64()
+        self.world._call("demill_drum_add_profile", self.id, as_id(material),
+                         int(DrumPart(part)), p.shape[0], ptr(p), 1 if closed else 0,
+                         int(copies), ctypes.byref(out))
+        return Wall(self.world, out.value)
 
     def add_lifter(self, angle, height, width, face_angle=0.0):
         """Adds one lifter: centre line at polar angle ``angle`` (rad, drum
