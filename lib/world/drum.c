@@ -128,6 +128,13 @@ DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_
     case DEMILL_DRUM_CRITICAL_DIAMETER: d->crit_diameter = value; break;
     case DEMILL_DRUM_FILL_POROSITY: d->porosity = value; break;
     case DEMILL_DRUM_SAMPLE_INTERVAL: d->sample_interval = (uint32_t)value; break;
+    default: /* the translation keys */
+        if (w->dim == 2 && value != 0.0 &&
+            (key == DEMILL_DRUM_CENTER_Z || key == DEMILL_DRUM_VELOCITY_Z ||
+             key == DEMILL_DRUM_VIBRATION_Z))
+            return dm_fail(w, DEMILL_ERR_DIMENSION, "drum_set: %s = %g in a 2D world",
+                           demill_param_name(key), value);
+        dm_drum_set_motion(w, key, value);
     }
     if (rebuild) {
         if (key != DEMILL_DRUM_DIAMETER && key != DEMILL_DRUM_LENGTH && key != DEMILL_DRUM_LIFTERS &&
@@ -225,11 +232,10 @@ DEMILL_API demill_status demill_drum_attach_wall(demill_world *w, demill_id drum
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                        "drum_attach_wall: the wall is attached to body 0x%llx and moves with it",
                        (unsigned long long)dm_body_id(w, wl->body - 1));
-    dm_wall_attach(wl, part, w->time, w->drum.theta, w->drum.omega);
+    dm_wall_attach(wl, part, w->time, &w->drum);
     for (int q = 0; q < 2; q++) /* a capped wall's caps, which share its pose */
         if (wl->parts[q])
-            dm_wall_attach(&w->walls[wl->parts[q] - 1], part, w->time, w->drum.theta,
-                           w->drum.omega);
+            dm_wall_attach(&w->walls[wl->parts[q] - 1], part, w->time, &w->drum);
     w->nlist_valid = false;
     w->forces_valid = false;
     dm_changed(w);
@@ -309,9 +315,9 @@ DEMILL_API demill_status demill_drum_add_profile(demill_world *w, demill_id drum
         for (int e = 0; e < ends; e++)
             for (size_t k = 0; k < n_points; k++, iv++) {
                 const double x = points[2 * k], y = points[2 * k + 1];
-                v[3 * iv] = ca * x - sa * y;
-                v[3 * iv + 1] = sa * x + ca * y;
-                v[3 * iv + 2] = D == 3 ? (e ? 0.5 : -0.5) * d->length : 0.0;
+                v[3 * iv] = d->centre[0] + (ca * x - sa * y);
+                v[3 * iv + 1] = d->centre[1] + (sa * x + ca * y);
+                v[3 * iv + 2] = d->centre[2] + (D == 3 ? (e ? 0.5 : -0.5) * d->length : 0.0);
             }
         for (size_t k = 0; k < nseg; k++) {
             const uint32_t p0 = (uint32_t)(first + k), p1 = (uint32_t)(first + (k + 1) % n_points);
@@ -334,7 +340,7 @@ DEMILL_API demill_status demill_drum_add_profile(demill_world *w, demill_id drum
     free(el);
     if (s || (s = dm_resolve(w, id, DEMILL_KIND_WALL, "wall", &ws)))
         return s;
-    dm_wall_attach(&w->walls[ws], part, w->time, d->theta, d->omega);
+    dm_wall_attach(&w->walls[ws], part, w->time, d);
     *out = id;
     return DEMILL_OK;
 }
@@ -386,7 +392,28 @@ DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_
     case DEMILL_DRUM_ANGLE: *value = d->theta; break;
     case DEMILL_DRUM_REVOLUTIONS: *value = (double)d->revolutions; break;
     case DEMILL_DRUM_TORQUE: *value = dm_drum_load(w, NULL); break;
-    case DEMILL_DRUM_POWER: *value = -dm_drum_load(w, NULL) * d->omega; break;
+    case DEMILL_DRUM_POWER: {
+        double f[3];
+        const double t = dm_drum_load(w, f);
+        *value = dm_drum_power(d, t, f);
+        break;
+    }
+    case DEMILL_DRUM_CENTER_X:
+    case DEMILL_DRUM_CENTER_Y:
+    case DEMILL_DRUM_CENTER_Z: *value = d->centre[key - DEMILL_DRUM_CENTER_X]; break;
+    case DEMILL_DRUM_VELOCITY_X:
+    case DEMILL_DRUM_VELOCITY_Y:
+    case DEMILL_DRUM_VELOCITY_Z: *value = d->velocity[key - DEMILL_DRUM_VELOCITY_X]; break;
+    case DEMILL_DRUM_VIBRATION_X:
+    case DEMILL_DRUM_VIBRATION_Y:
+    case DEMILL_DRUM_VIBRATION_Z: *value = d->vib_amp[key - DEMILL_DRUM_VIBRATION_X]; break;
+    case DEMILL_DRUM_VIBRATION_FREQUENCY: *value = d->vib_freq; break;
+    case DEMILL_DRUM_VIBRATION_PHASE: *value = d->vib_phase; break;
+    case DEMILL_DRUM_CURRENT_VELOCITY_X:
+    case DEMILL_DRUM_CURRENT_VELOCITY_Y:
+    case DEMILL_DRUM_CURRENT_VELOCITY_Z:
+        *value = d->vcentre[key - DEMILL_DRUM_CURRENT_VELOCITY_X];
+        break;
     case DEMILL_DRUM_POWER_MEAN: *value = d->mean_power; break;
     case DEMILL_DRUM_POWER_CM: *value = dm_drum_power_cm(w, d->omega); break;
     case DEMILL_DRUM_POWER_CM_MEAN: *value = d->mean_power_cm; break;

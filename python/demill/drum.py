@@ -39,6 +39,17 @@ class Drum(Handle, Keyed):
     fill_porosity = Param(DrumKey.FILL_POROSITY)
     sample_interval = Param(DrumKey.SAMPLE_INTERVAL, int)
     shell = Param(DrumKey.SHELL, int)
+    center_x = Param(DrumKey.CENTER_X)
+    center_y = Param(DrumKey.CENTER_Y)
+    center_z = Param(DrumKey.CENTER_Z)
+    velocity_x = Param(DrumKey.VELOCITY_X)
+    velocity_y = Param(DrumKey.VELOCITY_Y)
+    velocity_z = Param(DrumKey.VELOCITY_Z)
+    vibration_x = Param(DrumKey.VIBRATION_X)
+    vibration_y = Param(DrumKey.VIBRATION_Y)
+    vibration_z = Param(DrumKey.VIBRATION_Z)
+    vibration_frequency = Param(DrumKey.VIBRATION_FREQUENCY)
+    vibration_phase = Param(DrumKey.VIBRATION_PHASE)
     critical_speed = Param(DrumKey.CRITICAL_SPEED)
     current_speed = Param(DrumKey.CURRENT_SPEED)
     angle = Param(DrumKey.ANGLE)
@@ -61,6 +72,9 @@ class Drum(Handle, Keyed):
     force_x = Param(DrumKey.FORCE_X)
     force_y = Param(DrumKey.FORCE_Y)
     force_z = Param(DrumKey.FORCE_Z)
+    current_velocity_x = Param(DrumKey.CURRENT_VELOCITY_X)
+    current_velocity_y = Param(DrumKey.CURRENT_VELOCITY_Y)
+    current_velocity_z = Param(DrumKey.CURRENT_VELOCITY_Z)
 
     @property
     def force(self):

@@ -263,6 +263,31 @@ class DrumProfiles(unittest.TestCase):
         self.assertEqual(len(w.walls), 1)
         w.close()
 
+    def test_a_lifted_drum_does_the_work(self):
+        """A drum raised at 0.5 m/s for 0.1 s with a ball of radius 0.01
+        (7800 kg/m3) resting on its shell, the ball given the drum's
+        velocity: the drum rises 0.05 m and does the work m g v t of lifting
+        the ball, and its power is m g v."""
+        w, m = linear_world(3, gravity=(0, -9.81, 0))
+        w.pair(m, m, normal_stiffness=1e5)
+        m.density = 7800
+        mat = m
+        drum = w.add_drum(mat, diameter=0.3)
+        r = 0.01
+        mass = 7800 * 4 / 3 * math.pi * r ** 3
+        (pid,) = w.particles.add(mat, [(0, -(0.15 - r + mass * 9.81 / 1e5), 0)], r)
+        w.step(5000)
+        drum.velocity_y = 0.5
+        w.particle(pid).velocity = (0, 0.5, 0)
+        e0 = drum.energy_in
+        w.step(10000)
+        self.assertAlmostEqual(drum.center_y, 0.05, delta=1e-12)
+        self.assertAlmostEqual(drum.current_velocity_y, 0.5, delta=1e-15)
+        work = mass * 9.81 * 0.5 * 0.1
+        self.assertAlmostEqual((drum.energy_in - e0) / work, 1.0, delta=1e-6)
+        self.assertAlmostEqual(drum.power / (mass * 9.81 * 0.5), 1.0, delta=1e-6)
+        w.close()
+
 
 class TimeStepGuide(unittest.TestCase):
     def test_linear_suggestion(self):

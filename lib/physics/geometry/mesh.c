@@ -613,29 +613,40 @@ void dm_mesh_rebase(dm_wall *wall)
     memcpy(m->frame_off, b, sizeof b);
 }
 
-void dm_mesh_into_drum(dm_wall *wall, double theta)
+void dm_mesh_into_drum(dm_wall *wall, double theta, const double centre[3])
 {
     dm_trimesh *m = wall->mesh; /* X = B V + b in the world */
     const double c = cos(theta), s = sin(theta);
-    double B[9], b[3];
+    double B[9], b[3], o[3];
     for (int col = 0; col < 3; col++) { /* B := R(theta)^T B */
         const double *F = m->frame_rot;
         B[col] = c * F[col] + s * F[3 + col];
         B[3 + col] = -s * F[col] + c * F[3 + col];
         B[6 + col] = F[6 + col];
     }
-    b[0] = c * m->frame_off[0] + s * m->frame_off[1];
-    b[1] = -s * m->frame_off[0] + c * m->frame_off[1];
-    b[2] = m->frame_off[2];
+    for (int k = 0; k < 3; k++) /* b := R(theta)^T (b - centre) */
+        o[k] = m->frame_off[k] - centre[k];
+    b[0] = c * o[0] + s * o[1];
+    b[1] = -s * o[0] + c * o[1];
+    b[2] = o[2];
     memcpy(m->frame_rot, B, sizeof B);
     memcpy(m->frame_off, b, sizeof b);
+}
+
+/* Vertex k of a mesh attached to the drum in the drum's frame: B V + b. */
+static void drum_frame_vertex(const dm_wall *wall, uint32_t k, double *out)
+{
+    const dm_trimesh *m = wall->mesh;
+    const double *B = m->frame_rot, *v = vert(m, k);
+    for (int r = 0; r < 3; r++)
+        out[r] = B[3 * r] * v[0] + B[3 * r + 1] * v[1] + B[3 * r + 2] * v[2] + m->frame_off[r];
 }
 
 double dm_mesh_axis_distance(const dm_wall *wall, int far)
 {
     double best = far ? 0.0 : HUGE_VAL, x[3];
     for (uint32_t k = 0; k < wall->mesh->nv; k++) {
-        dm_mesh_vertex_at(wall, k, x);
+        drum_frame_vertex(wall, k, x);
         const double r = hypot(x[0], x[1]);
         best = far ? fmax(best, r) : fmin(best, r);
     }
@@ -649,7 +660,7 @@ double dm_mesh_widest_angle(const dm_wall *wall)
     for (uint32_t t = 0; t < m->nt; t++) {
         double phi[3], x[3];
         for (int k = 0; k < m->nel; k++) {
-            dm_mesh_vertex_at(wall, m->el[(size_t)m->nel * t + k], x);
+            drum_frame_vertex(wall, m->el[(size_t)m->nel * t + k], x);
             phi[k] = atan2(x[1], x[0]);
         }
         for (int a = 0; a < m->nel; a++)

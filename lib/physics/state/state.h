@@ -344,6 +344,10 @@ typedef struct dm_drum {
     double speed_value, ramp, crit_diameter;
     double t_set, theta_set, omega_from, omega_to;
     double theta, omega;    /* at world time */
+    /* translation: the centre at time t is centre_set + velocity (t - t_move)
+     * + vib_amp sin(2π vib_freq (t - t_move) + vib_phase) */
+    double centre_set[3], velocity[3], vib_amp[3], vib_freq, vib_phase, t_move;
+    double centre[3], vcentre[3]; /* the centre and its velocity at world time */
     double theta_start;     /* angle when it first turned; NaN before */
     uint32_t sample_interval;
     uint64_t samples_due;   /* step count at the next charge-shape sample */
