@@ -15,6 +15,8 @@ import os
 import subprocess
 import sys
 
+from outputs import assert_png, read_summary
+
 
 def main():
     hopper, work = sys.argv[1:3]
@@ -22,13 +24,8 @@ def main():
     out = os.path.join(work, "out")
     subprocess.run([hopper, "--particles", "400", "--time-limit", "0.15", "--out", out],
                    check=True)
-    summary = {}
-    with open(os.path.join(out, "summary.txt")) as f:
-        for line in f:
-            key, value = line.split(" = ")
-            summary[key] = value.strip()
-    with open(os.path.join(out, "hopper.png"), "rb") as f:
-        assert f.read(8) == b"\x89PNG\r\n\x1a\n", "hopper.png is not a PNG"
+    summary = read_summary(os.path.join(out, "summary.txt"))
+    assert_png(os.path.join(out, "hopper.png"))
     bead = 2500 * math.pi * 0.006 ** 3 / 6
     n0, m0 = int(summary["initial_particles"]), float(summary["initial_mass_kg"])
     assert n0 == 400, f"{n0} beads in the hopper, asked for 400"
