@@ -175,10 +175,7 @@ int main(int argc, char **argv)
     cairo_move_to(cr, a.l, 22);
     cairo_show_text(cr, "spring-mounted box (0.3 kg, k = 9720 N/m) let go 2 mm from rest: "
                         "displacement [mm]");
-    cairo_destroy(cr);
-    char path[4096];
-    snprintf(path, sizeof path, "%s/spring-box.png", out);
-    if (plot_save_png(surface, path, "spring_box"))
+    if (plot_finish(cr, surface, out, "spring-box.png", "spring_box"))
         return EXIT_FAILURE;
     printf("spring_box: empty %.4f Hz (analytic %.4f Hz), amplitude %.3f mm after %g s; with %.0f "
            "balls %.3f mm; results in %s/\n",

@@ -32,6 +32,15 @@ int plot_save_png(cairo_surface_t *s, const char *path, const char *program)
     return 0;
 }
 
+int plot_finish(cairo_t *cr, cairo_surface_t *s, const char *dir, const char *name,
+                const char *program)
+{
+    cairo_destroy(cr);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return plot_save_png(s, path, program);
+}
+
 void plot_colour(double t, double rgb[3])
 {
     static const double stops[5][3] = {{0.267, 0.005, 0.329},
@@ -170,13 +179,15 @@ void plot_ticks(cairo_t *cr, const plot_area *a)
     char label[64];
     const double bottom = a->tp + a->h, right = a->l + a->w;
     const double dx = plot_tick_step(a->x1 - a->x0), dy = plot_tick_step(a->y1 - a->y0);
+    /* (a value within 1e-9 of a step from 0 is 0, not the -5.55e-17 the sum
+     * of steps may leave) */
     for (double x = ceil(a->x0 / dx) * dx; x <= a->x1 + 1e-12; x += dx) {
-        snprintf(label, sizeof label, "%g", x);
+        snprintf(label, sizeof label, "%g", fabs(x) < 1e-9 * dx ? 0.0 : x);
         plot_grid(cr, plot_px(a, x), a->tp, plot_px(a, x), bottom, plot_px(a, x) - 8, bottom + 18,
                   label);
     }
     for (double y = ceil(a->y0 / dy) * dy; y <= a->y1 + 1e-12; y += dy) {
-        snprintf(label, sizeof label, "%g", y);
+        snprintf(label, sizeof label, "%g", fabs(y) < 1e-9 * dy ? 0.0 : y);
         plot_grid(cr, a->l, plot_py(a, y), right, plot_py(a, y), a->l - 45, plot_py(a, y) + 4,
                   label);
     }

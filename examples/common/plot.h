@@ -19,6 +19,11 @@ cairo_t *plot_canvas(int wd, int ht, double font_size, cairo_surface_t **s);
  * "PROGRAM: cannot write PATH: ..." on stderr. */
 int plot_save_png(cairo_surface_t *s, const char *path, const char *program);
 
+/* Ends the drawing cr on the surface s and writes the surface to the PNG
+ * file `name` in the folder `dir` (plot_save_png()). */
+int plot_finish(cairo_t *cr, cairo_surface_t *s, const char *dir, const char *name,
+                const char *program);
+
 /* A perceptually even colour map (viridis, 5 stops) for t in [0, 1]. */
 void plot_colour(double t, double rgb[3]);
 

@@ -312,7 +312,6 @@ int main(int argc, char **argv)
     check(demill_outlet_create(w, DEMILL_REGION_HALF_SPACE, below, 6, 0, NULL, sample_every,
                                &outlet),
           "demill_outlet_create");
-    char path[4096];
     FILE *csv = output_open(o.out, "discharge.csv");
     fprintf(csv, "time_s,mass_kg,count\n0,0,0\n");
     series curve = {0}; /* time since opening, mass discharged */
@@ -377,9 +376,7 @@ int main(int argc, char **argv)
     cairo_set_font_size(cr, 18);
     cairo_move_to(cr, 40, 36);
     cairo_show_text(cr, title);
-    cairo_destroy(cr);
-    snprintf(path, sizeof path, "%s/hopper.png", o.out);
-    if (plot_save_png(surface, path, "hopper"))
+    if (plot_finish(cr, surface, o.out, "hopper.png", "hopper"))
         return EXIT_FAILURE;
 
     FILE *sum = output_open(o.out, "summary.txt");
