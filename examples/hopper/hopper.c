@@ -66,7 +66,8 @@ static void usage(FILE *f)
           "  --diameter D      bead diameter, m [0.006]\n"
           "  --time-limit T    longest discharge, s after opening the orifice [6]\n"
           "  --time-step DT    s [4e-5]\n"
-          "  --stl FILE        the hopper [" HOPPER_STL "]\n"
+          "  --stl FILE        the hopper, of hopper.stl's dimensions, which the gate, the\n"
+          "                    fill and the pictures assume [" HOPPER_STL "]\n"
           "  --out DIR         output folder [hopper-out]\n"
           "  --help            this text\n",
           f);
@@ -80,7 +81,7 @@ static int parse_options(int argc, char **argv, options *o)
         const char *a = argv[k], *v = option_value(argc, argv, &k, usage);
         if (!v)
             return -1;
-        double x;
+        double x = 0;
         int bad = 0;
         if (!strcmp(a, "--out")) {
             o->out = v;
