@@ -52,7 +52,7 @@
 #define OUTLET_DEPTH 0.030 /* the outlet: everything this far below the orifice */
 
 typedef struct options {
-    const char *out, *stl;
+    const char *out, *stl, *walls;
     size_t particles;
     double diameter, time_limit, dt;
 } options;
@@ -68,6 +68,8 @@ static void usage(FILE *f)
           "  --time-step DT    s [4e-5]\n"
           "  --stl FILE        the hopper, of hopper.stl's dimensions, which the gate, the\n"
           "                    fill and the pictures assume [" HOPPER_STL "]\n"
+          "  --walls KIND      stl (the file) or analytic (the same hopper as a finite cone\n"
+          "                    and cylinder, demill_wall_add_cone and _cylinder) [stl]\n"
           "  --out DIR         output folder [hopper-out]\n"
           "  --help            this text\n",
           f);
@@ -75,7 +77,7 @@ static void usage(FILE *f)
 
 static int parse_options(int argc, char **argv, options *o)
 {
-    *o = (options){.out = "hopper-out", .stl = HOPPER_STL, .particles = 2500, .diameter = 0.006,
+    *o = (options){.out = "hopper-out", .stl = HOPPER_STL, .walls = "stl", .particles = 2500, .diameter = 0.006,
                    .time_limit = 6, .dt = 4e-5};
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k], *v = option_value(argc, argv, &k, usage);
@@ -87,6 +89,12 @@ static int parse_options(int argc, char **argv, options *o)
             o->out = v;
         } else if (!strcmp(a, "--stl")) {
             o->stl = v;
+        } else if (!strcmp(a, "--walls")) {
+            o->walls = v;
+            if (strcmp(v, "stl") && strcmp(v, "analytic")) {
+                fprintf(stderr, "hopper: --walls takes stl or analytic\n");
+                return -1;
+            }
         } else if (!strcmp(a, "--particles")) {
             bad = parse_number(a, v, 1, 20000, &x);
             o->particles = (size_t)x;
@@ -273,14 +281,30 @@ int main(int argc, char **argv)
     check(demill_pair_set(w, glass, glass, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN),
           "friction law");
 
-    /* the hopper: millimetres, z up in the file; here metres, y up:
-     * (x, y, z) -> (x, z, -y), a quarter turn about x */
-    const double z_up_to_y_up[12] = {1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 0, 0};
-    check(demill_wall_load_stl(w, glass, o.stl, 0.001, z_up_to_y_up, &hopper),
-          "loading the hopper");
-    size_t nv, nt;
-    check(demill_wall_mesh_info(w, hopper, &nv, &nt), "demill_wall_mesh_info");
+    /* the hopper, described for the messages, the picture and the summary */
     const double origin[3] = {0, 0, 0}, up[3] = {0, 1, 0};
+    char walls[256];
+    if (!strcmp(o.walls, "stl")) {
+        /* millimetres, z up in the file; here metres, y up: (x, y, z) ->
+         * (x, z, -y), a quarter turn about x */
+        const double z_up_to_y_up[12] = {1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 0, 0};
+        check(demill_wall_load_stl(w, glass, o.stl, 0.001, z_up_to_y_up, &hopper),
+              "loading the hopper");
+        size_t nv, nt;
+        check(demill_wall_mesh_info(w, hopper, &nv, &nt), "demill_wall_mesh_info");
+        const char *slash = strrchr(o.stl, '/');
+        snprintf(walls, sizeof walls, "%s, %zu triangles", slash ? slash + 1 : o.stl, nt);
+    } else {
+        const double top[3] = {0, CONE_HEIGHT, 0};
+        demill_id bin;
+        check(demill_wall_add_cone(w, glass, origin, up, ORIFICE_RADIUS, BIN_RADIUS, CONE_HEIGHT,
+                                   DEMILL_CAPS_NONE, &hopper),
+              "the cone");
+        check(demill_wall_add_cylinder(w, glass, top, up, BIN_RADIUS, BIN_HEIGHT, DEMILL_CAPS_NONE,
+                                       &bin),
+              "the bin");
+        snprintf(walls, sizeof walls, "a finite cone and cylinder");
+    }
     check(demill_wall_add_disc(w, glass, origin, up, ORIFICE_RADIUS + 0.005, 0, &gate),
           "closing the orifice");
 
@@ -293,8 +317,8 @@ int main(int argc, char **argv)
                              2, DEMILL_FILL_COUNT, (double)o.particles, 1, NULL, 0, &n0),
           "filling the bin");
     const double bead_mass = DENSITY * PI * pow(o.diameter, 3) / 6;
-    fprintf(stderr, "hopper: %s, %zu triangles; %zu beads of %.0f mm poured into the bin\n", o.stl,
-            nt, n0, 1e3 * o.diameter);
+    fprintf(stderr, "hopper: %s; %zu beads of %.0f mm poured into the bin\n", walls, n0,
+            1e3 * o.diameter);
     int32_t settled; /* the fall into the cone, then until the beads are at rest */
     check(demill_world_step(w, (uint64_t)ceil(0.25 / o.dt)), "pouring");
     check(demill_world_settle(w, 2.0, 1e-3 * bead_mass * 9.81 * o.diameter, &settled), "settling");
@@ -370,10 +394,9 @@ int main(int argc, char **argv)
     const double phi_d = 45.0 * PI / 180.0;
     const double beverloo[2] = {w_flat, w_flat * pow(tan(HALF_ANGLE) * tan(phi_d), -0.35)};
     draw_curve(cr, curve.a, curve.b, curve.n, rate, t_from, t_to, fit_at, t_slice, beverloo);
-    char title[256];
-    snprintf(title, sizeof title,
-             "libdemill hopper (hopper.stl, %zu triangles): %zu beads of %.0f mm, orifice %.0f mm",
-             nt, n_start, 1e3 * o.diameter, 1e3 * d0);
+    char title[512];
+    snprintf(title, sizeof title, "libdemill hopper (%s): %zu beads of %.0f mm, orifice %.0f mm",
+             walls, n_start, 1e3 * o.diameter, 1e3 * d0);
     cairo_set_font_size(cr, 18);
     cairo_move_to(cr, 40, 36);
     cairo_show_text(cr, title);
@@ -383,14 +406,14 @@ int main(int argc, char **argv)
     FILE *sum = output_open(o.out, "summary.txt");
     const double wall = now() - t_wall0;
     fprintf(sum,
-            "stl = %s\ntriangles = %zu\nbead_diameter_m = %g\nbead_density_kg_m3 = %g\n"
+            "hopper = %s\nbead_diameter_m = %g\nbead_density_kg_m3 = %g\n"
             "orifice_diameter_m = %g\nhalf_angle_deg = %g\ninitial_particles = %zu\n"
             "initial_mass_kg = %.17g\nsolid_fraction = %.4f\nended = %s\n"
             "discharge_time_s = %.6g\ndischarged_particles = %llu\ndischarged_mass_kg = %.17g\n"
             "remaining_particles = %zu\nremaining_mass_kg = %.17g\nfit_window_s = %.4f %.4f\n"
             "steady_rate_kg_s = %.6g\nbeverloo_flat_kg_s = %.6g\nbeverloo_rose_tanaka_kg_s = %.6g\n"
             "time_step_s = %g\nsteps = %llu\nwall_s = %.2f\n",
-            o.stl, nt, o.diameter, DENSITY, d0, HALF_ANGLE * 180 / PI, n_start, m_start, phi,
+            walls, o.diameter, DENSITY, d0, HALF_ANGLE * 180 / PI, n_start, m_start, phi,
             ended, t, (unsigned long long)count, m_out, n_end, m_end, t_from, t_to, rate,
             beverloo[0], beverloo[1], o.dt, (unsigned long long)steps, wall);
     output_close(sum, "summary.txt");
