@@ -30,14 +30,13 @@
 #define TAIL (-0.05)
 #define HEAD 0.55 /* the belt's ends along x, m */
 #define HALF_WIDTH 0.15
-#define FROM 1.5  /* the steady window starts, s */
 
 static void usage(FILE *f)
 {
     fputs("usage: belt [options]\n"
           "Feeds particles onto a moving belt and writes belt.csv and belt.png to the\n"
           "output folder.\n\n"
-          "  --time T        simulated time, s [2.5]\n"
+          "  --time T        simulated time, s; the force is averaged over its last 40 % [2.5]\n"
           "  --out DIR       output folder [belt-out]\n"
           "  --help          this text\n",
           f);
@@ -86,7 +85,7 @@ int main(int argc, char **argv)
     double time = 2.5;
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k], *v = option_value(argc, argv, &k, usage);
-        if (!v || (!strcmp(a, "--time") && parse_number(a, v, 2.0, 60, &time)))
+        if (!v || (!strcmp(a, "--time") && parse_number(a, v, 0.1, 60, &time)))
             return EXIT_FAILURE;
         if (!strcmp(a, "--out"))
             out = v;
@@ -134,7 +133,9 @@ int main(int argc, char **argv)
     check(demill_outlet_create(w, DEMILL_REGION_HALF_SPACE, below, 6, 0, NULL, 0.01, &outlet),
           "the outlet");
 
-    /* the belt's horizontal force, averaged over every step of 10 ms */
+    /* the belt's horizontal force, averaged over every step of 10 ms, and
+     * over the last 40 % of the run, when the stream is steady */
+    const double from = 0.6 * time;
     const uint64_t window = (uint64_t)lround(0.01 / dt);
     FILE *csv = output_open(out, "belt.csv");
     fprintf(csv, "time_s,belt_force_x_N,fed_kg,discharged_kg\n");
@@ -155,7 +156,7 @@ int main(int argc, char **argv)
         check(demill_outlet_read(w, outlet, NULL, &gone, 1, NULL, NULL), "demill_outlet_read");
         series_add(&force, t, sum / window);
         fprintf(csv, "%.4f,%.6g,%.6g,%.6g\n", t, sum / window, fed, gone);
-        if (t > FROM) {
+        if (t > from) {
             mean += sum / window;
             steady++;
         }
@@ -177,12 +178,12 @@ int main(int argc, char **argv)
     plot_ticks(cr, &a);
     plot_curve(cr, &a, force.a, force.b, force.n, (const double[3]){0.13, 0.37, 0.66}, 1.2);
     const double tx[2] = {0, time}, mv[2] = {-RATE * SPEED, -RATE * SPEED};
-    const double mean_x[2] = {FROM, time}, mean_y[2] = {mean, mean};
+    const double mean_x[2] = {from, time}, mean_y[2] = {mean, mean};
     plot_curve(cr, &a, tx, mv, 2, (const double[3]){0.5, 0.5, 0.5}, 1.5);
     plot_curve(cr, &a, mean_x, mean_y, 2, (const double[3]){0.85, 0.2, 0.1}, 2.5);
     char label[128];
     snprintf(label, sizeof label,
-             "mean from %.1f s (red): %.4f N;  -ṁ v (grey) = %.4f N;  ratio %.3f", FROM, mean,
+             "mean from %.1f s (red): %.4f N;  -ṁ v (grey) = %.4f N;  ratio %.3f", from, mean,
              -RATE * SPEED, mean / (-RATE * SPEED));
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, a.l + 15, a.tp + 22);
@@ -194,7 +195,7 @@ int main(int argc, char **argv)
         return EXIT_FAILURE;
     printf("belt: mean force on the belt along x from %.1f to %.1f s %.4f N; -ṁ v = %.4f N "
            "(ratio %.3f); results in %s/\n",
-           FROM, t, mean, -RATE * SPEED, mean / (-RATE * SPEED), out);
+           from, t, mean, -RATE * SPEED, mean / (-RATE * SPEED), out);
     series_free(&force);
     demill_world_destroy(w);
     return EXIT_SUCCESS;
