@@ -88,6 +88,12 @@ typedef struct dm_trimesh {
     uint32_t *order;        /* elements in leaf order */
     double frame_rot[9], frame_off[3];
     double bs_centre[3], bs_radius; /* a sphere about every vertex, in the mesh's frame */
+    /* a grid of cubes of side far_h over a box about the mesh, from corner
+     * far_lo, with far_n cubes per axis (x fastest): per cube a lower bound
+     * of the distance from its points to the mesh */
+    float *far;
+    uint32_t far_n[3];
+    double far_lo[3], far_h;
 } dm_trimesh;
 
 #define DM_MAX_POLY 8 /* vertices of a lifter's cross-section, at most */
