@@ -4,7 +4,8 @@
  * must hold exactly the pairs an O(N²) loop finds within the interaction
  * distance r_i + r_j + skin, each once, in the bucket of its material pair's
  * kernel; the particle-wall lists exactly the particles within r + skin of
- * each wall. Contact histories must follow their pairs through the re-sort
+ * each wall (a finite wall's included, though its bounding sphere holds
+ * them all). Contact histories must follow their pairs through the re-sort
  * of particles by cell (the 3D spring vector changing sign when the pair's
  * order flips), and particle ids must keep naming the same particles.
  * Internal test: it links the static library and reads the lists directly.
@@ -22,7 +23,8 @@ static double urand(void)
 }
 
 /* A world of n particles with radii in [rmin, 10 rmin], centres uniform in a
- * box of edge `edge`, two materials m (with different kernels) and two walls. */
+ * box of edge `edge`, two materials m (with different kernels) and two planes,
+ * and in 3D a cylinder about the box's z axis, as wide and long as it. */
 static demill_world *random_world(int dim, int n, double edge, demill_id *ids, demill_id *m)
 {
     demill_world *w;
@@ -40,6 +42,11 @@ static demill_world *random_world(int dim, int n, double edge, demill_id *ids, d
     double p0[3] = {0, 0, 0}, n0[3] = {0, 1, 0}, p1[3] = {0, 0, 0}, n1[3] = {1, -1, 0};
     DM_OK(w, demill_wall_add_plane(w, m[0], p0, n0, &wall));
     DM_OK(w, demill_wall_add_plane(w, m[1], p1, n1, &wall));
+    if (dim == 3) { /* a finite wall about the particles, as a silo's is */
+        const double base[3] = {edge / 2, edge / 2, 0}, z[3] = {0, 0, 1};
+        DM_OK(w, demill_wall_add_cylinder(w, m[1], base, z, edge / 2, edge, DEMILL_CAPS_NONE,
+                                          &wall));
+    }
     const double rmin = 0.001;
     for (int i = 0; i < n; i++) {
         double x[3] = {0, 0, 0}, r = rmin * (1 + 9 * urand() * urand());

@@ -577,4 +577,17 @@ static inline bool dm_particle_fixed(const dm_particles *P, uint32_t i)
     return P->im[i] == 0.0;
 }
 
+/* The kinetic energy of particle i's spin, 1/2 I ω² over its W components
+ * of ω: 0 for a fixed particle, which does not turn (its inverse moment of
+ * inertia is 0, so that 1/2 ω² / I⁻¹ would be 0/0). */
+static inline double dm_particle_spin_energy(const dm_particles *P, uint32_t i, int W)
+{
+    if (dm_particle_fixed(P, i))
+        return 0.0;
+    double w2 = 0.0;
+    for (int c = 0; c < W; c++)
+        w2 += P->w[W * i + c] * P->w[W * i + c];
+    return 0.5 * w2 / P->iinv[i];
+}
+
 #endif /* DM_STATE_H */
