@@ -570,5 +570,14 @@ static inline bool dm_particle_fixed(const dm_particles *P, uint32_t i)
 {
     return P->im[i] == 0.0;
 }
+/* Adds sign × ½ I ω_c² for each of the W components of particle i's
+ * angular velocity to *e: its rotational kinetic energy. A fixed particle,
+ * at rest and with 1/I = 0, adds nothing (the quotient would be 0/0). */
+static inline void dm_particle_add_spin_energy(const dm_particles *P, uint32_t i, int W,
+                                               double sign, double *e)
+{
+    for (int c = 0; c < W && P->iinv[i] != 0.0; c++)
+        *e += sign * (0.5 * P->w[W * i + c] * P->w[W * i + c] / P->iinv[i]);
+}
 
 #endif /* DM_STATE_H */
