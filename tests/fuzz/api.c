@@ -2308,7 +2308,7 @@ static void op_feed_read(call *c)
     c->st = demill_feed_read(c->w, feed, f & 1 ? NULL : &mass, f & 2 ? NULL : &n,
                              f & 4 ? NULL : &deficit);
     if (c->st == DEMILL_OK && !(mass >= 0.0 && isfinite(mass) && deficit >= 0.0 &&
-                                isfinite(deficit) && (n > 0 || mass == 0.0)))
+                                isfinite(deficit) && (n > 0 || mass == 0.0 || f & 2)))
         fail("demill_feed_read gave the mass %.17g of %llu particles and the deficit %.17g", mass,
              (unsigned long long)n, deficit);
 }
