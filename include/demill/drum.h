@@ -472,8 +472,10 @@ DEMILL_API demill_status demill_grinding_rates_from_drum(demill_grinding *grindi
                                                          demill_world *world, demill_id drum);
 
 /** Steps the world until the charge has settled: until the kinetic energy per
- *  particle falls below `energy_per_particle`, or `max_time` of simulated
- *  time has passed.
+ *  particle is below `energy_per_particle` and no larger than at the check
+ *  before (the energy is looked at every millisecond of simulated time, so
+ *  particles placed at rest and starting to fall do not count as settled),
+ *  or `max_time` of simulated time has passed.
  *  @param world               the world.
  *  @param max_time            the longest time to step, s, >= 0.
  *  @param energy_per_particle the kinetic energy per particle that counts as

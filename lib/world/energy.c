@@ -46,7 +46,7 @@ demill_status dm_energies(demill_world *w, int stored, double e[DM_ENERGIES])
             e[0] += 0.5 * P->m[i] * P->v[D * i + c] * P->v[D * i + c];
             e[2] -= P->m[i] * w->g[c] * P->x[D * i + c];
         }
-        dm_particle_add_spin_energy(P, i, W, 1.0, &e[1]);
+        e[1] += dm_particle_spin_energy(P, i, W);
     }
     demill_status s = DEMILL_OK;
     if (stored && !(s = prepare_query(w)))

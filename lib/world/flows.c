@@ -306,7 +306,7 @@ DEMILL_API demill_status demill_outlet_read(demill_world *w, demill_id outlet, u
 /* Ends the intervals of an outlet that ended by `time`: the first of them
  * holds what was counted since the last, any later ones nothing. Counted
  * at once, not one by one, so that an interval far below the clock's
- * resolution (1e-300 s, or 1 ms at t = 1e15 s, where t + 1 ms = t) takes
+ * resolution (1e-300 s, or 1 ns at t = 1e8 s, where t + 1 ns = t) takes
  * no more time than another (one by one, t_next + interval stayed t_next:
  * a step never returned); such an interval ends at the next step. */
 static void close_intervals(dm_outlet *o, double time)
@@ -362,7 +362,7 @@ static demill_status outlets_act(demill_world *w, size_t *removed)
         o->interval_mass += m;
         for (int c = 0; c < D; c++)
             fl->energy -= 0.5 * m * P->v[D * i + c] * P->v[D * i + c] - m * w->g[c] * x[c];
-        dm_particle_add_spin_energy(P, i, W, -1.0, &fl->energy);
+        fl->energy -= dm_particle_spin_energy(P, i, W);
         ++*removed;
     }
     if (map)

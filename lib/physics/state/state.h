@@ -88,6 +88,12 @@ typedef struct dm_trimesh {
     uint32_t *order;        /* elements in leaf order */
     double frame_rot[9], frame_off[3];
     double bs_centre[3], bs_radius; /* a sphere about every vertex, in the mesh's frame */
+    /* a grid of cubes of side far_h over a box about the mesh, from corner
+     * far_lo, with far_n cubes per axis (x fastest): per cube a lower bound
+     * of the distance from its points to the mesh */
+    float *far;
+    uint32_t far_n[3];
+    double far_lo[3], far_h;
 } dm_trimesh;
 
 #define DM_MAX_POLY 8 /* vertices of a lifter's cross-section, at most */
@@ -570,14 +576,18 @@ static inline bool dm_particle_fixed(const dm_particles *P, uint32_t i)
 {
     return P->im[i] == 0.0;
 }
-/* Adds sign × ½ I ω_c² for each of the W components of particle i's
- * angular velocity to *e: its rotational kinetic energy. A fixed particle,
- * at rest and with 1/I = 0, adds nothing (the quotient would be 0/0). */
-static inline void dm_particle_add_spin_energy(const dm_particles *P, uint32_t i, int W,
-                                               double sign, double *e)
+
+/* The kinetic energy of particle i's spin, 1/2 I ω² over its W components
+ * of ω: 0 for a fixed particle, which does not turn (its inverse moment of
+ * inertia is 0, so that 1/2 ω² / I⁻¹ would be 0/0). */
+static inline double dm_particle_spin_energy(const dm_particles *P, uint32_t i, int W)
 {
-    for (int c = 0; c < W && P->iinv[i] != 0.0; c++)
-        *e += sign * (0.5 * P->w[W * i + c] * P->w[W * i + c] / P->iinv[i]);
+    if (dm_particle_fixed(P, i))
+        return 0.0;
+    double w2 = 0.0;
+    for (int c = 0; c < W; c++)
+        w2 += P->w[W * i + c] * P->w[W * i + c];
+    return 0.5 * w2 / P->iinv[i];
 }
 
 #endif /* DM_STATE_H */
