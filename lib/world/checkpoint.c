@@ -549,8 +549,14 @@ static void transfer_meshes(io *s, demill_world *w)
 /* The bodies, and which walls are attached to which body. */
 static void transfer_bodies(io *s, demill_world *w)
 {
+    /* the lengths of a body's arrays of doubles, in the order of f[] below */
+    static const size_t len[] = {1, 3, 3, 3, 3, 3, 3, 3, 1, 1, 3, 3, 3, 1, 1};
+    size_t doubles = 0;
+    for (size_t q = 0; q < sizeof len / sizeof *len; q++)
+        doubles += len[q];
     io_count(s, &w->nbodies, UINT32_MAX - 1, "body slots");
-    io_room(s, w->nbodies, 400, "bodies");
+    /* a body's record: its handle, free axes and gravity flag, its doubles */
+    io_room(s, w->nbodies, 3 * sizeof(int32_t) + doubles * sizeof(double), "bodies");
     io_array(s, &w->bodies, 0, w->nbodies, sizeof *w->bodies);
     if (s->reading && !s->status) {
         w->cap_bodies = w->nbodies;
@@ -564,7 +570,6 @@ static void transfer_bodies(io *s, demill_world *w)
         double *const f[] = {&b->mass, b->x,     b->v,       b->vp,       b->k,
                              b->c,     b->rest,  b->f0,      &b->freq,    &b->phase,
                              b->x_tally, b->fe_tally, b->fd_tally, &b->work, &b->dissipated};
-        const size_t len[] = {1, 3, 3, 3, 3, 3, 3, 3, 1, 1, 3, 3, 3, 1, 1};
         for (size_t q = 0; q < sizeof len / sizeof *len; q++)
             io_f64(s, f[q], len[q]);
     }

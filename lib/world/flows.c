@@ -303,6 +303,26 @@ DEMILL_API demill_status demill_outlet_read(demill_world *w, demill_id outlet, u
     return DEMILL_OK;
 }
 
+/* Ends the intervals of an outlet that ended by `time`: the first of them
+ * holds what was counted since the last, any later ones nothing. Counted
+ * at once, not one by one, so that an interval far below the clock's
+ * resolution (1e-300 s, or 1 ns at t = 1e8 s, where t + 1 ns = t) takes
+ * no more time than another (one by one, t_next + interval stayed t_next:
+ * a step never returned); such an interval ends at the next step. */
+static void close_intervals(dm_outlet *o, double time)
+{
+    if (!(time >= o->t_next))
+        return;
+    const double ended = floor((time - o->t_next) / o->interval) + 1.0;
+    o->last_mass = ended > 1.0 ? 0.0 : o->interval_mass;
+    o->last_count = ended > 1.0 ? 0 : o->interval_count;
+    o->interval_mass = 0.0;
+    o->interval_count = 0;
+    o->t_next += ended * o->interval;
+    if (!(o->t_next > time && isfinite(o->t_next)))
+        o->t_next = nextafter(time, INFINITY);
+}
+
 /* The particles whose centres are in an outlet, removed and counted (each
  * by the first outlet it is in); *removed counts them. */
 static demill_status outlets_act(demill_world *w, size_t *removed)
@@ -310,16 +330,9 @@ static demill_status outlets_act(demill_world *w, size_t *removed)
     dm_flows *fl = &w->flows;
     dm_particles *P = &w->p;
     const int D = w->dim, W = dm_wdim(w);
-    for (uint32_t q = 0; q < fl->noutlets; q++) {
-        dm_outlet *o = &fl->outlets[q];
-        while (o->id.alive && w->time >= o->t_next) {
-            o->last_mass = o->interval_mass;
-            o->last_count = o->interval_count;
-            o->interval_mass = 0.0;
-            o->interval_count = 0;
-            o->t_next += o->interval;
-        }
-    }
+    for (uint32_t q = 0; q < fl->noutlets; q++)
+        if (fl->outlets[q].id.alive)
+            close_intervals(&fl->outlets[q], w->time);
     uint32_t *map = NULL;
     for (uint32_t i = 0; i < P->n; i++) {
         double x[3] = {0, 0, 0};

@@ -170,6 +170,7 @@ DEMILL_API demill_status demill_pair_set(demill_world *w, demill_id a, demill_id
         u->a = ma < mb ? ma : mb;
         u->b = ma < mb ? mb : ma;
     }
+    const int kernel = dm_pair_kernel(w, ma, mb);
     switch (key) { /* a law is a small whole number (checked); other values need not fit an int */
     case DEMILL_PAIR_NORMAL: u->normal = (int32_t)value; break;
     case DEMILL_PAIR_DAMPING: u->damping = (int32_t)value; break;
@@ -181,6 +182,13 @@ DEMILL_API demill_status demill_pair_set(demill_world *w, demill_id a, demill_id
     }
     w->ptab_dirty = true;
     w->forces_valid = false;
+    if (dm_pair_kernel(w, ma, mb) != kernel) {
+        /* the contact lists are grouped by kernel: start them afresh now, as
+         * the next step would, so that no state holds a contact in the list
+         * of a law its pair no longer has (the checkpoint loader refuses it) */
+        dm_clist_clear(w);
+        w->nlist_valid = false;
+    }
     dm_changed(w);
     return DEMILL_OK;
 }

@@ -41,7 +41,8 @@ demill_status dm_region_parse(demill_world *w, const char *who, int32_t kind, co
                        "%s: a half-space is unbounded; it can only be an outlet", who);
     const int D = w->dim;
     dm_region r = {.kind = kind};
-    memcpy(r.p, p, np * sizeof *p);
+    if (np) /* the drum's region has none, and its params may be NULL */
+        memcpy(r.p, p, np * sizeof *p);
     if (D == 2)
         for (size_t k = 2; k < 6 && k < np; k += 3)
             if (p[k] != 0.0)

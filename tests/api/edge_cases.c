@@ -25,7 +25,10 @@
  * - a pair parameter as large as its bound (1e30) reads back as set: every
  *   value was converted to an int, wanted only for the laws' choices;
  * - demill_world_ids() lists no drum in a world without one, whatever
- *   walls it has: it listed the walls instead, beyond the caller's count.
+ *   walls it has: it listed the walls instead, beyond the caller's count;
+ * - the drum's region of a fill, a feed or an outlet with NULL for its
+ *   (no) params: a fill of 10 balls places them inside the drum. The
+ *   params were copied from NULL with length 0.
  */
 #include "testutil.h"
 
@@ -170,6 +173,36 @@ START_TEST(ids_of_no_drum)
 }
 END_TEST
 
+/* The drum's region takes no params, and NULL for them: a fill of 10
+ * balls places 10, each inside the drum (its distance from the axis at
+ * most R - r, |z| at most L/2 - r), and a feed and an outlet are made.
+ * The region's params were copied from NULL with length 0. */
+START_TEST(drum_region_without_params)
+{
+    demill_id m, drum, ids[10], feed, outlet;
+    demill_world *w = dm_test_world(3, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_NONE, &m);
+    DM_OK(w, demill_drum_create(w, m, &drum));
+    double D, L;
+    DM_OK(w, demill_drum_get(w, drum, DEMILL_DRUM_DIAMETER, &D));
+    DM_OK(w, demill_drum_get(w, drum, DEMILL_DRUM_LENGTH, &L));
+    const double d = 0.02, sizes[2] = {d, 1.0}, v[3] = {0, 0, 0};
+    size_t added = 0;
+    DM_OK(w, demill_fill_region(w, DEMILL_REGION_DRUM, NULL, 0, m, DEMILL_SIZES_CLASSES, sizes, 2,
+                                DEMILL_FILL_COUNT, 10, 1, ids, 10, &added));
+    ck_assert_uint_eq(added, 10);
+    for (int k = 0; k < 10; k++) {
+        double x[3];
+        DM_OK(w, demill_particle_get(w, ids[k], DEMILL_PARTICLE_POSITION, x));
+        ck_assert_msg(hypot(x[0], x[1]) <= 0.5 * (D - d) && fabs(x[2]) <= 0.5 * (L - d),
+                      "ball %d at (%g, %g, %g) is not inside the drum", k, x[0], x[1], x[2]);
+    }
+    DM_OK(w, demill_feed_create(w, DEMILL_REGION_DRUM, NULL, 0, m, DEMILL_SIZES_CLASSES, sizes, 2,
+                                1.0, v, 0.0, 1.0, 1, &feed));
+    DM_OK(w, demill_outlet_create(w, DEMILL_REGION_DRUM, NULL, 0, 0, NULL, 1.0, &outlet));
+    demill_world_destroy(w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("edge_cases");
@@ -179,6 +212,7 @@ int main(void)
     tcase_add_loop_test(tc, no_overlap_far_away, 0, 2);
     tcase_add_test(tc, large_pair_values);
     tcase_add_test(tc, ids_of_no_drum);
+    tcase_add_test(tc, drum_region_without_params);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }

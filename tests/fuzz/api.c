@@ -63,7 +63,7 @@
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 #define PARTICLES_MAX 512 /* per world: more are not added (steps stay fast) */
-#define WALLS_MAX 16      /* plane walls per world */
+#define WALLS_MAX 16      /* walls per world (planes, meshes, finite walls) */
 #define STEPS_MAX 256     /* steps a call may ask for (more if the progress callback stops it) */
 #define BINS_MAX 64       /* spectrum bins asked for where 1..10000 would be accepted */
 #define POOL 64           /* ids seen before, removed ones among them */
@@ -98,7 +98,7 @@ static struct {
     const uint8_t *p;
     size_t n;
     demill_world *w[2], *scratch;
-    listing list[2][5]; /* per world, per kind (DEMILL_KIND_*) */
+    listing list[2][8]; /* per world, per kind (DEMILL_KIND_*) */
     demill_id pool[POOL];
     size_t npool, pool_next;
     demill_snapshot *snap[2];
@@ -230,7 +230,7 @@ static bool listed(int k, int kind, demill_id id)
 
 static void list_world(int k)
 {
-    for (int kind = DEMILL_KIND_MATERIAL; kind <= DEMILL_KIND_DRUM; kind++) {
+    for (int kind = DEMILL_KIND_MATERIAL; kind <= DEMILL_KIND_BODY; kind++) {
         listing *l = &F.list[k][kind];
         size_t n;
         if (demill_world_ids(F.w[k], kind, NULL, 0, &n) != DEMILL_OK)
@@ -273,7 +273,7 @@ static demill_id id_arg(int k, int kind)
     case 2: return ~(demill_id)0;
     case 3: /* the next kind */
         return (base & ~((demill_id)0xf << ID_KIND_SHIFT)) |
-               (demill_id)(kind % 4 + 1) << ID_KIND_SHIFT;
+               (demill_id)(kind % DEMILL_KIND_BODY + 1) << ID_KIND_SHIFT;
     case 4: return base + ((demill_id)1 << ID_GEN_SHIFT);
     case 5: return base + ((demill_id)1 << ID_TAG_SHIFT);
     case 6: return base + 1;
@@ -697,6 +697,14 @@ static void op_particle_set(call *c)
     c->st = demill_particle_set(c->w, p, field, f & 1 ? NULL : v);
 }
 
+/* Whether a world holds WALLS_MAX walls: more are not added (the call is
+ * left out). */
+static bool walls_full(call *c)
+{
+    c->skipped = c->k >= 0 && F.list[c->k][DEMILL_KIND_WALL].n >= WALLS_MAX;
+    return c->skipped;
+}
+
 static void op_wall_add(call *c)
 {
     const demill_id m = id_named(c, DEMILL_KIND_MATERIAL);
@@ -707,10 +715,8 @@ static void op_wall_add(call *c)
     flat(c, point, f & 8);
     flat(c, normal, f & 8);
     demill_id wall = DEMILL_ID_NONE;
-    if (c->k >= 0 && F.list[c->k][DEMILL_KIND_WALL].n >= WALLS_MAX) {
-        c->skipped = true;
+    if (walls_full(c))
         return;
-    }
     trace("demill_wall_add_plane(w, 0x%llx, ", (unsigned long long)m);
     trace_vec("point", f & 1 ? NULL : point);
     trace(", ");
@@ -910,6 +916,27 @@ static double fill_mass(const call *c, double rho, double d)
     return rho * (c->dim == 2 && t > 0.0 ? PI / 4.0 * d * d * t : PI / 6.0 * d * d * d);
 }
 
+/* The smallest and largest diameter a distribution's params name; false
+ * if they name none (the library must refuse them). */
+static bool size_range(int32_t dist, const double *p, size_t np, double *dmin, double *dmax)
+{
+    *dmin = INFINITY;
+    *dmax = 0.0;
+    if (!p)
+        return false;
+    if (dist == DEMILL_SIZES_CLASSES) {
+        for (size_t k = 0; k + 1 < np; k += 2)
+            if (p[k] > 0.0 && isfinite(p[k])) {
+                *dmin = fmin(*dmin, p[k]);
+                *dmax = fmax(*dmax, p[k]);
+            }
+    } else if (np == 4 && p[2] > 0.0 && p[3] > p[2] && isfinite(p[3])) {
+        *dmin = p[2];
+        *dmax = p[3];
+    }
+    return *dmax > 0.0;
+}
+
 /* Whether the harness leaves out a fill that the library would take and
  * that would place more than a few hundred particles or search more than
  * 10^5 lattice sites, which takes long. Bounds come from the smallest and
@@ -927,18 +954,8 @@ static bool fill_cap(const call *c, demill_id drum, demill_id mat, int32_t dist,
         demill_drum_get(c->w, drum, DEMILL_DRUM_FILL_POROSITY, &porosity) ||
         demill_material_get(c->w, mat, DEMILL_MATERIAL_DENSITY, &rho))
         return false;
-    double dmin = INFINITY, dmax = 0.0;
-    if (dist == DEMILL_SIZES_CLASSES) {
-        for (size_t k = 0; k + 1 < np; k += 2)
-            if (p[k] > 0.0 && isfinite(p[k])) {
-                dmin = fmin(dmin, p[k]);
-                dmax = fmax(dmax, p[k]);
-            }
-    } else if (np == 4 && p[2] > 0.0 && p[3] > p[2] && isfinite(p[3])) {
-        dmin = p[2];
-        dmax = p[3];
-    }
-    if (!(dmax > 0.0))
+    double dmin, dmax;
+    if (!size_range(dist, p, np, &dmin, &dmax))
         return false;
     const double capacity = PI / 4.0 * D * D * (c->dim == 3 ? L : 1.0);
     const double fewest = target == DEMILL_FILL_MASS ? value / fill_mass(c, rho, dmax)
@@ -1057,12 +1074,23 @@ static uint64_t capped_steps(const call *c, uint64_t steps)
     return steps % (STEPS_MAX + 1);
 }
 
+/* Whether a world's feeds have filled it beyond twice PARTICLES_MAX: it is
+ * no longer stepped (the call is left out). A feed inserts a bounded number
+ * of particles (feed_cap()) unless its material is made lighter after. */
+static bool feeds_full(call *c)
+{
+    c->skipped = c->k >= 0 && F.list[c->k][DEMILL_KIND_FEED].n && c->np > 2 * PARTICLES_MAX;
+    return c->skipped;
+}
+
 static void op_step(call *c)
 {
     const uint64_t steps = capped_steps(c, count());
     c->stepping = c->one_run = true;
     c->watchdog = world_value(c, DEMILL_WORLD_WATCHDOG) != 0.0;
     c->steps_before = world_value(c, DEMILL_WORLD_STEP_COUNT);
+    if (feeds_full(c))
+        return;
     trace("demill_world_step(w, %llu)", (unsigned long long)steps);
     c->st = demill_world_step(c->w, steps);
 }
@@ -1091,6 +1119,8 @@ static void op_settle(call *c)
         c->skipped = true;
         return;
     }
+    if (feeds_full(c))
+        return;
     trace("demill_world_settle(w, %.17g, %.17g, %s)", max_time, e, null_out ? "NULL" : "&settled");
     c->st = demill_world_settle(c->w, max_time, e, null_out ? NULL : &settled);
 }
@@ -1271,7 +1301,7 @@ static void op_ids(call *c)
 {
     const int32_t kind = pick(fz_kinds, COUNT(fz_kinds));
     const uint8_t f = byte();
-    const size_t n = c->k >= 0 && kind >= DEMILL_KIND_MATERIAL && kind <= DEMILL_KIND_DRUM
+    const size_t n = c->k >= 0 && kind >= DEMILL_KIND_MATERIAL && kind <= DEMILL_KIND_BODY
                          ? F.list[c->k][kind].n : 0;
     const size_t cap = capacity(f, n);
     demill_id *out = f & 1 ? NULL : grab(n + 1, sizeof *out);
@@ -1729,6 +1759,707 @@ static void op_grinding(call *c)
     }
 }
 
+/* ---- geometry, flows and bodies --------------------------------------------- */
+
+#define BODIES_MAX 16      /* bodies per world */
+#define FEED_PARTICLES 128 /* particles a feed may insert in its life (at its creation's density) */
+
+static void trace_points(const double *v, size_t n)
+{
+    for (size_t k = 0; k < n && F.trace; k++) {
+        trace("\n    ");
+        trace_vec("p", v + 3 * k);
+    }
+}
+
+static void op_wall_add_mesh(call *c)
+{
+    /* a box's 12 triangles on its 8 corners (corner k has bit i of k set
+     * where its coordinate i is the far one) */
+    static const uint8_t box[12][3] = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6},
+                                       {0, 2, 6}, {0, 6, 4}, {1, 3, 7}, {1, 7, 5},
+                                       {0, 1, 5}, {0, 5, 4}, {2, 3, 7}, {2, 7, 6}};
+    const demill_id m = id_named(c, DEMILL_KIND_MATERIAL);
+    const uint8_t f = byte();
+    double v[3 * 8];
+    uint32_t t[3 * 12];
+    size_t nv, nt;
+    if (f & 8) {
+        double corner[3];
+        vec(corner);
+        const double side = num();
+        nv = 8;
+        nt = 12;
+        for (size_t k = 0; k < 8; k++)
+            for (int i = 0; i < 3; i++)
+                v[3 * k + i] = corner[i] + (k >> i & 1 ? side : 0.0);
+        for (size_t k = 0; k < 3 * 12; k++)
+            t[k] = box[k / 3][k % 3];
+    } else {
+        nv = 1 + byte() % 8;
+        for (size_t k = 0; k < nv; k++)
+            vec(v + 3 * k);
+        nt = byte() % 9;
+        for (size_t k = 0; k < 3 * nt; k++) {
+            const uint8_t b = byte();
+            t[k] = b == 0xff ? UINT32_MAX : b;
+        }
+    }
+    const size_t nv_real = nv, nt_real = nt;
+    if (f & 1)
+        nv = count();
+    if (f & 2)
+        nt = count();
+    if (walls_full(c))
+        return;
+    demill_id wall = DEMILL_ID_NONE;
+    trace("demill_wall_add_mesh(w, 0x%llx, %zu, %s, %zu, %s, %s) with", (unsigned long long)m, nv,
+          f & 1 ? "NULL" : "v", nt, f & 2 ? "NULL" : "t", f & 4 ? "NULL" : "&wall");
+    trace_points(v, nv_real);
+    for (size_t k = 0; k < 3 * nt_real && F.trace; k++)
+        trace("%s%u", k % 3 ? " " : "\n    t ", (unsigned)t[k]);
+    c->st = demill_wall_add_mesh(c->w, m, nv, f & 1 ? NULL : v, nt, f & 2 ? NULL : t,
+                                 f & 4 ? NULL : &wall);
+    pool_add(wall);
+}
+
+static void op_wall_add_polyline(call *c)
+{
+    const demill_id m = id_named(c, DEMILL_KIND_MATERIAL);
+    const uint8_t f = byte();
+    double v[3 * 8];
+    size_t n;
+    if (f & 8) {
+        double corner[3];
+        vec(corner);
+        const double side = num();
+        n = 4;
+        for (size_t k = 0; k < 4; k++) {
+            v[3 * k] = corner[0] + ((k + 1) & 2 ? side : 0.0);
+            v[3 * k + 1] = corner[1] + (k & 2 ? side : 0.0);
+            v[3 * k + 2] = corner[2];
+        }
+    } else {
+        n = byte() % 9;
+        for (size_t k = 0; k < n; k++)
+            vec(v + 3 * k);
+    }
+    for (size_t k = 0; k < n; k++)
+        flat(c, v + 3 * k, f & 4);
+    const size_t n_real = n;
+    if (f & 1)
+        n = count();
+    const int32_t closed = pick(fz_closed, COUNT(fz_closed));
+    if (walls_full(c))
+        return;
+    demill_id wall = DEMILL_ID_NONE;
+    trace("demill_wall_add_polyline(w, 0x%llx, %zu, %s, %d, %s) with", (unsigned long long)m, n,
+          f & 1 ? "NULL" : "p", (int)closed, f & 2 ? "NULL" : "&wall");
+    trace_points(v, n_real);
+    c->st = demill_wall_add_polyline(c->w, m, n, f & 1 ? NULL : v, closed, f & 2 ? NULL : &wall);
+    pool_add(wall);
+}
+
+/* A double as a float of an STL file: beyond the floats, infinite. */
+static float stl_float(double x)
+{
+    return isfinite(x) && fabs(x) > FLT_MAX ? (float)copysign(INFINITY, x) : (float)x;
+}
+
+static void op_wall_add_stl(call *c)
+{
+    const demill_id m = id_named(c, DEMILL_KIND_MATERIAL);
+    const uint8_t f = byte();
+    const size_t nt = 1 + byte() % 4;
+    double v[4 * 9];
+    for (size_t k = 0; k < 3 * nt; k++)
+        vec(v + 3 * k);
+    const double scale = num();
+    double transform[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
+    for (int i = 0; i < 12 && f & 16; i++)
+        transform[i] = num();
+    static unsigned char bytes[2048];
+    size_t size;
+    if (f & 8) {
+        memset(bytes, 0, 84);
+        for (int i = 0; i < 4; i++)
+            bytes[80 + i] = (unsigned char)(nt >> (8 * i));
+        size = 84;
+        for (size_t k = 0; k < nt; k++) {
+            memset(bytes + size, 0, 50);
+            for (int i = 0; i < 9; i++) {
+                const float x = stl_float(v[9 * k + i]);
+                memcpy(bytes + size + 12 + 4 * i, &x, 4);
+            }
+            size += 50;
+        }
+    } else {
+        int at = snprintf((char *)bytes, sizeof bytes, "solid fuzz\n");
+        for (size_t k = 0; k < nt; k++) {
+            at += snprintf((char *)bytes + at, sizeof bytes - at,
+                           "facet normal 0 0 0\nouter loop\n");
+            for (int i = 0; i < 3; i++)
+                at += snprintf((char *)bytes + at, sizeof bytes - at, "vertex %.17g %.17g %.17g\n",
+                               v[9 * k + 3 * i], v[9 * k + 3 * i + 1], v[9 * k + 3 * i + 2]);
+            at += snprintf((char *)bytes + at, sizeof bytes - at, "endloop\nendfacet\n");
+        }
+        at += snprintf((char *)bytes + at, sizeof bytes - at, "endsolid fuzz\n");
+        size = (size_t)at;
+    }
+    if (f & 32)
+        size = count() % (size + 1);
+    if (f & 1)
+        size = count();
+    if (walls_full(c))
+        return;
+    demill_id wall = DEMILL_ID_NONE;
+    trace("demill_wall_add_stl(w, 0x%llx, %s, %zu, %.17g, %s, %s) with the %s triangles",
+          (unsigned long long)m, f & 1 ? "NULL" : "bytes", size, scale,
+          f & 2 ? "NULL" : f & 16 ? "typed" : "identity", f & 4 ? "NULL" : "&wall",
+          f & 8 ? "binary" : "ASCII");
+    trace_points(v, 3 * nt);
+    c->st = demill_wall_add_stl(c->w, m, f & 1 ? NULL : bytes, size, scale,
+                                f & 2 ? NULL : transform, f & 4 ? NULL : &wall);
+    pool_add(wall);
+}
+
+static void op_wall_mesh_info(call *c)
+{
+    const demill_id wall = id_named(c, DEMILL_KIND_WALL);
+    const uint8_t f = byte();
+    size_t nv = SIZE_MAX, ne = SIZE_MAX;
+    c->query = true;
+    trace("demill_wall_mesh_info(w, 0x%llx, %s, %s)", (unsigned long long)wall,
+          f & 1 ? "NULL" : "&nv", f & 2 ? "NULL" : "&ne");
+    c->st = demill_wall_mesh_info(c->w, wall, f & 1 ? NULL : &nv, f & 2 ? NULL : &ne);
+    if (c->st == DEMILL_OK && ((!(f & 1) && nv < 2) || (!(f & 2) && (ne < 1 || ne == SIZE_MAX))))
+        fail("demill_wall_mesh_info gave %zu vertices and %zu elements", nv, ne);
+}
+
+static void op_wall_add_finite(call *c)
+{
+    static const char *const names[4] = {"cylinder", "cone", "disc", "rectangle"};
+    const demill_id m = id_named(c, DEMILL_KIND_MATERIAL);
+    const int kind = byte() % 4;
+    const uint8_t f = byte();
+    double p[3], a[3], dir[3] = {0, 0, 0}, r1 = 0.0, r2 = 0.0, len = 0.0;
+    int32_t caps = 0;
+    vec(p);
+    vec(a);
+    switch (kind) {
+    case 0:
+        r1 = num();
+        len = num();
+        caps = pick(fz_caps, COUNT(fz_caps));
+        break;
+    case 1:
+        r1 = num();
+        r2 = num();
+        len = num();
+        caps = pick(fz_caps, COUNT(fz_caps));
+        break;
+    case 2:
+        r1 = num();
+        r2 = num();
+        break;
+    default:
+        vec(dir);
+        r1 = num();
+        r2 = num();
+    }
+    if (walls_full(c))
+        return;
+    const double *point = f & 1 ? NULL : p, *axis = f & 2 ? NULL : a, *d = f & 8 ? NULL : dir;
+    demill_id wall = DEMILL_ID_NONE, *out = f & 4 ? NULL : &wall;
+    trace("demill_wall_add_%s(w, 0x%llx, ", names[kind], (unsigned long long)m);
+    trace_vec("point", point);
+    trace(", ");
+    trace_vec("axis", axis);
+    trace(", ");
+    if (kind == 3) {
+        trace_vec("direction", d);
+        trace(", ");
+    }
+    trace("%.17g, %.17g, %.17g, caps %d, %s)", r1, r2, len, (int)caps, out ? "&wall" : "NULL");
+    switch (kind) {
+    case 0: c->st = demill_wall_add_cylinder(c->w, m, point, axis, r1, len, caps, out); break;
+    case 1: c->st = demill_wall_add_cone(c->w, m, point, axis, r1, r2, len, caps, out); break;
+    case 2: c->st = demill_wall_add_disc(c->w, m, point, axis, r1, r2, out); break;
+    default: c->st = demill_wall_add_rectangle(c->w, m, point, axis, d, r1, r2, out);
+    }
+    pool_add(wall);
+}
+
+static void op_wall_harmonic(call *c)
+{
+    const demill_id wall = id_named(c, DEMILL_KIND_WALL);
+    const int32_t mode = pick(fz_harmonic_modes, COUNT(fz_harmonic_modes));
+    const uint8_t f = byte();
+    double axis[3];
+    vec(axis);
+    const double amplitude = num(), frequency = num(), phase = num();
+    if (f & 2 && c->dim == 2) {
+        if (mode == DEMILL_HARMONIC_ROTATION)
+            axis[0] = axis[1] = 0.0;
+        else
+            axis[2] = 0.0;
+    }
+    trace("demill_wall_set_harmonic(w, 0x%llx, %d, ", (unsigned long long)wall, (int)mode);
+    trace_vec("axis", f & 1 ? NULL : axis);
+    trace(", %.17g, %.17g, %.17g)", amplitude, frequency, phase);
+    c->st = demill_wall_set_harmonic(c->w, wall, mode, f & 1 ? NULL : axis, amplitude, frequency,
+                                     phase);
+}
+
+static void op_wall_surface_velocity(call *c)
+{
+    const demill_id wall = id_named(c, DEMILL_KIND_WALL);
+    const uint8_t f = byte();
+    double v[3];
+    vec(v);
+    flat(c, v, f & 2);
+    trace("demill_wall_set_surface_velocity(w, 0x%llx, ", (unsigned long long)wall);
+    trace_vec("velocity", f & 1 ? NULL : v);
+    trace(")");
+    c->st = demill_wall_set_surface_velocity(c->w, wall, f & 1 ? NULL : v);
+}
+
+static void op_drum_material(call *c)
+{
+    const demill_id d = id_named(c, DEMILL_KIND_DRUM);
+    const int32_t part = pick(fz_drum_parts, COUNT(fz_drum_parts));
+    const uint8_t f = byte();
+    if (f & 1) {
+        demill_id m = DEMILL_ID_NONE;
+        c->query = true;
+        trace("demill_drum_get_material(w, 0x%llx, %d, %s)", (unsigned long long)d, (int)part,
+              f & 2 ? "NULL" : "&m");
+        c->st = demill_drum_get_material(c->w, d, part, f & 2 ? NULL : &m);
+        if (c->st == DEMILL_OK && !(f & 2) && !listed(c->k, DEMILL_KIND_MATERIAL, m))
+            fail("demill_drum_get_material gave 0x%llx, which names no material of the world",
+                 (unsigned long long)m);
+        return;
+    }
+    const demill_id m = id_named(c, DEMILL_KIND_MATERIAL);
+    trace("demill_drum_set_material(w, 0x%llx, %d, 0x%llx)", (unsigned long long)d, (int)part,
+          (unsigned long long)m);
+    c->st = demill_drum_set_material(c->w, d, part, m);
+}
+
+static void op_drum_attach_wall(call *c)
+{
+    const demill_id d = id_named(c, DEMILL_KIND_DRUM), wall = id_named(c, DEMILL_KIND_WALL);
+    const int32_t part = pick(fz_drum_parts, COUNT(fz_drum_parts));
+    trace("demill_drum_attach_wall(w, 0x%llx, 0x%llx, %d)", (unsigned long long)d,
+          (unsigned long long)wall, (int)part);
+    c->st = demill_drum_attach_wall(c->w, d, wall, part);
+}
+
+/* A region of demill/insert.h as an op reads it (api_ops.h, FZ_FILL_REGION). */
+typedef struct region {
+    int32_t kind;
+    double p[8];
+    size_t n;
+    bool null;
+} region;
+
+static void region_arg(const call *c, region *r)
+{
+    r->kind = pick(fz_regions, COUNT(fz_regions));
+    const uint8_t way = byte();
+    r->null = (way & 3) == 2;
+    r->n = 0;
+    if ((way & 3) == 0) {
+        r->n = byte() % 9;
+        for (size_t k = 0; k < r->n; k++)
+            r->p[k] = num();
+        return;
+    }
+    if (r->null) {
+        r->n = count();
+        return;
+    }
+    double x[3];
+    vec(x);
+    const double s = num();
+    flat(c, x, way & 4);
+    const bool plane = c->dim == 2 && way & 4;
+    double *p = r->p;
+    memcpy(p, x, sizeof x);
+    switch (r->kind) {
+    case DEMILL_REGION_DRUM: break;
+    case DEMILL_REGION_CYLINDER:
+        p[3] = x[0], p[4] = x[1] + s, p[5] = x[2], p[6] = 0.5 * s;
+        r->n = 7;
+        break;
+    case DEMILL_REGION_HALF_SPACE:
+        p[3] = 0.0, p[4] = 1.0, p[5] = 0.0;
+        r->n = 6;
+        break;
+    default: /* a box, also for the kinds there are not */
+        p[3] = x[0] + s, p[4] = x[1] + s, p[5] = plane ? x[2] : x[2] + s;
+        r->n = 6;
+    }
+    if ((way & 3) == 3 && r->n) {
+        const size_t at = byte() % r->n; /* before num(): the order is the input's */
+        p[at] = num();
+    }
+}
+
+static void trace_region(const region *r)
+{
+    trace("region %d ", (int)r->kind);
+    for (size_t k = 0; !r->null && k < r->n; k++)
+        trace("%s%.17g", k ? ", " : "{", r->p[k]);
+    trace("%s, %zu", r->null ? "NULL" : r->n ? "}" : "{}", r->n);
+}
+
+/* The volume (2D: area) of a region a fill or a feed can use; NaN where
+ * the library must refuse it. */
+static double region_measure(const call *c, const region *r)
+{
+    const double *p = r->p;
+    if (r->null)
+        return NAN;
+    if (r->kind == DEMILL_REGION_BOX && r->n == 6)
+        return (p[3] - p[0]) * (p[4] - p[1]) * (c->dim == 3 ? p[5] - p[2] : 1.0);
+    if (r->kind == DEMILL_REGION_CYLINDER && r->n == 7) {
+        const double len = sqrt((p[3] - p[0]) * (p[3] - p[0]) + (p[4] - p[1]) * (p[4] - p[1]) +
+                                (p[5] - p[2]) * (p[5] - p[2]));
+        return c->dim == 3 ? PI * p[6] * p[6] * len : 2.0 * p[6] * len;
+    }
+    double D, L;
+    if (r->kind == DEMILL_REGION_DRUM && c->k >= 0 &&
+        !demill_drum_get(c->w, listed_id(c->k, DEMILL_KIND_DRUM, 0), DEMILL_DRUM_DIAMETER, &D) &&
+        !demill_drum_get(c->w, listed_id(c->k, DEMILL_KIND_DRUM, 0), DEMILL_DRUM_LENGTH, &L))
+        return PI / 4.0 * D * D * (c->dim == 3 ? L : 1.0);
+    return NAN;
+}
+
+/* Sizes of a distribution as an op reads them (api_ops.h, FZ_FILL_REGION). */
+typedef struct sizes {
+    int32_t dist;
+    double p[8];
+    size_t n;
+    bool null;
+} sizes;
+
+static void sizes_arg(sizes *z)
+{
+    z->dist = pick(fz_distributions, COUNT(fz_distributions));
+    const uint8_t way = byte();
+    z->null = false;
+    switch (way & 3) {
+    case 0:
+        z->n = byte() % 9;
+        for (size_t k = 0; k < z->n; k++)
+            z->p[k] = num();
+        break;
+    case 1:
+        z->p[0] = num();
+        z->p[1] = 1.0;
+        z->n = 2;
+        break;
+    case 2: {
+        const double d = num();
+        z->p[0] = 0.75 * d;
+        z->p[1] = z->dist == DEMILL_SIZES_NORMAL ? 0.25 * d : 3.0;
+        z->p[2] = 0.5 * d;
+        z->p[3] = d;
+        z->n = 4;
+        break;
+    }
+    default:
+        z->null = true;
+        z->n = count();
+    }
+}
+
+static void trace_sizes(const sizes *z)
+{
+    trace("distribution %d ", (int)z->dist);
+    for (size_t k = 0; !z->null && k < z->n; k++)
+        trace("%s%.17g", k ? ", " : "{", z->p[k]);
+    trace("%s, %zu", z->null ? "NULL" : z->n ? "}" : "{}", z->n);
+}
+
+/* Whether the harness leaves out a fill of a region that the library would
+ * take and that could place more particles than a world may hold here (as
+ * fill_cap() for the drum); a fill it must refuse is always made. */
+static bool region_fill_cap(const call *c, const region *r, demill_id mat, const sizes *z,
+                            int32_t target, double value)
+{
+    double rho, dmin, dmax;
+    const double measure = region_measure(c, r);
+    if (c->k < 0 || z->null || !isfinite(value) || !(value > 0.0) || !(measure > 0.0) ||
+        (target != DEMILL_FILL_COUNT && target != DEMILL_FILL_MASS &&
+         target != DEMILL_FILL_FRACTION) ||
+        !size_range(z->dist, z->p, z->n, &dmin, &dmax) ||
+        demill_material_get(c->w, mat, DEMILL_MATERIAL_DENSITY, &rho))
+        return false;
+    const double fewest = target == DEMILL_FILL_MASS       ? value / fill_mass(c, rho, dmax)
+                          : target == DEMILL_FILL_FRACTION ? value * measure / fill_measure(c, dmax)
+                                                           : value;
+    if (fewest > 1.01 * (UINT32_MAX / 4))
+        return false;
+    const double most = 40.0 + (target == DEMILL_FILL_MASS ? value / fill_mass(c, rho, dmin)
+                                : target == DEMILL_FILL_FRACTION
+                                    ? value * measure / fill_measure(c, dmin)
+                                    : value);
+    return !(most + (double)c->np <= PARTICLES_MAX);
+}
+
+static void op_fill_region(call *c)
+{
+    region r;
+    sizes z;
+    region_arg(c, &r);
+    const demill_id m = id_named(c, DEMILL_KIND_MATERIAL);
+    sizes_arg(&z);
+    const int32_t target = pick(fz_fill_targets, COUNT(fz_fill_targets));
+    const double value = num();
+    const uint64_t seed = byte();
+    const uint8_t f = byte();
+    static const size_t caps[4] = {0, 1, 8, PARTICLES_MAX};
+    demill_id ids[PARTICLES_MAX];
+    const size_t cap = caps[(f >> 1) & 3];
+    size_t added = SIZE_MAX;
+    if (region_fill_cap(c, &r, m, &z, target, value)) {
+        c->skipped = true;
+        return;
+    }
+    trace("demill_fill_region(w, ");
+    trace_region(&r);
+    trace(", 0x%llx, ", (unsigned long long)m);
+    trace_sizes(&z);
+    trace(", %d, %.17g, %llu, %s, %zu, &added)", (int)target, value, (unsigned long long)seed,
+          f & 1 ? "NULL" : "ids", cap);
+    c->st = demill_fill_region(c->w, r.kind, r.null ? NULL : r.p, r.n, m, z.dist,
+                               z.null ? NULL : z.p, z.n, target, value, seed, f & 1 ? NULL : ids,
+                               cap, &added);
+    if (c->st == DEMILL_OK && !(f & 1) && added)
+        pool_add(ids[0]);
+}
+
+/* Whether the harness leaves out a feed the library would take that could
+ * insert more than FEED_PARTICLES particles in its life (at the density of
+ * its material now: one made lighter later inserts more, which stepping
+ * bounds, feeds_full()). */
+static bool feed_cap(const call *c, demill_id mat, const sizes *z, double rate, double start,
+                     double stop)
+{
+    double rho, dmin, dmax;
+    if (c->k < 0 || !isfinite(rate) || !(rate > 0.0) || !isfinite(start) || !(stop > start) ||
+        z->null || !size_range(z->dist, z->p, z->n, &dmin, &dmax) ||
+        demill_material_get(c->w, mat, DEMILL_MATERIAL_DENSITY, &rho))
+        return false;
+    return !(rate * (stop - start) / fill_mass(c, rho, dmin) <= FEED_PARTICLES);
+}
+
+static void op_feed_create(call *c)
+{
+    region r;
+    sizes z;
+    region_arg(c, &r);
+    const demill_id m = id_named(c, DEMILL_KIND_MATERIAL);
+    sizes_arg(&z);
+    const double rate = num();
+    const uint8_t f = byte();
+    double v[3];
+    vec(v);
+    flat(c, v, f & 4);
+    const double start = num(), stop = num();
+    const uint64_t seed = byte();
+    if (feed_cap(c, m, &z, rate, start, stop)) {
+        c->skipped = true;
+        return;
+    }
+    demill_id feed = DEMILL_ID_NONE;
+    trace("demill_feed_create(w, ");
+    trace_region(&r);
+    trace(", 0x%llx, ", (unsigned long long)m);
+    trace_sizes(&z);
+    trace(", %.17g, ", rate);
+    trace_vec("velocity", f & 1 ? NULL : v);
+    trace(", %.17g, %.17g, %llu, %s)", start, stop, (unsigned long long)seed,
+          f & 2 ? "NULL" : "&feed");
+    c->st = demill_feed_create(c->w, r.kind, r.null ? NULL : r.p, r.n, m, z.dist,
+                               z.null ? NULL : z.p, z.n, rate, f & 1 ? NULL : v, start, stop, seed,
+                               f & 2 ? NULL : &feed);
+    pool_add(feed);
+}
+
+static void op_feed_remove(call *c)
+{
+    const demill_id feed = id_named(c, DEMILL_KIND_FEED);
+    trace("demill_feed_remove(w, 0x%llx)", (unsigned long long)feed);
+    c->st = demill_feed_remove(c->w, feed);
+}
+
+static void op_feed_read(call *c)
+{
+    const demill_id feed = id_named(c, DEMILL_KIND_FEED);
+    const uint8_t f = byte();
+    double mass = 0.0, deficit = 0.0;
+    uint64_t n = 0;
+    c->query = true;
+    trace("demill_feed_read(w, 0x%llx, %s, %s, %s)", (unsigned long long)feed,
+          f & 1 ? "NULL" : "&mass", f & 2 ? "NULL" : "&count", f & 4 ? "NULL" : "&deficit");
+    c->st = demill_feed_read(c->w, feed, f & 1 ? NULL : &mass, f & 2 ? NULL : &n,
+                             f & 4 ? NULL : &deficit);
+    if (c->st == DEMILL_OK && !(mass >= 0.0 && isfinite(mass) && deficit >= 0.0 &&
+                                isfinite(deficit) && (n > 0 || mass == 0.0 || f & 2)))
+        fail("demill_feed_read gave the mass %.17g of %llu particles and the deficit %.17g", mass,
+             (unsigned long long)n, deficit);
+}
+
+static void op_outlet_create(call *c)
+{
+    region r;
+    region_arg(c, &r);
+    const uint8_t f = byte();
+    double edges[32];
+    size_t ne;
+    if (f & 1) {
+        ne = count();
+    } else {
+        ne = byte() % 33;
+        for (size_t k = 0; k < ne; k++)
+            edges[k] = num();
+    }
+    const double interval = num();
+    demill_id outlet = DEMILL_ID_NONE;
+    trace("demill_outlet_create(w, ");
+    trace_region(&r);
+    trace(", %zu, ", ne);
+    for (size_t k = 0; !(f & 1) && k < ne; k++)
+        trace("%s%.17g", k ? ", " : "{", edges[k]);
+    trace("%s, %.17g, %s)", f & 1 ? "NULL" : ne ? "}" : "{}", interval, f & 2 ? "NULL" : "&o");
+    c->st = demill_outlet_create(c->w, r.kind, r.null ? NULL : r.p, r.n, ne, f & 1 ? NULL : edges,
+                                 interval, f & 2 ? NULL : &outlet);
+    pool_add(outlet);
+}
+
+static void op_outlet_remove(call *c)
+{
+    const demill_id outlet = id_named(c, DEMILL_KIND_OUTLET);
+    trace("demill_outlet_remove(w, 0x%llx)", (unsigned long long)outlet);
+    c->st = demill_outlet_remove(c->w, outlet);
+}
+
+static void op_outlet_read(call *c)
+{
+    const demill_id outlet = id_named(c, DEMILL_KIND_OUTLET);
+    const uint8_t f = byte();
+    size_t n = 0;
+    if (c->k >= 0 && demill_outlet_read(c->w, outlet, NULL, NULL, 0, &n, NULL) != DEMILL_OK)
+        n = 0;
+    const size_t cap = capacity(f, n);
+    uint64_t *counts = f & 1 ? NULL : grab(n + 1, sizeof *counts);
+    double *masses = f & 2 ? NULL : grab(n + 1, sizeof *masses), last[3] = {0, 0, 0};
+    size_t got = SIZE_MAX;
+    c->query = true;
+    trace("demill_outlet_read(w, 0x%llx, %s, %s, %zu, %s, %s)", (unsigned long long)outlet,
+          counts ? "counts" : "NULL", masses ? "masses" : "NULL", cap, f & 32 ? "NULL" : "&n",
+          f & 64 ? "NULL" : "last");
+    c->st = demill_outlet_read(c->w, outlet, counts, masses, cap, f & 32 ? NULL : &got,
+                               f & 64 ? NULL : last);
+    check_count(c, "demill_outlet_read", !(f & 32) && n, got, n);
+    if (c->st == DEMILL_OK && (n < 1 || n > 32))
+        fail("an outlet has %zu classes", n);
+    for (int i = 0; c->st == DEMILL_OK && i < 3; i++)
+        if (!(last[i] >= 0.0 && isfinite(last[i])))
+            fail("demill_outlet_read gave the last interval's value %d = %.17g", i, last[i]);
+    free(counts);
+    free(masses);
+}
+
+static void op_body_add(call *c)
+{
+    const double mass = num();
+    double x[3];
+    vec(x);
+    const int32_t axes = byte() & 15;
+    const uint32_t flags = (uint32_t)pick(fz_body_flags, COUNT(fz_body_flags));
+    const uint8_t f = byte();
+    flat(c, x, f & 4);
+    if (c->k >= 0 && F.list[c->k][DEMILL_KIND_BODY].n >= BODIES_MAX) {
+        c->skipped = true;
+        return;
+    }
+    demill_id body = DEMILL_ID_NONE;
+    trace("demill_body_add(w, %.17g, ", mass);
+    trace_vec("centre", f & 1 ? NULL : x);
+    trace(", %d, 0x%x, %s)", (int)axes, (unsigned)flags, f & 2 ? "NULL" : "&body");
+    c->st = demill_body_add(c->w, mass, f & 1 ? NULL : x, axes, flags, f & 2 ? NULL : &body);
+    pool_add(body);
+}
+
+static void op_body_remove(call *c)
+{
+    const demill_id body = id_named(c, DEMILL_KIND_BODY);
+    trace("demill_body_remove(w, 0x%llx)", (unsigned long long)body);
+    c->st = demill_body_remove(c->w, body);
+}
+
+static void op_body_spring(call *c)
+{
+    const demill_id body = id_named(c, DEMILL_KIND_BODY);
+    const int32_t axis = pick(fz_body_axes, COUNT(fz_body_axes));
+    const double k = num(), damping = num(), rest = num();
+    trace("demill_body_set_spring(w, 0x%llx, %d, %.17g, %.17g, %.17g)", (unsigned long long)body,
+          (int)axis, k, damping, rest);
+    c->st = demill_body_set_spring(c->w, body, axis, k, damping, rest);
+}
+
+static void op_body_force(call *c)
+{
+    const demill_id body = id_named(c, DEMILL_KIND_BODY);
+    const uint8_t f = byte();
+    double a[3];
+    vec(a);
+    flat(c, a, f & 2);
+    const double frequency = num(), phase = num();
+    trace("demill_body_set_force(w, 0x%llx, ", (unsigned long long)body);
+    trace_vec("amplitude", f & 1 ? NULL : a);
+    trace(", %.17g, %.17g)", frequency, phase);
+    c->st = demill_body_set_force(c->w, body, f & 1 ? NULL : a, frequency, phase);
+}
+
+static void op_body_attach_wall(call *c)
+{
+    const demill_id body = id_named(c, DEMILL_KIND_BODY), wall = id_named(c, DEMILL_KIND_WALL);
+    trace("demill_body_attach_wall(w, 0x%llx, 0x%llx)", (unsigned long long)body,
+          (unsigned long long)wall);
+    c->st = demill_body_attach_wall(c->w, body, wall);
+}
+
+static void op_body_get(call *c)
+{
+    const demill_id body = id_named(c, DEMILL_KIND_BODY);
+    const int32_t field = pick(fz_body_fields, COUNT(fz_body_fields));
+    const bool null_out = byte() & 1;
+    double v[3];
+    c->query = true;
+    trace("demill_body_get(w, 0x%llx, %d, %s)", (unsigned long long)body, (int)field,
+          null_out ? "NULL" : "v");
+    c->st = demill_body_get(c->w, body, field, null_out ? NULL : v);
+}
+
+static void op_body_energy(call *c)
+{
+    const demill_id body = id_named(c, DEMILL_KIND_BODY);
+    const int32_t term = pick(fz_body_terms, COUNT(fz_body_terms));
+    const bool null_out = byte() & 1;
+    double v = 0.0;
+    c->query = true;
+    trace("demill_body_energy(w, 0x%llx, %d, %s)", (unsigned long long)body, (int)term,
+          null_out ? "NULL" : "&v");
+    c->st = demill_body_energy(c->w, body, term, null_out ? NULL : &v);
+    if (c->st == DEMILL_OK && !isfinite(v))
+        fail("demill_body_energy(%d) gave %.17g", (int)term, v);
+}
+
 static void (*const ops[FZ_OPS])(call *) = {
     [FZ_WORLD_RECREATE] = op_world_recreate,
     [FZ_WORLD_CREATE_BAD] = op_world_create_bad,
@@ -1782,6 +2513,29 @@ static void (*const ops[FZ_OPS])(call *) = {
     [FZ_IMPACTS_READ] = op_impacts_read,
     [FZ_IMPACTS_PARTICLES] = op_impacts_particles,
     [FZ_GRINDING] = op_grinding,
+    [FZ_WALL_ADD_MESH] = op_wall_add_mesh,
+    [FZ_WALL_ADD_POLYLINE] = op_wall_add_polyline,
+    [FZ_WALL_ADD_STL] = op_wall_add_stl,
+    [FZ_WALL_MESH_INFO] = op_wall_mesh_info,
+    [FZ_WALL_ADD_FINITE] = op_wall_add_finite,
+    [FZ_WALL_HARMONIC] = op_wall_harmonic,
+    [FZ_WALL_SURFACE_VELOCITY] = op_wall_surface_velocity,
+    [FZ_DRUM_MATERIAL] = op_drum_material,
+    [FZ_DRUM_ATTACH_WALL] = op_drum_attach_wall,
+    [FZ_FILL_REGION] = op_fill_region,
+    [FZ_FEED_CREATE] = op_feed_create,
+    [FZ_FEED_REMOVE] = op_feed_remove,
+    [FZ_FEED_READ] = op_feed_read,
+    [FZ_OUTLET_CREATE] = op_outlet_create,
+    [FZ_OUTLET_REMOVE] = op_outlet_remove,
+    [FZ_OUTLET_READ] = op_outlet_read,
+    [FZ_BODY_ADD] = op_body_add,
+    [FZ_BODY_REMOVE] = op_body_remove,
+    [FZ_BODY_SPRING] = op_body_spring,
+    [FZ_BODY_FORCE] = op_body_force,
+    [FZ_BODY_ATTACH_WALL] = op_body_attach_wall,
+    [FZ_BODY_GET] = op_body_get,
+    [FZ_BODY_ENERGY] = op_body_energy,
 };
 
 /* ---- the checks after a call ------------------------------------------------ */
@@ -1863,12 +2617,72 @@ static void check_round_trip(const buf *saved)
              saved->n, F.again.n, first_difference(saved, &F.again));
 }
 
-/* Positions, velocities and angular velocities are finite. */
+/* A bound on the particles' kinetic and potential energies from what they
+ * read back, Σ m (|v|² + r² |ω|² + |g| |x|): above 1e300 a term may
+ * overflow with no fault (a velocity of 1e224 m/s is accepted, and its
+ * ½ m v² is infinite). */
+static double energy_bound(const call *c, size_t n)
+{
+    double *m = grab(n, sizeof *m), *r = grab(n, sizeof *r), *v = grab(3 * n, sizeof *v),
+           *w = grab(3 * n, sizeof *w), *x = grab(3 * n, sizeof *x), sum = 0.0;
+    const double g = hypot(hypot(world_value(c, DEMILL_WORLD_GRAVITY_X),
+                                 world_value(c, DEMILL_WORLD_GRAVITY_Y)),
+                           world_value(c, DEMILL_WORLD_GRAVITY_Z));
+    size_t got;
+    demill_particles_read(c->w, DEMILL_PARTICLE_MASS, m, n, &got);
+    demill_particles_read(c->w, DEMILL_PARTICLE_RADIUS, r, n, &got);
+    demill_particles_read(c->w, DEMILL_PARTICLE_VELOCITY, v, n, &got);
+    demill_particles_read(c->w, DEMILL_PARTICLE_ANGULAR_VELOCITY, w, n, &got);
+    demill_particles_read(c->w, DEMILL_PARTICLE_POSITION, x, n, &got);
+    for (size_t i = 0; i < n; i++) {
+        const double *vi = v + 3 * i, *wi = w + 3 * i, *xi = x + 3 * i;
+        sum += m[i] * (vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2] +
+                       r[i] * r[i] * (wi[0] * wi[0] + wi[1] * wi[1] + wi[2] * wi[2]) +
+                       g * hypot(hypot(xi[0], xi[1]), xi[2]));
+    }
+    free(m);
+    free(r);
+    free(v);
+    free(w);
+    free(x);
+    return sum;
+}
+
+/* Positions, velocities and angular velocities are finite, and so are the
+ * bodies' positions and velocities; the energy account's terms (but those
+ * stored in the contacts, whose reading may bring the neighbour lists up to
+ * date and so change the state) are not NaN, and the particles' kinetic and
+ * potential energies are finite unless energy_bound() says they may not
+ * be. */
 static void check_finite(const call *c)
 {
+    static const int32_t terms[] = {
+        DEMILL_ENERGY_KINETIC_TRANSLATIONAL, DEMILL_ENERGY_KINETIC_ROTATIONAL,
+        DEMILL_ENERGY_POTENTIAL, DEMILL_ENERGY_WALL_WORK, DEMILL_ENERGY_DISSIPATED,
+        DEMILL_ENERGY_FLOW, DEMILL_ENERGY_BODY_KINETIC, DEMILL_ENERGY_BODY_ELASTIC,
+        DEMILL_ENERGY_BODY_POTENTIAL, DEMILL_ENERGY_BODY_DISSIPATED, DEMILL_ENERGY_BODY_WORK};
+    const size_t n = (size_t)world_value(c, DEMILL_WORLD_PARTICLE_COUNT);
+    const double bound = energy_bound(c, n);
+    for (size_t t = 0; t < COUNT(terms); t++) {
+        double e;
+        if (demill_world_energy(c->w, terms[t], &e) == DEMILL_OK &&
+            (isnan(e) || (!isfinite(e) && t < 3 && bound < 1e300)))
+            fail("stepping returned DEMILL_OK with the watchdog on, and energy term %d = %g "
+                 "(the particles' energies are below %g)",
+                 (int)terms[t], e, bound);
+    }
+    const listing *bodies = &F.list[c->k][DEMILL_KIND_BODY];
+    for (size_t b = 0; b < bodies->n; b++)
+        for (int32_t field = DEMILL_BODY_POSITION; field <= DEMILL_BODY_VELOCITY; field++) {
+            double v[3];
+            if (demill_body_get(c->w, bodies->id[b], field, v) != DEMILL_OK)
+                fail("demill_body_get failed on a listed body after a step");
+            if (!isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2]))
+                fail("stepping returned DEMILL_OK with the watchdog on, and body %zu has field %d "
+                     "= {%g, %g, %g}", b, (int)field, v[0], v[1], v[2]);
+        }
     static const int32_t fields[3] = {DEMILL_PARTICLE_POSITION, DEMILL_PARTICLE_VELOCITY,
                                       DEMILL_PARTICLE_ANGULAR_VELOCITY};
-    const size_t n = (size_t)world_value(c, DEMILL_WORLD_PARTICLE_COUNT);
     double *v = grab(3 * n, sizeof *v);
     for (int f = 0; f < 3; f++) {
         size_t got;
@@ -1883,7 +2697,8 @@ static void check_finite(const call *c)
     free(v);
 }
 
-static const char *const kind_names[5] = {"", "material", "particle", "wall", "drum"};
+static const char *const kind_names[8] = {"",     "material", "particle", "wall",
+                                          "drum", "feed",     "outlet",   "body"};
 
 /* The ids a call named: refused unless listed, not refused as bad handles
  * if all are. */
@@ -1906,16 +2721,16 @@ static void check_named(const call *c)
  * pool as removed ids (a few per call). */
 static void relist(int k)
 {
-    demill_id old[4][8];
-    size_t nold[4];
-    for (int kind = DEMILL_KIND_MATERIAL; kind <= DEMILL_KIND_DRUM; kind++) {
+    demill_id old[DEMILL_KIND_BODY][8];
+    size_t nold[DEMILL_KIND_BODY];
+    for (int kind = DEMILL_KIND_MATERIAL; kind <= DEMILL_KIND_BODY; kind++) {
         const listing *l = &F.list[k][kind];
         nold[kind - 1] = l->n < 8 ? l->n : 8;
         for (size_t i = 0; i < nold[kind - 1]; i++)
             old[kind - 1][i] = l->id[(i * l->n) / nold[kind - 1]]; /* spread over the list */
     }
     list_world(k);
-    for (int kind = DEMILL_KIND_MATERIAL; kind <= DEMILL_KIND_DRUM; kind++)
+    for (int kind = DEMILL_KIND_MATERIAL; kind <= DEMILL_KIND_BODY; kind++)
         for (size_t i = 0; i < nold[kind - 1]; i++)
             if (!listed(k, kind, old[kind - 1][i]))
                 pool_add(old[kind - 1][i]);

@@ -153,6 +153,79 @@ enum {
      * names the world of demill_grinding_rates_from_drum() and is unused
      * by the others. */
     FZ_GRINDING,
+    /* Meshes, polylines and STL (3D meshes, 2D polylines; the world's
+     * dimension is not enforced: the library must refuse the other).
+     * id (material), flags (1 vertices NULL with a count of them, 2
+     * triangles NULL with a count of them, 4 out NULL, 8 a box: vec
+     * (corner), num (side); else byte (vertices - 1, modulo 8), that many
+     * vecs, byte (triangles, modulo 9), 3 bytes (indices, 0xff: UINT32_MAX)
+     * per triangle) */
+    FZ_WALL_ADD_MESH,
+    /* id (material), flags (1 points NULL with a count of them, 2 out NULL,
+     * 4 z = 0, 8 a square: vec (corner), num (side); else byte (points,
+     * modulo 9), that many vecs), byte (closed table) */
+    FZ_WALL_ADD_POLYLINE,
+    /* id (material), flags (1 bytes NULL with a count, 2 transform NULL, 4
+     * out NULL, 8 binary, else ASCII; 16 the transform typed, else the
+     * identity; 32 the bytes cut short: count), byte (triangles - 1, modulo
+     * 4), 3 vecs per triangle, num (scale), 12 nums (with flag 16), count
+     * (with flag 32), count (with flag 1) */
+    FZ_WALL_ADD_STL,
+    FZ_WALL_MESH_INFO, /* id (wall), flags (1 vertices NULL, 2 elements NULL) */
+    /* id (material), byte (0 cylinder, 1 cone, 2 disc, 3 rectangle),
+     * flags (1 point NULL, 2 axis or normal NULL, 4 out NULL, 8 direction
+     * NULL), vec (point or centre), vec (axis or normal), then: cylinder
+     * num (radius), num (length), byte (caps table); cone num, num (radii),
+     * num (length), byte (caps table); disc num (outer), num (inner);
+     * rectangle vec (direction), num (half width), num (half height) */
+    FZ_WALL_ADD_FINITE,
+    /* id (wall), byte (mode table), flags (1 axis NULL, 2 the axis made
+     * what a 2D world takes), vec (axis), num (amplitude), num (frequency),
+     * num (phase) */
+    FZ_WALL_HARMONIC,
+    FZ_WALL_SURFACE_VELOCITY, /* id (wall), flags (1 NULL, 2 z = 0), vec */
+    /* id (drum), byte (part table), flags (1 read it with
+     * demill_drum_get_material, 2 its out NULL), id (material, unless
+     * flag 1) */
+    FZ_DRUM_MATERIAL,
+    FZ_DRUM_ATTACH_WALL, /* id (drum), id (wall), byte (part table) */
+    /* A region (region table), read as byte (way): way % 4: 0 typed, byte
+     * (params, modulo 9) nums; 1 a template from vec (corner) and num
+     * (size): a box of that side, a cylinder along y of that length and
+     * half of it as radius, the half-space below the plane y = corner_y, the
+     * drum (none); 2 params NULL with a count; 3 a template with one value
+     * replaced: byte (which), num; with way & 4, z = 0 (templates).
+     * Sizes (distribution table), read as byte (way): way % 4: 0 typed,
+     * byte (params, modulo 9) nums; 1 one class: num (diameter); 2 a range:
+     * num (d): {d, 3, d / 2, d}; 3 params NULL with a count.
+     * region, id (material), sizes, byte (target table), num (value), byte
+     * (seed), flags (1 ids NULL, bits 1-2 capacity 0, 1, 8 or 512) */
+    FZ_FILL_REGION,
+    /* region, id (material), sizes, num (mass rate), flags (1 velocity
+     * NULL, 2 out NULL, 4 z = 0), vec (velocity), num (start), num (stop),
+     * byte (seed) */
+    FZ_FEED_CREATE,
+    FZ_FEED_REMOVE, /* id (feed) */
+    FZ_FEED_READ,   /* id (feed), flags (1 mass NULL, 2 count NULL, 4 deficit NULL) */
+    /* region, flags (1 edges NULL with a count of them, 2 out NULL), byte
+     * (edges, modulo 33) nums, num (interval) */
+    FZ_OUTLET_CREATE,
+    FZ_OUTLET_REMOVE, /* id (outlet) */
+    /* id (outlet), flags (1 counts NULL, 2 masses NULL, 32 nclasses NULL,
+     * 64 last NULL, capacity) */
+    FZ_OUTLET_READ,
+    /* num (mass), vec (centre), byte (free axes, the low 4 bits), byte
+     * (body flag table), flags (1 centre NULL, 2 out NULL, 4 z = 0) */
+    FZ_BODY_ADD,
+    FZ_BODY_REMOVE, /* id (body) */
+    /* id (body), byte (axis table), num (stiffness), num (damping), num (rest) */
+    FZ_BODY_SPRING,
+    /* id (body), flags (1 amplitude NULL, 2 z = 0), vec (amplitude), num
+     * (frequency), num (phase) */
+    FZ_BODY_FORCE,
+    FZ_BODY_ATTACH_WALL, /* id (body), id (wall) */
+    FZ_BODY_GET,         /* id (body), byte (field table), flags (1: out NULL) */
+    FZ_BODY_ENERGY,      /* id (body), byte (term table), flags (1: value NULL) */
     FZ_OPS
 };
 
@@ -239,7 +312,8 @@ static const int32_t fz_contact_fields[] = {
     DEMILL_CONTACT_POINT, DEMILL_CONTACT_NORMAL, DEMILL_CONTACT_OVERLAP,
     DEMILL_CONTACT_NORMAL_FORCE, DEMILL_CONTACT_TANGENTIAL_FORCE, DEMILL_CONTACT_ROLLING_TORQUE,
     0, 7, -1};
-static const int32_t fz_energy_terms[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 0, 13, -1};
+static const int32_t fz_energy_terms[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13,
+                                       14, 15, 16, 17, 18, 0, 19, -1};
 static const int32_t fz_lifter_fields[] = {DEMILL_LIFTER_FORCE, DEMILL_LIFTER_FORCE_MEAN,
                                         DEMILL_LIFTER_FORCE_PEAK, DEMILL_LIFTER_ENERGY,
                                         DEMILL_LIFTER_ANGLE, 0, 6, -1};
@@ -248,7 +322,27 @@ static const int32_t fz_distributions[] = {DEMILL_SIZES_CLASSES, DEMILL_SIZES_RO
 static const int32_t fz_fill_targets[] = {DEMILL_FILL_COUNT, DEMILL_FILL_MASS, DEMILL_FILL_FRACTION,
                                        0, 4, -1};
 static const int32_t fz_kinds[] = {DEMILL_KIND_MATERIAL, DEMILL_KIND_PARTICLE, DEMILL_KIND_WALL,
-                                DEMILL_KIND_DRUM, DEMILL_KIND_NONE, 5, -1};
+                                DEMILL_KIND_DRUM, DEMILL_KIND_FEED, DEMILL_KIND_OUTLET,
+                                DEMILL_KIND_BODY, DEMILL_KIND_NONE, 8, -1};
+static const int32_t fz_closed[] = {0, 1, 2, -1};
+static const int32_t fz_caps[] = {DEMILL_CAPS_NONE, DEMILL_CAPS_START, DEMILL_CAPS_END,
+                               DEMILL_CAPS_BOTH, 4, -1};
+static const int32_t fz_harmonic_modes[] = {DEMILL_HARMONIC_TRANSLATION, DEMILL_HARMONIC_ROTATION,
+                                         0, 3, -1};
+static const int32_t fz_drum_parts[] = {DEMILL_DRUM_PART_SHELL, DEMILL_DRUM_PART_CAPS,
+                                     DEMILL_DRUM_PART_LIFTERS, 0, 4, -1};
+static const int32_t fz_regions[] = {DEMILL_REGION_BOX, DEMILL_REGION_CYLINDER,
+                                  DEMILL_REGION_HALF_SPACE, DEMILL_REGION_DRUM, 0, 5, -1};
+static const int32_t fz_body_flags[] = {0, DEMILL_BODY_NO_GRAVITY, 2, INT32_MIN};
+static const int32_t fz_body_axes[] = {DEMILL_BODY_AXIS_X, DEMILL_BODY_AXIS_Y, DEMILL_BODY_AXIS_Z,
+                                    0, 3, 8, -1};
+static const int32_t fz_body_fields[] = {
+    DEMILL_BODY_POSITION, DEMILL_BODY_VELOCITY, DEMILL_BODY_FORCE_PARTICLES,
+    DEMILL_BODY_FORCE_SPRING, DEMILL_BODY_FORCE_DAMPER, DEMILL_BODY_FORCE_EXTERNAL, 0, 7, -1};
+static const int32_t fz_body_terms[] = {
+    DEMILL_ENERGY_BODY_KINETIC, DEMILL_ENERGY_BODY_ELASTIC, DEMILL_ENERGY_BODY_POTENTIAL,
+    DEMILL_ENERGY_BODY_DISSIPATED, DEMILL_ENERGY_BODY_WORK, DEMILL_ENERGY_KINETIC_TRANSLATIONAL,
+    DEMILL_ENERGY_TOTAL, 19, -1};
 static const int32_t fz_dimensions[] = {2, 3, 0, 1, 4, -1, INT32_MAX, INT32_MIN};
 
 #endif

@@ -7,7 +7,10 @@
  * other; the impacts on a mill's balls recorded and turned into the rates
  * of a grinding object, which grinds; and a grinding object on its own,
  * from rates and an appearance typed in, a model's, and an impact spectrum
- * typed in. */
+ * typed in; walls of every kind, shaken, turning and with a belt; a mill
+ * with a part of its own material, an attached lifter mesh and a region
+ * fill; a box fill, a feed and an outlet; a 2D spring-mounted body under
+ * discs in a polyline box, one of them fixed. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -293,6 +296,152 @@ static void grinding_alone(const char *dir)
     finish(dir, "grinding");
 }
 
+/* Walls of every kind in a 3D world: a box of triangles around 8 balls
+ * with a finite cylinder, cone, disc and rectangle inside it, the box
+ * shaken (harmonic translation), a belt on the rectangle, two STL floors
+ * (ASCII and binary), the cylinder turning back and forth; a snapshot and
+ * a checkpoint of it all. */
+static void geometry3d(const char *dir)
+{
+    start(0);
+    material(0, 7800, DEMILL_NORMAL_HERTZ, DEMILL_TANGENTIAL_MINDLIN);
+    op(FZ_WALL_ADD_MESH, 0), own(0), byte(8), vec(-0.05, -0.05, -0.05), num(0.1);
+    op(FZ_PARTICLES_ADD, 0), own(0), byte(0), byte(7), vec(-0.02, -0.02, -0.02), num(0.005),
+        vec(0.1, 0, 0);
+    op(FZ_WALL_ADD_FINITE, 0), own(0), byte(0), byte(0), vec(0, -0.03, 0), vec(0, 1, 0),
+        num(0.04), num(0.06), KEY(fz_caps, DEMILL_CAPS_NONE);
+    op(FZ_WALL_ADD_FINITE, 0), own(0), byte(1), byte(0), vec(0, 0.02, 0), vec(0, 1, 0),
+        num(0.04), num(0.01), num(0.02), KEY(fz_caps, DEMILL_CAPS_END);
+    op(FZ_WALL_ADD_FINITE, 0), own(0), byte(2), byte(0), vec(0, -0.04, 0), vec(0, 1, 0),
+        num(0.03), num(0.005);
+    op(FZ_WALL_ADD_FINITE, 0), own(0), byte(3), byte(0), vec(0, -0.045, 0), vec(0, 1, 0),
+        vec(1, 0, 0), num(0.03), num(0.03);
+    op(FZ_WALL_HARMONIC, 0), own(0), KEY(fz_harmonic_modes, DEMILL_HARMONIC_TRANSLATION), byte(0),
+        vec(0, 1, 0), num(0.001), num(10), num(0);
+    op(FZ_WALL_SURFACE_VELOCITY, 0), own(4), byte(0), vec(0.1, 0, 0);
+    op(FZ_WALL_MESH_INFO, 0), own(0), byte(0);
+    op(FZ_SUGGEST_APPLY, 0), num(0), num(0);
+    step(0, 200);
+    op(FZ_WALL_ADD_STL, 0), own(0), byte(0), byte(1), vec(-0.05, -0.048, -0.05),
+        vec(0.05, -0.048, -0.05), vec(0.05, -0.048, 0.05), vec(-0.05, -0.048, -0.05),
+        vec(0.05, -0.048, 0.05), vec(-0.05, -0.048, 0.05), num(1);
+    op(FZ_WALL_ADD_STL, 0), own(0), byte(8), byte(0), vec(-0.05, -0.049, -0.05),
+        vec(0.05, -0.049, -0.05), vec(0, -0.049, 0.05), num(1);
+    op(FZ_WALL_HARMONIC, 0), own(1), KEY(fz_harmonic_modes, DEMILL_HARMONIC_ROTATION), byte(0),
+        vec(0, 1, 0), num(0.1), num(5), num(0.5);
+    step(0, 100);
+    op(FZ_SNAPSHOT_TAKE, 0), byte(0), byte(0);
+    step(0, 50);
+    op(FZ_SNAPSHOT_RESTORE, 0), byte(0);
+    op(FZ_BUFFER_TRANSFER, 1), byte(0), byte(0);
+    step(1, 50);
+    op(FZ_WALL_REMOVE, 0), own(2);
+    step(0, 20);
+    finish(dir, "geometry3d");
+}
+
+/* A mill whose lifters are of a second material and which has a lifter of
+ * one triangle attached, filled through demill_fill_region's drum region,
+ * run, then without its analytic shell. */
+static void drum_parts(const char *dir)
+{
+    start(0);
+    material(0, 7800, DEMILL_NORMAL_HERTZ, DEMILL_TANGENTIAL_MINDLIN);
+    op(FZ_MATERIAL_CREATE, 0), byte(0);
+    op(FZ_PAIR_SET, 0), own(0), own(1), KEY(fz_pair_keys, DEMILL_PAIR_NORMAL),
+        num(DEMILL_NORMAL_HERTZ);
+    op(FZ_PAIR_SET, 0), own(0), own(1), KEY(fz_pair_keys, DEMILL_PAIR_DAMPING),
+        num(DEMILL_DAMPING_RESTITUTION);
+    op(FZ_DRUM_CREATE, 0), own(0), byte(0);
+    op(FZ_DRUM_SET, 0), own(0), KEY(fz_drum_keys, DEMILL_DRUM_DIAMETER), num(0.05);
+    op(FZ_DRUM_SET, 0), own(0), KEY(fz_drum_keys, DEMILL_DRUM_LENGTH), num(0.012);
+    op(FZ_DRUM_SET, 0), own(0), KEY(fz_drum_keys, DEMILL_DRUM_LIFTERS), num(3);
+    op(FZ_DRUM_MATERIAL, 0), own(0), KEY(fz_drum_parts, DEMILL_DRUM_PART_LIFTERS), byte(0),
+        own(1);
+    op(FZ_DRUM_MATERIAL, 0), own(0), KEY(fz_drum_parts, DEMILL_DRUM_PART_SHELL), byte(1);
+    op(FZ_WALL_ADD_MESH, 0), own(0), byte(0), byte(2), vec(0, -0.024, -0.006), vec(0, -0.018, 0),
+        vec(0, -0.024, 0.006), byte(1), byte(0), byte(1), byte(2);
+    op(FZ_DRUM_ATTACH_WALL, 0), own(0), own(0), KEY(fz_drum_parts, DEMILL_DRUM_PART_LIFTERS);
+    op(FZ_FILL_REGION, 0), KEY(fz_regions, DEMILL_REGION_DRUM), byte(1), vec(0, 0, 0), num(0),
+        own(0), KEY(fz_distributions, DEMILL_SIZES_CLASSES), byte(1), num(0.006),
+        KEY(fz_fill_targets, DEMILL_FILL_COUNT), num(16), byte(1), byte(6);
+    op(FZ_DRUM_SET, 0), own(0), KEY(fz_drum_keys, DEMILL_DRUM_SPEED_FRACTION), num(0.8);
+    op(FZ_SUGGEST_APPLY, 0), num(0), num(0);
+    step(0, 250);
+    step(0, 250);
+    op(FZ_DRUM_GET, 0), own(0), KEY(fz_drum_keys, DEMILL_DRUM_POWER), byte(0);
+    op(FZ_DRUM_SET, 0), own(0), KEY(fz_drum_keys, DEMILL_DRUM_SHELL), num(0);
+    step(0, 20);
+    finish(dir, "drum-parts");
+}
+
+/* Balls on a floor from a box fill, a feed pouring more from above for
+ * 5 ms and an outlet taking those that reach the floor, in two size
+ * classes; their readings, a checkpoint, and both removed. */
+static void flows(const char *dir)
+{
+    start(0);
+    material(0, 7800, DEMILL_NORMAL_HERTZ, DEMILL_TANGENTIAL_MINDLIN);
+    op(FZ_WALL_ADD, 0), own(0), byte(0), vec(0, 0, 0), vec(0, 1, 0);
+    op(FZ_FILL_REGION, 0), KEY(fz_regions, DEMILL_REGION_BOX), byte(1), vec(-0.02, 0.01, -0.02),
+        num(0.04), own(0), KEY(fz_distributions, DEMILL_SIZES_CLASSES), byte(1), num(0.006),
+        KEY(fz_fill_targets, DEMILL_FILL_COUNT), num(20), byte(3), byte(6);
+    op(FZ_FEED_CREATE, 0), KEY(fz_regions, DEMILL_REGION_BOX), byte(1), vec(-0.02, 0.06, -0.02),
+        num(0.03), own(0), KEY(fz_distributions, DEMILL_SIZES_ROSIN_RAMMLER), byte(2), num(0.006),
+        num(1), byte(0), vec(0, -0.5, 0), num(0), num(0.005), byte(7);
+    op(FZ_OUTLET_CREATE, 0), KEY(fz_regions, DEMILL_REGION_HALF_SPACE), byte(1),
+        vec(0, 0.0035, 0), num(0), byte(0), byte(2), num(0.004), num(0.005), num(0.001);
+    op(FZ_SUGGEST_APPLY, 0), num(0), num(0);
+    step(0, 250);
+    step(0, 250);
+    op(FZ_FEED_READ, 0), own(0), byte(0);
+    op(FZ_OUTLET_READ, 0), own(0), byte(0);
+    op(FZ_ENERGY, 0), KEY(fz_energy_terms, DEMILL_ENERGY_FLOW), byte(0);
+    op(FZ_BUFFER_TRANSFER, 1), byte(0), byte(0);
+    step(1, 100);
+    op(FZ_FEED_REMOVE, 0), own(0);
+    op(FZ_OUTLET_REMOVE, 0), own(0);
+    step(0, 10);
+    finish(dir, "flows");
+}
+
+/* A 2D box of discs whose floor is a wall on a spring-mounted body driven
+ * by a sine force, inside a closed square polyline, one disc fixed; the
+ * body's readings, a belt on the floor, a checkpoint file into the other
+ * world, and the body removed. */
+static void bodies2d(const char *dir)
+{
+    start(1);
+    material(0, 2500, DEMILL_NORMAL_LINEAR, DEMILL_TANGENTIAL_SPRING);
+    world_set(0, DEMILL_WORLD_DISC_THICKNESS, 0.01);
+    op(FZ_BODY_ADD, 0), num(1), vec(0, 0, 0), byte(DEMILL_BODY_AXIS_Y), KEY(fz_body_flags, 0),
+        byte(0);
+    op(FZ_WALL_ADD, 0), own(0), byte(8), vec(0, 0, 0), vec(0, 1, 0);
+    op(FZ_BODY_ATTACH_WALL, 0), own(0), own(0);
+    op(FZ_BODY_SPRING, 0), own(0), KEY(fz_body_axes, DEMILL_BODY_AXIS_Y), num(1e4), num(10),
+        num(0);
+    op(FZ_BODY_FORCE, 0), own(0), byte(2), vec(0, 1, 0), num(20), num(0);
+    op(FZ_WALL_ADD_POLYLINE, 0), own(0), byte(8 | 4), vec(-0.05, -0.01, 0), num(0.1),
+        KEY(fz_closed, 1);
+    op(FZ_PARTICLES_ADD, 0), own(0), byte(0), byte(11), vec(-0.02, 0.01, 0), num(0.004),
+        vec(0, 0, 0);
+    op(FZ_PARTICLE_SET, 0), own(0), KEY(fz_particle_fields, DEMILL_PARTICLE_FIXED), byte(0),
+        vec(1, 0, 0);
+    op(FZ_SUGGEST_APPLY, 0), num(0), num(0);
+    step(0, 200);
+    step(0, 200);
+    op(FZ_BODY_GET, 0), own(0), KEY(fz_body_fields, DEMILL_BODY_POSITION), byte(0);
+    op(FZ_BODY_ENERGY, 0), own(0), KEY(fz_body_terms, DEMILL_ENERGY_BODY_ELASTIC), byte(0);
+    op(FZ_WALL_MESH_INFO, 0), own(1), byte(0);
+    op(FZ_WALL_SURFACE_VELOCITY, 0), own(0), byte(2), vec(0.1, 0, 0);
+    op(FZ_FILE_SAVE, 0), byte(0);
+    op(FZ_FILE_LOAD, 1), byte(0);
+    step(1, 50);
+    op(FZ_BODY_REMOVE, 0), own(0);
+    step(0, 10);
+    finish(dir, "bodies2d");
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2)
@@ -302,5 +451,9 @@ int main(int argc, char **argv)
     box2d(argv[1]);
     mill_impacts(argv[1]);
     grinding_alone(argv[1]);
+    geometry3d(argv[1]);
+    drum_parts(argv[1]);
+    flows(argv[1]);
+    bodies2d(argv[1]);
     return 0;
 }

@@ -19,7 +19,8 @@
  *  - An outlet below a falling stream removes every particle that crosses
  *    it: none is left below, and counted + present = inserted, in number
  *    exactly and in mass to rounding; the size classes count the feed's two
- *    sizes apart.
+ *    sizes apart. Its intervals end in one step however far below the
+ *    clock's resolution they are (1e-300 s, 1 ns at t = 1e8 s).
  *  - Bad input (a feed rate <= 0, a NaN or empty region, an unknown region
  *    or distribution, a half-space to fill) is refused with its code and
  *    leaves the world's checkpoint bytes as they were.
@@ -313,6 +314,47 @@ START_TEST(outlet_conserves_particles)
 }
 END_TEST
 
+/* An outlet's intervals end as they should when they are far below the
+ * clock's resolution. A ball taken out in the first step is the last
+ * interval's (m = 7800 π/6 d³, 1 ball, ending at 1 ms). Then outlets of
+ * 1e-300 s, and of 1 ns with the clock set to 1e8 s (where t + 1 ns = t),
+ * are stepped: each step returns (one never did: the intervals were ended
+ * one at a time, t_next + interval staying t_next) with every outlet's
+ * last interval empty (the ball is gone) and ended no later than now. */
+START_TEST(outlet_intervals_below_the_clock_resolution)
+{
+    demill_id m, ball, outlet[3];
+    demill_world *w = steel_world(0, 0, &m, NULL);
+    const double x[3] = {0, 0, 0}, r = 0.005, box[6] = {-0.01, -0.01, -0.01, 0.01, 0.01, 0.01};
+    DM_OK(w, demill_particles_add(w, m, 1, x, &r, NULL, 0, &ball));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, 1e-5));
+    DM_OK(w, demill_outlet_create(w, DEMILL_REGION_BOX, box, 6, 0, NULL, 1e-3, &outlet[0]));
+    DM_OK(w, demill_world_step(w, 101));
+    double last[3];
+    DM_OK(w, demill_outlet_read(w, outlet[0], NULL, NULL, 0, NULL, last));
+    DM_ASSERT_REL(last[0], 7800 * M_PI / 6 * 0.01 * 0.01 * 0.01, 1e-12);
+    ck_assert(last[1] == 1.0);
+    DM_ASSERT_REL(last[2], 1e-3, 1e-12);
+
+    DM_OK(w, demill_outlet_create(w, DEMILL_REGION_BOX, box, 6, 0, NULL, 1e-300, &outlet[1]));
+    DM_OK(w, demill_world_step(w, 2));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME, 1e8));
+    DM_OK(w, demill_outlet_create(w, DEMILL_REGION_BOX, box, 6, 0, NULL, 1e-9, &outlet[2]));
+    for (int k = 0; k < 3; k++) {
+        double now;
+        DM_OK(w, demill_world_step(w, 1));
+        DM_OK(w, demill_world_get(w, DEMILL_WORLD_TIME, &now));
+        for (int q = 0; q < 3; q++) {
+            DM_OK(w, demill_outlet_read(w, outlet[q], NULL, NULL, 0, NULL, last));
+            ck_assert_msg(last[0] == 0.0 && last[1] == 0.0 && last[2] <= now,
+                          "outlet %d: %g kg, %g balls, ended at %.17g s, now %.17g s", q, last[0],
+                          last[1], last[2], now);
+        }
+    }
+    demill_world_destroy(w);
+}
+END_TEST
+
 /* The world's checkpoint bytes. */
 static unsigned char *state_bytes(demill_world *w, size_t *n)
 {
@@ -454,6 +496,7 @@ int main(void)
     tcase_add_test(t, settle_waits_for_the_fall);
     tcase_add_test(t, feed_inserts_its_rate);
     tcase_add_test(t, outlet_conserves_particles);
+    tcase_add_test(t, outlet_intervals_below_the_clock_resolution);
     tcase_add_test(t, bad_input_changes_nothing);
     tcase_add_test(t, checkpoint_and_snapshot_carry_feeds);
     suite_add_tcase(s, t);
