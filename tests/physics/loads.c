@@ -9,6 +9,9 @@
  *   Newton's third law), all of it on one element (one contact); with
  *   velocity Verlet and with the iterative refinement (which evaluates the
  *   forces several times a step, and must record them once).
+ * - The same sphere resting on the floor of a can (a cylinder of radius
+ *   0.05 m and length 0.1 m capped at its start): the can records it as one
+ *   patch with its cap, m g within 1e-9, of area 2π r L + π r² (1e-12).
  * - A sphere launched at v0 without spin on a triangulated floor with
  *   Coulomb friction μ slides until it rolls. With the contact's lever arm
  *   a = R − δ/2 (δ = m g / k) and I = 2/5 m R², friction μ m g slows it,
@@ -168,6 +171,25 @@ START_TEST(resting_sphere)
     /* the elements' areas: H²/2 per triangle, H per segment */
     DM_ASSERT_REL(l.area[n - 1], dim == 3 ? 0.5 * H * H : H, 1e-12);
     free_loads(&l);
+    demill_world_destroy(w);
+}
+END_TEST
+
+START_TEST(capped_can)
+{
+    const double o[3] = {0, 0, 0}, up[3] = {0, 1, 0}, rc = 0.05, L = 0.1;
+    demill_id mat, can, ball;
+    demill_world *w = loads_world(3, 1, &mat);
+    DM_OK(w, demill_wall_add_cylinder(w, mat, o, up, rc, L, DEMILL_CAPS_START, &can));
+    const double x[3] = {0.01, R - rest_overlap(), 0.005}, r = R;
+    DM_OK(w, demill_particles_add(w, mat, 1, x, &r, NULL, 0, &ball));
+    DM_OK(w, demill_wall_loads_start(w, can));
+    DM_OK(w, demill_world_step(w, 1000));
+    double normal, impulse, shear, area, interval;
+    DM_OK(w, demill_wall_loads(w, can, 1, &normal, &impulse, &shear, &area, &interval));
+    DM_ASSERT_REL(normal, ball_mass() * G, 1e-9);
+    DM_ASSERT_REL(impulse, ball_mass() * G * interval, 1e-9);
+    DM_ASSERT_REL(area, 2.0 * M_PI * rc * L + M_PI * rc * rc, 1e-12);
     demill_world_destroy(w);
 }
 END_TEST
@@ -333,6 +355,7 @@ int main(void)
     Suite *s = suite_create("loads");
     TCase *tc = tcase_create("loads");
     tcase_add_loop_test(tc, resting_sphere, 0, 10);
+    tcase_add_test(tc, capped_can);
     tcase_add_test(tc, sliding_sphere);
     tcase_add_test(tc, belt);
     tcase_add_test(tc, checkpoint_and_snapshot);
