@@ -11,7 +11,7 @@
  * mill also writes the product of grinding it (ore.c). Run `mill --help`
  * for the options.
  */
-#define _POSIX_C_SOURCE 200809L /* mkdir, clock_gettime, isatty */
+#define _POSIX_C_SOURCE 200809L /* mkdir, isatty */
 
 #include <errno.h>
 #include <math.h>
@@ -19,10 +19,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "mill.h"
+#include "run.h"
 
 #define PI 3.14159265358979323846
 
@@ -68,19 +68,6 @@ static void usage(FILE *f)
           f);
 }
 
-static int parse_number(const char *opt, const char *text, double lo, double hi, double *out)
-{
-    char *end;
-    errno = 0;
-    double v = strtod(text, &end);
-    if (errno || end == text || *end || !(v >= lo && v <= hi)) {
-        fprintf(stderr, "mill: %s %s: expected a number in [%g, %g]\n", opt, text, lo, hi);
-        return -1;
-    }
-    *out = v;
-    return 0;
-}
-
 static int parse_options(int argc, char **argv, options *o)
 {
     *o = (options){.scene = "default", .out = "mill-out", .grind_minutes = 10, .dim = 3, .lifters = 8, .threads = 1,
@@ -89,16 +76,9 @@ static int parse_options(int argc, char **argv, options *o)
                    .mass = 10000 * 8.8216e-4};
     int geometry = 0;
     for (int k = 1; k < argc; k++) {
-        const char *a = argv[k];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            usage(stdout);
-            exit(EXIT_SUCCESS);
-        }
-        if (k + 1 >= argc) {
-            fprintf(stderr, "mill: %s needs a value (see mill --help)\n", a);
+        const char *a = argv[k], *v = option_value(argc, argv, &k, usage);
+        if (!v)
             return -1;
-        }
-        const char *v = argv[++k];
         double x;
         if (!strcmp(a, "--scene")) {
             o->scene = v;
@@ -188,24 +168,6 @@ static int parse_options(int argc, char **argv, options *o)
     return 0;
 }
 
-static demill_world *g_world; /* for check()'s message */
-
-static void check(demill_status s, const char *what)
-{
-    if (s != DEMILL_OK) {
-        fprintf(stderr, "mill: %s failed: %s: %s\n", what, demill_strerror(s),
-                demill_world_last_error(g_world));
-        exit(EXIT_FAILURE);
-    }
-}
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
 static double drum_value(demill_world *w, demill_id d, int key)
 {
     double v;
@@ -277,6 +239,7 @@ static int32_t show_progress(void *user, uint64_t steps_done, uint64_t steps_tot
 
 int main(int argc, char **argv)
 {
+    example_program = "mill";
     options o;
     if (parse_options(argc, argv, &o))
         return EXIT_FAILURE;
@@ -300,7 +263,7 @@ int main(int argc, char **argv)
     demill_id steel, drum;
     if (scene_world(&geo, &w, &steel, &drum))
         return EXIT_FAILURE;
-    g_world = w;
+    example_world = w;
     check(demill_world_set(w, DEMILL_WORLD_THREADS, o.threads), "--threads");
 
     /* the charge */
@@ -360,16 +323,10 @@ int main(int argc, char **argv)
             (unsigned long long)total_steps);
 
     char path[4096];
-    snprintf(path, sizeof path, "%s/mill.csv", o.out);
-    FILE *csv = fopen(path, "w");
-    if (!csv) {
-        perror(path);
-        return EXIT_FAILURE;
-    }
+    FILE *csv = output_open(o.out, "mill.csv");
     fprintf(csv, "time_s,torque_Nm,power_W,power_cm_W,kinetic_J,dissipated_J,toe_deg,"
                  "shoulder_deg,com_deg,revolutions\n");
-    size_t nrows = 0, caprows = 1024;
-    double *row_t = malloc(caprows * sizeof *row_t), *row_p = malloc(caprows * sizeof *row_p);
+    series rows = {0}; /* time, power */
     demill_vtk_series *series = NULL;
     if (vtk_steps) {
         snprintf(path, sizeof path, "%s/mill", o.out);
@@ -420,17 +377,7 @@ int main(int argc, char **argv)
                 drum_value(w, drum, DEMILL_DRUM_TOE_ANGLE) * 180 / PI,
                 drum_value(w, drum, DEMILL_DRUM_SHOULDER_ANGLE) * 180 / PI,
                 drum_value(w, drum, DEMILL_DRUM_COM_ANGLE) * 180 / PI, (unsigned long long)rev);
-        if (nrows == caprows) {
-            caprows *= 2;
-            row_t = realloc(row_t, caprows * sizeof *row_t);
-            row_p = realloc(row_p, caprows * sizeof *row_p);
-            if (!row_t || !row_p) {
-                fprintf(stderr, "mill: out of memory\n");
-                return EXIT_FAILURE;
-            }
-        }
-        row_t[nrows] = t;
-        row_p[nrows++] = power;
+        series_add(&rows, t, power);
         if (vtk_steps && steps % vtk_steps < sample) {
             check(demill_vtk_series_write(w, series), "demill_vtk_series_write");
             frame_step = steps;
@@ -443,10 +390,7 @@ int main(int argc, char **argv)
     show_progress(&bar, 0, 0, t, bar.rate);
     if (tty)
         fputc('\n', stderr);
-    if (fclose(csv)) {
-        fprintf(stderr, "mill: error writing mill.csv\n");
-        return EXIT_FAILURE;
-    }
+    output_close(csv, "mill.csv");
     if (series && frame_step != steps) /* the final state */
         check(demill_vtk_series_write(w, series), "demill_vtk_series_write");
     demill_vtk_series_close(series);
@@ -464,13 +408,13 @@ int main(int argc, char **argv)
     /* the power against time, averaged over 10 ms so that impacts do not hide
      * the trend */
     const size_t win = 10;
-    double *smooth = malloc((nrows ? nrows : 1) * sizeof *smooth), acc = 0;
-    for (size_t k = 0; k < nrows; k++) {
-        acc += row_p[k] - (k >= win ? row_p[k - win] : 0);
+    double *smooth = malloc((rows.n ? rows.n : 1) * sizeof *smooth), acc = 0;
+    for (size_t k = 0; k < rows.n; k++) {
+        acc += rows.b[k] - (k >= win ? rows.b[k - win] : 0);
         smooth[k] = acc / (k + 1 < win ? k + 1 : win);
     }
     snprintf(path, sizeof path, "%s/power.png", o.out);
-    if (draw_power(path, row_t, smooth, nrows, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
+    if (draw_power(path, rows.a, smooth, rows.n, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
                    isnan(t_rev_end) ? t : t_rev_end))
         return EXIT_FAILURE;
     ore_result ground;
@@ -487,12 +431,7 @@ int main(int argc, char **argv)
         if (draw_product(path, &ground, title))
             return EXIT_FAILURE;
     }
-    snprintf(path, sizeof path, "%s/summary.txt", o.out);
-    FILE *sum = fopen(path, "w");
-    if (!sum) {
-        perror(path);
-        return EXIT_FAILURE;
-    }
+    FILE *sum = output_open(o.out, "summary.txt");
     const double wall = now() - t_wall0;
     fprintf(sum, "scene = %s\ndim = %d\nparticles = %zu\nmass_kg = %.6g\ndiameter_m = %g\n"
                  "length_m = %g\nlifters = %d\nspeed_fraction_critical = %.6g\n"
@@ -516,17 +455,13 @@ int main(int argc, char **argv)
                      "bond_work_index_kWh_t = %.6g\nbond_specific_energy_kWh_t = %.6g\n",
                 n_ore, ore.mass, o.grind_minutes, ground.f80, ground.p80, ground.kwh_t, ore.bond_wi,
                 ground.bond_kwh_t);
-    if (fclose(sum)) {
-        fprintf(stderr, "mill: error writing summary.txt\n");
-        return EXIT_FAILURE;
-    }
+    output_close(sum, "summary.txt");
     printf("mill: done in %.1f s. Mean power over the last revolution %.2f W (from the centre of "
            "mass %.2f W);\n      toe %.1f°, shoulder %.1f°; results in %s/\n",
            wall, mean_power, drum_value(w, drum, DEMILL_DRUM_POWER_CM_MEAN),
            drum_value(w, drum, DEMILL_DRUM_TOE_ANGLE_MEAN) * 180 / PI,
            drum_value(w, drum, DEMILL_DRUM_SHOULDER_ANGLE_MEAN) * 180 / PI, o.out);
-    free(row_t);
-    free(row_p);
+    series_free(&rows);
     free(smooth);
     demill_world_destroy(w);
     return EXIT_SUCCESS;

@@ -9,21 +9,9 @@
 #include <cairo.h>
 
 #include "mill.h"
+#include "plot.h"
 
 #define PI 3.14159265358979323846
-
-/* Reads a field of every particle (3 or 1 doubles each); the caller frees
- * it. */
-static double *read_field(demill_world *w, int field, size_t *n)
-{
-    demill_particles_read(w, field, NULL, 0, n);
-    double *out = malloc((*n ? *n : 1) * 3 * sizeof *out);
-    if (out && demill_particles_read(w, field, out, *n, n) != DEMILL_OK) {
-        free(out);
-        out = NULL;
-    }
-    return out;
-}
 
 /* The visible cross-section of lifter k in the world frame (4 corners):
  * centre line at its angle, from the shell inwards by its height, its width
@@ -39,83 +27,11 @@ static void lifter_corners(const drum_shape *d, int k, double xy[8])
     }
 }
 
-/* ---- pictures ------------------------------------------------------------------- */
-
-/* A perceptually even colour map (viridis, 5 stops) for t in [0, 1]. */
-static void colour(double t, double rgb[3])
-{
-    static const double stops[5][3] = {{0.267, 0.005, 0.329},
-                                       {0.229, 0.322, 0.546},
-                                       {0.128, 0.567, 0.551},
-                                       {0.369, 0.789, 0.383},
-                                       {0.993, 0.906, 0.144}};
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    const double x = t * 4;
-    const int k = x >= 4 ? 3 : (int)x;
-    for (int c = 0; c < 3; c++)
-        rgb[c] = stops[k][c] + (x - k) * (stops[k + 1][c] - stops[k][c]);
-}
-
-static int save_png(cairo_surface_t *s, const char *path)
-{
-    cairo_status_t st = cairo_surface_write_to_png(s, path);
-    cairo_surface_destroy(s);
-    if (st != CAIRO_STATUS_SUCCESS) {
-        fprintf(stderr, "mill: cannot write %s: %s\n", path, cairo_status_to_string(st));
-        return -1;
-    }
-    return 0;
-}
-
-/* A white canvas of wd × ht pixels for a picture, with the pictures' font at
- * font_size and lines 1 pixel wide. */
-static cairo_t *canvas(int wd, int ht, double font_size, cairo_surface_t **s)
-{
-    *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, wd, ht);
-    cairo_t *cr = cairo_create(*s);
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, font_size);
-    cairo_set_line_width(cr, 1);
-    return cr;
-}
-
-typedef struct drawn {
-    double x, y, z, r, speed;
-} drawn;
-
-static int cmp_depth(const void *a, const void *b)
-{
-    const drawn *p = a, *q = b;
-    return (p->z > q->z) - (p->z < q->z);
-}
-
 int draw_charge(const char *path, demill_world *w, const drum_shape *d, const char *title)
 {
     const int size = 900, top = 60, bar = 70;
-    size_t n;
-    double *x = read_field(w, DEMILL_PARTICLE_POSITION, &n);
-    double *v = read_field(w, DEMILL_PARTICLE_VELOCITY, &n);
-    double *r = read_field(w, DEMILL_PARTICLE_RADIUS, &n);
-    drawn *p = malloc((n ? n : 1) * sizeof *p);
-    if (!x || !v || !r || !p) {
-        free(x);
-        free(v);
-        free(r);
-        free(p);
-        fprintf(stderr, "mill: cannot read the particles for %s\n", path);
-        return -1;
-    }
-    double vmax = 1e-9;
-    for (size_t k = 0; k < n; k++) {
-        p[k] = (drawn){x[3 * k], x[3 * k + 1], x[3 * k + 2], r[k],
-                       hypot(hypot(v[3 * k], v[3 * k + 1]), v[3 * k + 2])};
-        vmax = fmax(vmax, p[k].speed);
-    }
-    qsort(p, n, sizeof *p, cmp_depth); /* far (-z) first, near last */
     cairo_surface_t *s;
-    cairo_t *cr = canvas(size + bar, size + top, 18, &s);
+    cairo_t *cr = plot_canvas(size + bar, size + top, 18, &s);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, 20, 36);
     cairo_show_text(cr, title);
@@ -124,12 +40,11 @@ int draw_charge(const char *path, demill_world *w, const drum_shape *d, const ch
     cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);
     cairo_arc(cr, cx, cy, d->radius * scale, 0, 2 * PI);
     cairo_fill(cr);
-    for (size_t k = 0; k < n; k++) {
-        double rgb[3];
-        colour(p[k].speed / vmax, rgb);
-        cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-        cairo_arc(cr, cx + p[k].x * scale, cy - p[k].y * scale, p[k].r * scale, 0, 2 * PI);
-        cairo_fill(cr);
+    double vmax;
+    if (plot_particles(cr, w, cx, cy, scale, INFINITY, "mill", &vmax)) {
+        cairo_destroy(cr);
+        cairo_surface_destroy(s);
+        return -1;
     }
     cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
     for (int l = 0; l < d->nlifters; l++) {
@@ -144,71 +59,15 @@ int draw_charge(const char *path, demill_world *w, const drum_shape *d, const ch
     cairo_set_line_width(cr, 4);
     cairo_arc(cr, cx, cy, d->radius * scale + 2, 0, 2 * PI);
     cairo_stroke(cr);
-    /* colour bar */
-    const double bx = size + 10, by = top + 60, bh = size - 120;
-    for (int k = 0; k < (int)bh; k++) {
-        double rgb[3];
-        colour(1.0 - k / bh, rgb);
-        cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-        cairo_rectangle(cr, bx, by + k, 20, 1);
-        cairo_fill(cr);
-    }
-    char label[64];
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_font_size(cr, 14);
-    snprintf(label, sizeof label, "%.2f m/s", vmax);
-    cairo_move_to(cr, bx - 10, by - 10);
-    cairo_show_text(cr, label);
-    cairo_move_to(cr, bx, by + bh + 20);
-    cairo_show_text(cr, "0");
-    cairo_move_to(cr, bx - 5, by + bh + 40);
-    cairo_show_text(cr, "speed");
+    plot_speed_bar(cr, size + 10, top + 60, size - 120, vmax);
     cairo_destroy(cr);
-    free(x);
-    free(v);
-    free(r);
-    free(p);
-    return save_png(s, path);
+    return plot_save_png(s, path, "mill");
 }
 
 static int cmp_double(const void *a, const void *b)
 {
     const double x = *(const double *)a, y = *(const double *)b;
     return (x > y) - (x < y);
-}
-
-/* A round number near span/5 for axis ticks. */
-static double tick_step(double span)
-{
-    const double raw = span / 5, mag = pow(10, floor(log10(raw))), f = raw / mag;
-    return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * mag;
-}
-
-/* A grid line from (x0, y0) to (x1, y1) and its label at (lx, ly). */
-static void plot_grid(cairo_t *cr, double x0, double y0, double x1, double y1, double lx,
-                      double ly, const char *label)
-{
-    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-    cairo_move_to(cr, x0, y0);
-    cairo_line_to(cr, x1, y1);
-    cairo_stroke(cr);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_move_to(cr, lx, ly);
-    cairo_show_text(cr, label);
-}
-
-/* The frame of the plot area (left l, top tp, w × h) and the x axis's
- * title, centred about x_title_at at the bottom of a canvas ht high. */
-static void plot_frame(cairo_t *cr, double l, double tp, double w, double h, double ht,
-                       double x_title_at, const char *x_title)
-{
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_width(cr, 1.5);
-    cairo_rectangle(cr, l, tp, w, h);
-    cairo_stroke(cr);
-    cairo_set_font_size(cr, 15);
-    cairo_move_to(cr, x_title_at, ht - 15);
-    cairo_show_text(cr, x_title);
 }
 
 int draw_power(const char *path, const double *t, const double *pw, size_t n, double mean,
@@ -232,47 +91,26 @@ int draw_power(const char *path, const double *t, const double *pw, size_t n, do
     free(sorted);
     p1 = p1 > p0 ? p1 : p0 + 1;
     cairo_surface_t *s;
-    cairo_t *cr = canvas(wd, ht, 13, &s);
-    const double sx = (wd - l - r) / (t1 - t0), sy = (ht - tp - bt) / (p1 - p0);
-#define PX(tt) (l + ((tt) - t0) * sx)
-#define PY(pp) (ht - bt - ((pp) - p0) * sy)
+    cairo_t *cr = plot_canvas(wd, ht, 13, &s);
+    const plot_area a = {l, tp, wd - l - r, ht - tp - bt, t0, t1, p0, p1};
     char label[64];
-    const double dtk = tick_step(t1 - t0), dpk = tick_step(p1 - p0);
-    for (double tk = ceil(t0 / dtk) * dtk; tk <= t1 + 1e-12; tk += dtk) {
-        snprintf(label, sizeof label, "%g", tk);
-        plot_grid(cr, PX(tk), tp, PX(tk), ht - bt, PX(tk) - 8, ht - bt + 18, label);
-    }
-    for (double pk = ceil(p0 / dpk) * dpk; pk <= p1 + 1e-12; pk += dpk) {
-        snprintf(label, sizeof label, "%g", pk);
-        plot_grid(cr, l, PY(pk), wd - r, PY(pk), l - 45, PY(pk) + 4, label);
-    }
-    cairo_save(cr);
-    cairo_rectangle(cr, l, tp, wd - l - r, ht - tp - bt);
-    cairo_clip(cr);
-    cairo_set_source_rgb(cr, 0.13, 0.37, 0.66);
-    cairo_set_line_width(cr, 1.2);
-    cairo_move_to(cr, PX(t[0]), PY(pw[0]));
-    for (size_t k = 1; k < n; k++)
-        cairo_line_to(cr, PX(t[k]), PY(pw[k]));
-    cairo_stroke(cr);
-    cairo_restore(cr);
+    plot_ticks(cr, &a);
+    plot_curve(cr, &a, t, pw, n, (const double[3]){0.13, 0.37, 0.66}, 1.2);
     if (isfinite(mean)) {
         cairo_set_source_rgb(cr, 0.85, 0.2, 0.1);
         cairo_set_line_width(cr, 2.5);
-        cairo_move_to(cr, PX(mean_from), PY(mean));
-        cairo_line_to(cr, PX(mean_to), PY(mean));
+        cairo_move_to(cr, plot_px(&a, mean_from), plot_py(&a, mean));
+        cairo_line_to(cr, plot_px(&a, mean_to), plot_py(&a, mean));
         cairo_stroke(cr);
         snprintf(label, sizeof label, "mean over the last revolution: %.2f W", mean);
-        cairo_move_to(cr, PX(mean_from), tp + 20);
+        cairo_move_to(cr, plot_px(&a, mean_from), tp + 20);
         cairo_show_text(cr, label);
     }
     plot_frame(cr, l, tp, wd - l - r, ht - tp - bt, ht, wd / 2 - 30, "time [s]");
     cairo_move_to(cr, l, 32);
     cairo_show_text(cr, "power draw P = -T ω [W], 10 ms running mean");
-#undef PX
-#undef PY
     cairo_destroy(cr);
-    return save_png(s, path);
+    return plot_save_png(s, path, "mill");
 }
 
 int draw_product(const char *path, const ore_result *r, const char *title)
@@ -281,10 +119,8 @@ int draw_product(const char *path, const ore_result *r, const char *title)
     /* the log size axis over the classes' limits but the sink's 0 */
     const double lx0 = log10(r->limits[r->n - 1]), lx1 = log10(r->limits[0]);
     cairo_surface_t *s;
-    cairo_t *cr = canvas(wd, ht, 13, &s);
-    const double sx = (wd - l - r_) / (lx1 - lx0), sy = (ht - tp - bt) / 100.0;
-#define PX(lx) (l + ((lx) - lx0) * sx)
-#define PY(pp) (ht - bt - (pp) * sy)
+    cairo_t *cr = plot_canvas(wd, ht, 13, &s);
+    const plot_area a = {l, tp, wd - l - r_, ht - tp - bt, lx0, lx1, 0, 100};
     char label[96];
     /* decades and 2, 5 within them, in mm */
     for (double dec = floor(lx0); dec <= lx1; dec += 1)
@@ -293,11 +129,13 @@ int draw_product(const char *path, const ore_result *r, const char *title)
             if (lx < lx0 - 1e-9 || lx > lx1 + 1e-9)
                 continue;
             snprintf(label, sizeof label, "%g", 1e3 * pow(10, lx));
-            plot_grid(cr, PX(lx), tp, PX(lx), ht - bt, PX(lx) - 8, ht - bt + 18, label);
+            plot_grid(cr, plot_px(&a, lx), tp, plot_px(&a, lx), ht - bt, plot_px(&a, lx) - 8,
+                      ht - bt + 18, label);
         }
     for (int pk = 0; pk <= 100; pk += 20) {
         snprintf(label, sizeof label, "%d", pk);
-        plot_grid(cr, l, PY(pk), wd - r_, PY(pk), l - 35, PY(pk) + 4, label);
+        plot_grid(cr, l, plot_py(&a, pk), wd - r_, plot_py(&a, pk), l - 35, plot_py(&a, pk) + 4,
+                  label);
     }
     /* the curves through (upper limit, passing) of every class but the sink */
     const double colour[2][3] = {{0.45, 0.45, 0.45}, {0.13, 0.37, 0.66}};
@@ -306,7 +144,7 @@ int draw_product(const char *path, const ore_result *r, const char *title)
         cairo_set_source_rgb(cr, colour[c][0], colour[c][1], colour[c][2]);
         cairo_set_line_width(cr, 2.2);
         for (uint32_t k = 0; k < r->n; k++) {
-            const double x = PX(log10(r->limits[k])), y = PY(100 * p[k]);
+            const double x = plot_px(&a, log10(r->limits[k])), y = plot_py(&a, 100 * p[k]);
             if (k == 0)
                 cairo_move_to(cr, x, y);
             else
@@ -323,8 +161,6 @@ int draw_product(const char *path, const ore_result *r, const char *title)
     cairo_show_text(cr, title);
     cairo_move_to(cr, l, 47);
     cairo_show_text(cr, "cumulative mass passing [%]");
-#undef PX
-#undef PY
     cairo_destroy(cr);
-    return save_png(s, path);
+    return plot_save_png(s, path, "mill");
 }

@@ -1,5 +1,7 @@
 /* ids.c: the ids of a world's objects: checking an id an API call is given
  * and finding its object's storage slot, and the ids of stored objects. */
+#include <string.h>
+
 #include "world/world.h"
 
 static const char *kind_name(int kind)
@@ -16,6 +18,12 @@ static const char *kind_name(int kind)
     }
 }
 
+/* The indefinite article of the kind's name: "an" outlet, "a" wall. */
+static const char *article(int kind)
+{
+    return strchr("aeiou", kind_name(kind)[0]) ? "an" : "a";
+}
+
 /* Checks that `id` names a live object of `kind` in world w and returns its
  * storage slot (particles: storage index; walls: wall slot; bodies: body
  * slot; materials: index).
@@ -25,11 +33,12 @@ demill_status dm_resolve(const demill_world *cw, demill_id id, int kind, const c
 {
     demill_world *w = (demill_world *)cw; /* the error message is mutable state */
     if (id == DEMILL_ID_NONE)
-        return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: DEMILL_ID_NONE is not a %s id", what,
-                       kind_name(kind));
+        return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: DEMILL_ID_NONE is not %s %s id", what,
+                       article(kind), kind_name(kind));
     if (DM_ID_KIND(id) != kind)
-        return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: id 0x%llx is a %s id, expected a %s id",
-                       what, (unsigned long long)id, kind_name(DM_ID_KIND(id)), kind_name(kind));
+        return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: id 0x%llx is %s %s id, expected %s %s id",
+                       what, (unsigned long long)id, article(DM_ID_KIND(id)),
+                       kind_name(DM_ID_KIND(id)), article(kind), kind_name(kind));
     if (DM_ID_TAG(id) != w->tag)
         return dm_fail(w, DEMILL_ERR_INVALID_HANDLE,
                        "%s: %s id 0x%llx belongs to another world", what, kind_name(kind),

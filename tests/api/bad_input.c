@@ -1870,6 +1870,10 @@ static void bad_kind(scene *sc)
     demill_id ids[5], wid;
     far_batch(sc, pos, rad, vel);
     const double p[3] = {0.3, -0.05, 0}, n[3] = {-1, 1, 0}, v[3] = {0.1, 0, 0};
+    ctx(sc, "a garbage id as a material: the message names both kinds");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE,
+        demill_material_set(w, ~(demill_id)0, DEMILL_MATERIAL_DENSITY, 3000),
+        "is an unknown id, expected a material id");
     for (int k = 0; k < 4; k++) {
         const demill_id x = not_mat[k];
         ctx(sc, "id 0x%llx as a material", (unsigned long long)x);

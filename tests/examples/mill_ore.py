@@ -13,6 +13,8 @@ import re
 import subprocess
 import sys
 
+from outputs import assert_png, read_summary
+
 
 def main():
     mill, ore_file, work = sys.argv[1:4]
@@ -29,13 +31,8 @@ def main():
                     "--revolutions", "1", "--lifters", "4", "--lifter-height", "0.008",
                     "--fill", "25", "--vtk-every", "0", "--ore", ore, "--grind-minutes", "10",
                     "--out", out], check=True)
-    summary = {}
-    with open(os.path.join(out, "summary.txt")) as f:
-        for line in f:
-            key, value = line.split(" = ")
-            summary[key] = value.strip()
-    with open(os.path.join(out, "product.png"), "rb") as f:
-        assert f.read(8) == b"\x89PNG\r\n\x1a\n", "product.png is not a PNG"
+    summary = read_summary(os.path.join(out, "summary.txt"))
+    assert_png(os.path.join(out, "product.png"))
     with open(os.path.join(out, "product.csv")) as f:
         rows = [line.strip().split(",") for line in f][1:]
     feed = sum(float(r[4]) for r in rows)
