@@ -2,7 +2,8 @@
  * @brief The mill drum (shell, end caps and lifter bars), its speed,
  * the charge that fills it, and what mill engineers read from it.
  *
- * The drum's axis is the z axis through the origin; seen from +z a positive
+ * The drum's axis is parallel to z, through its centre (the origin unless
+ * moved: DEMILL_DRUM_CENTER_X ...); seen from +z a positive
  * speed turns it counter-clockwise, so at the bottom the shell moves towards
  * +x and the charge is lifted on the +x side. In a 2D world the drum is a
  * circle in the xy plane with lifter polygons. Angles are in radians; polar
@@ -72,6 +73,42 @@ enum {
      *  the drum's: the critical speed, the charge-shape ring and the fill
      *  region use it. */
     DEMILL_DRUM_SHELL = 417,
+    /** x of the drum's centre (the point of its axis midway between the
+     *  caps), m. Reads where it is now; setting a component moves the drum
+     *  there at once (every wall of the drum: shell, caps, lifters and the
+     *  walls attached to it), its motion then going on from there.
+     *  Default 0. Charge angles, the charge's centre of mass and the torque
+     *  are taken about the centre. */
+    DEMILL_DRUM_CENTER_X = 418,
+    /** y of the drum's centre (see DEMILL_DRUM_CENTER_X), m. */
+    DEMILL_DRUM_CENTER_Y = 419,
+    /** z of the drum's centre (see DEMILL_DRUM_CENTER_X), m; 0 in 2D. */
+    DEMILL_DRUM_CENTER_Z = 420,
+    /** x of the drum's steady translation velocity, m/s: the centre moves
+     *  at it, the axis keeping its direction. Default 0. The drum's power
+     *  and energy in count the work of the force on it, -F·v, beside that
+     *  of the torque. */
+    DEMILL_DRUM_VELOCITY_X = 421,
+    /** y of the drum's steady velocity (see DEMILL_DRUM_VELOCITY_X), m/s. */
+    DEMILL_DRUM_VELOCITY_Y = 422,
+    /** z of the drum's steady velocity, m/s; 0 in 2D. */
+    DEMILL_DRUM_VELOCITY_Z = 423,
+    /** x of the amplitude vector a of the drum's harmonic translation, m:
+     *  its centre moves by a sin(2π f t' + φ) on top of the steady motion
+     *  (f: DEMILL_DRUM_VIBRATION_FREQUENCY, φ: DEMILL_DRUM_VIBRATION_PHASE,
+     *  t' the time since the motion was last set). Default 0. Setting any
+     *  of the motion keys (418-428) restarts t' from now with the centre
+     *  where it is, so the drum does not jump (its velocity may). */
+    DEMILL_DRUM_VIBRATION_X = 424,
+    /** y of the vibration's amplitude vector (see DEMILL_DRUM_VIBRATION_X), m. */
+    DEMILL_DRUM_VIBRATION_Y = 425,
+    /** z of the vibration's amplitude vector, m; 0 in 2D. */
+    DEMILL_DRUM_VIBRATION_Z = 426,
+    /** Frequency f of the drum's harmonic translation, Hz, >= 0 (0: none).
+     *  Default 0. */
+    DEMILL_DRUM_VIBRATION_FREQUENCY = 427,
+    /** Phase φ of the drum's harmonic translation, rad. Default 0. */
+    DEMILL_DRUM_VIBRATION_PHASE = 428,
 
     /** Critical speed ω_c = √(2 g / (D - d)), rad/s, with g the magnitude of
      *  the gravity vector. */
@@ -86,7 +123,9 @@ enum {
     /** z-torque the particles exert on the drum (shell, caps and lifters)
      *  about its axis at the last force evaluation, N m. */
     DEMILL_DRUM_TORQUE = 454,
-    /** Power draw P = -T_z ω at the last force evaluation, W. */
+    /** Power draw P = -T_z ω - F·v at the last force evaluation (T_z the
+     *  torque about the axis through the centre, F the force on the drum,
+     *  v the centre's velocity: 0 unless the drum translates), W. */
     DEMILL_DRUM_POWER = 455,
     /** Mean power draw over the last completed revolution, W (NaN before the
      *  first). */
@@ -133,7 +172,13 @@ enum {
     /** y component of the force on the drum (see DEMILL_DRUM_FORCE_X), N. */
     DEMILL_DRUM_FORCE_Y = 470,
     /** z component of the force on the drum (see DEMILL_DRUM_FORCE_X), N. */
-    DEMILL_DRUM_FORCE_Z = 471
+    DEMILL_DRUM_FORCE_Z = 471,
+    /** x of the drum centre's velocity now, steady and harmonic, m/s. */
+    DEMILL_DRUM_CURRENT_VELOCITY_X = 472,
+    /** y of the drum centre's velocity now, m/s. */
+    DEMILL_DRUM_CURRENT_VELOCITY_Y = 473,
+    /** z of the drum centre's velocity now, m/s. */
+    DEMILL_DRUM_CURRENT_VELOCITY_Z = 474
 };
 
 /** Parts of the drum, each with a material of its own
@@ -217,8 +262,9 @@ DEMILL_API demill_status demill_drum_remove(demill_world *world, demill_id drum)
  *  @param value the new value, in the key's unit.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NOT_FINITE,
- *          DEMILL_ERR_INVALID_VALUE (out of bounds; lifters that do not fit)
- *          or DEMILL_ERR_OUT_OF_MEMORY. */
+ *          DEMILL_ERR_INVALID_VALUE (out of bounds; lifters that do not fit),
+ *          DEMILL_ERR_DIMENSION (a z component of the drum's motion other
+ *          than 0 in a 2D world) or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_drum_set(demill_world *world, demill_id drum, int32_t key,
                                          double value);
 
@@ -255,9 +301,11 @@ DEMILL_API demill_status demill_drum_set_material(demill_world *world, demill_id
 DEMILL_API demill_status demill_drum_get_material(demill_world *world, demill_id drum,
                                                   int32_t part, demill_id *out);
 
-/** Makes a wall (a mesh, a polyline or a plane) a part of the drum: from
- *  now on it turns with the drum, its own motion replaced. Its geometry is
- *  taken where it is now, at the drum's current angle, so nothing jumps.
+/** Makes a wall (a mesh, a polyline, a plane or a finite wall: cylinder,
+ *  cone, disc or rectangle, a capped wall with its caps) a part of the
+ *  drum: from now on it turns and moves with the drum, its own motion
+ *  (rigid or harmonic) replaced. Its geometry is taken where it is now, at the drum's
+ *  current angle, so nothing jumps; a surface velocity turns with it.
  *  It counts in everything the drum reports: torque, power, the force on
  *  the drum, energy in and dissipated, the collision spectrum's row of its
  *  part (shell and caps, or lifters) and, as part DEMILL_DRUM_PART_LIFTERS,
@@ -276,10 +324,49 @@ DEMILL_API demill_status demill_drum_get_material(demill_world *world, demill_id
  *          not valid in this world, the drum's id given as the wall),
  *          DEMILL_ERR_UNKNOWN_KEY (no such part), DEMILL_ERR_DIMENSION (the
  *          caps of a 2D drum) or DEMILL_ERR_INVALID_VALUE (the wall is
- *          attached already, to the drum or to a body, or is a finite
- *          wall: only planes, meshes and polylines can be attached). */
+ *          attached already, to the drum or to a body). */
 DEMILL_API demill_status demill_drum_attach_wall(demill_world *world, demill_id drum,
                                                  demill_id wall, int32_t part);
+
+/** Adds lifters or liners to the drum from their cross-section: a polyline
+ *  of `n_points` points (x, y) in the drum's frame at drum angle 0 (about
+ *  its axis, polar angles as for demill_drum_add_lifter()),
+ *  open or closed (the last point joined to the first), repeated
+ *  `copies` times about the axis, copy k turned by 2πk/copies
+ *  counter-clockwise: one lifter's profile makes `copies` evenly spaced
+ *  lifters. In 3D each segment is extruded along the axis over the drum's
+ *  length (z from -length/2 to length/2) into two triangles, in 2D it is a
+ *  segment. The result is one mesh (3D) or polyline (2D) wall of the given
+ *  material, attached to the drum as part `part` at its current angle
+ *  (demill_drum_attach_wall(): it turns with the drum, counts in its
+ *  torque, power, force and energy, and as part DEMILL_DRUM_PART_LIFTERS
+ *  in the charge shape); its id is a wall's, for demill_wall_remove().
+ *  The surface is thin and touched from either side, as a mesh's is: an
+ *  open profile need only trace the faces the charge can reach. Changing
+ *  the drum's diameter or length later does not change it.
+ *  @param world    the world.
+ *  @param drum     the drum's id.
+ *  @param material the wall's material.
+ *  @param part     the part it becomes, DEMILL_DRUM_PART_*.
+ *  @param n_points the number of points: 2 to 65536 (open), 3 to 65536
+ *                  (closed).
+ *  @param points   2 n_points doubles, x and y of each point, m: finite,
+ *                  at most the drum's radius from the axis (a point on
+ *                  the shell is inside), no two consecutive points equal.
+ *  @param closed   1: the last point is joined to the first; 0: not.
+ *  @param copies   the number of copies about the axis, 1 to 1024.
+ *  @param[out] out receives the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (drum or material),
+ *          DEMILL_ERR_UNKNOWN_KEY (no such part), DEMILL_ERR_DIMENSION (the
+ *          caps of a 2D drum), DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE (a point that is not finite),
+ *          DEMILL_ERR_INVALID_VALUE (closed not 0 or 1, too few or too
+ *          many points, copies out of range, a point outside the shell, a
+ *          segment of zero length) or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_drum_add_profile(demill_world *world, demill_id drum,
+                                                 demill_id material, int32_t part,
+                                                 size_t n_points, const double *points,
+                                                 int closed, uint32_t copies, demill_id *out);
 
 /** Adds one lifter to the drum.
  *  @param world      the world.
@@ -472,8 +559,10 @@ DEMILL_API demill_status demill_grinding_rates_from_drum(demill_grinding *grindi
                                                          demill_world *world, demill_id drum);
 
 /** Steps the world until the charge has settled: until the kinetic energy per
- *  particle falls below `energy_per_particle`, or `max_time` of simulated
- *  time has passed.
+ *  particle is below `energy_per_particle` and no larger than at the check
+ *  before (the energy is looked at every millisecond of simulated time, so
+ *  particles placed at rest and starting to fall do not count as settled),
+ *  or `max_time` of simulated time has passed.
  *  @param world               the world.
  *  @param max_time            the longest time to step, s, >= 0.
  *  @param energy_per_particle the kinetic energy per particle that counts as

@@ -324,8 +324,9 @@ DEMILL_API demill_status demill_wall_set_motion(demill_world *world, demill_id w
  *  @param phase     the phase at this call, rad.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY (mode),
  *          DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE,
- *          DEMILL_ERR_INVALID_VALUE (zero axis, frequency not positive) or
- *          DEMILL_ERR_DIMENSION. */
+ *          DEMILL_ERR_INVALID_VALUE (zero axis, frequency not positive;
+ *          the wall is attached to the drum or to a body and moves with it)
+ *          or DEMILL_ERR_DIMENSION. */
 DEMILL_API demill_status demill_wall_set_harmonic(demill_world *world, demill_id wall,
                                                   int32_t mode, const double axis[3],
                                                   double amplitude, double frequency,

@@ -86,6 +86,17 @@ static const param_info params[] = {
     {DEMILL_DRUM_FILL_POROSITY, "drum.fill_porosity", "1", 0, 0.9, 0.4, 0},
     {DEMILL_DRUM_SAMPLE_INTERVAL, "drum.sample_interval", "1", 1, 1e9, 100, WHOLE},
     {DEMILL_DRUM_SHELL, "drum.shell", "1", 0, 1, 1, WHOLE},
+    {DEMILL_DRUM_CENTER_X, "drum.center_x", "m", -1e9, 1e9, 0, 0},
+    {DEMILL_DRUM_CENTER_Y, "drum.center_y", "m", -1e9, 1e9, 0, 0},
+    {DEMILL_DRUM_CENTER_Z, "drum.center_z", "m", -1e9, 1e9, 0, 0},
+    {DEMILL_DRUM_VELOCITY_X, "drum.velocity_x", "m/s", -1e6, 1e6, 0, 0},
+    {DEMILL_DRUM_VELOCITY_Y, "drum.velocity_y", "m/s", -1e6, 1e6, 0, 0},
+    {DEMILL_DRUM_VELOCITY_Z, "drum.velocity_z", "m/s", -1e6, 1e6, 0, 0},
+    {DEMILL_DRUM_VIBRATION_X, "drum.vibration_x", "m", -1e6, 1e6, 0, 0},
+    {DEMILL_DRUM_VIBRATION_Y, "drum.vibration_y", "m", -1e6, 1e6, 0, 0},
+    {DEMILL_DRUM_VIBRATION_Z, "drum.vibration_z", "m", -1e6, 1e6, 0, 0},
+    {DEMILL_DRUM_VIBRATION_FREQUENCY, "drum.vibration_frequency", "Hz", 0, 1e9, 0, 0},
+    {DEMILL_DRUM_VIBRATION_PHASE, "drum.vibration_phase", "rad", -1e6, 1e6, 0, 0},
     {DEMILL_DRUM_CRITICAL_SPEED, "drum.critical_speed", "rad/s", 0, 1e300, 0, READ_ONLY},
     {DEMILL_DRUM_CURRENT_SPEED, "drum.current_speed", "rad/s", -1e300, 1e300, 0, READ_ONLY},
     {DEMILL_DRUM_ANGLE, "drum.angle", "rad", -1e300, 1e300, 0, READ_ONLY},
@@ -108,6 +119,9 @@ static const param_info params[] = {
     {DEMILL_DRUM_FORCE_X, "drum.force_x", "N", -1e300, 1e300, 0, READ_ONLY},
     {DEMILL_DRUM_FORCE_Y, "drum.force_y", "N", -1e300, 1e300, 0, READ_ONLY},
     {DEMILL_DRUM_FORCE_Z, "drum.force_z", "N", -1e300, 1e300, 0, READ_ONLY},
+    {DEMILL_DRUM_CURRENT_VELOCITY_X, "drum.current_velocity_x", "m/s", -1e300, 1e300, 0, READ_ONLY},
+    {DEMILL_DRUM_CURRENT_VELOCITY_Y, "drum.current_velocity_y", "m/s", -1e300, 1e300, 0, READ_ONLY},
+    {DEMILL_DRUM_CURRENT_VELOCITY_Z, "drum.current_velocity_z", "m/s", -1e300, 1e300, 0, READ_ONLY},
 };
 
 static const param_info *find(int32_t key)

@@ -95,8 +95,9 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
                                  3 a material per part of the drum, the walls'
                                  meshes (section MESH), the feeds and outlets (FLOW),
                                  the finite walls, harmonic motion and surface
-                                 velocity (WFIN), the bodies (BODY), the loads
-                                 the walls record (LOAD) */
+                                 velocity (WFIN), the bodies (BODY), the drum's
+                                 translation (DRMV), the loads the walls record
+                                 (LOAD) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -718,6 +719,15 @@ static void transfer(io *s, demill_world *w)
     io_section(s, "DRUM");
     io_u16(s, &w->drum_gen);
     transfer_drum(s, &w->drum, w->dim);
+    if (s->format >= 3) { /* the drum's translation */
+        dm_drum *d = &w->drum;
+        io_section(s, "DRMV");
+        double *const f[] = {d->centre_set, d->velocity, d->vib_amp, &d->vib_freq,
+                             &d->vib_phase, &d->t_move, d->centre, d->vcentre};
+        const size_t len[] = {3, 3, 3, 1, 1, 1, 3, 3};
+        for (size_t k = 0; k < sizeof len / sizeof *len; k++)
+            io_f64(s, f[k], len[k]);
+    }
 
     io_section(s, "CONT");
     for (int side = 0; side < 2; side++)
@@ -950,13 +960,15 @@ static demill_status check_walls(demill_world *t)
                   (wl->kind == DM_WALL_MESH) == (wl->mesh != NULL) &&
                   wl->material < t->nmat && wl->npoly >= 0 && wl->npoly <= DM_MAX_POLY &&
                   finite_wall_ok(t, k);
-        if (dm_wall_attached(wl)) { /* a user's wall, attached to the drum */
+        if (dm_wall_attached(wl) && !wl->parent) { /* a user's wall, attached to the drum */
             user++;
             ok &= d->alive && wl->drum_part <= DM_PART_LIFTER && wl->lifter == -1 &&
                   (wl->drum_part != DM_PART_CAP || t->dim == 3) && wl->handle < t->wh.n &&
                   t->wh.slot[wl->handle] == k;
-        } else if (wl->parent) {
-            ok &= wl->handle == DM_FREE && !wl->drum_part;
+        } else if (wl->parent) { /* a cap, attached to the drum with its wall or not */
+            ok &= wl->handle == DM_FREE && wl->parent - 1 < t->nwalls &&
+                  wl->drum_part == t->walls[wl->parent - 1].drum_part &&
+                  (!wl->drum_part || wl->lifter == -1);
         } else if (wl->drum_part) {
             drum++;
             bool listed = false;
@@ -1063,6 +1075,12 @@ static demill_status check_drum(demill_world *t)
         for (uint32_t k = 0; k < d->nlifters; k++)
             if ((s = dm_drum_check_lifter(t, &d->lifters[k], d->diameter)))
                 return s;
+        /* (the motion's keys are checked above, the centre's current value
+         * with them) */
+        if (!all_finite(d->centre_set, 3) || !isfinite(d->t_move) || !all_finite(d->vcentre, 3) ||
+            (t->dim == 2 && (d->centre_set[2] != 0.0 || d->centre[2] != 0.0 ||
+                             d->velocity[2] != 0.0 || d->vib_amp[2] != 0.0)))
+            return dm_fail(t, DEMILL_ERR_FORMAT, "drum: its translation");
     }
     const dm_spectrum *sp = &d->spectrum;
     if (t->events != (sp->counts != NULL))

@@ -2,11 +2,15 @@
  * reading what mill engineers read from it (lib/physics/mill/drum.c does the
  * work; docs/physics.md §7). */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "world/world.h"
 
 #define TWO_PI (2.0 * DM_PI)
+/* The most points and copies a profile (demill_drum_add_profile) takes. */
+#define DM_MAX_PROFILE_POINTS 65536
+#define DM_MAX_PROFILE_COPIES 1024
 
 static double param_default(int32_t key)
 {
@@ -66,8 +70,8 @@ DEMILL_API demill_status demill_drum_remove(demill_world *w, demill_id drum)
     if (s)
         return s;
     dm_drum_walls_remove(w);
-    for (uint32_t k = 0; k < w->nwalls; k++)
-        if (w->walls[k].kind && dm_wall_attached(&w->walls[k]))
+    for (uint32_t k = 0; k < w->nwalls; k++) /* (a capped wall's release frees its caps) */
+        if (w->walls[k].kind && dm_wall_attached(&w->walls[k]) && !w->walls[k].parent)
             dm_wall_release(w, k);
     dm_spectrum_free(w);
     w->drum.alive = false;
@@ -124,6 +128,13 @@ DEMILL_API demill_status demill_drum_set(demill_world *w, demill_id drum, int32_
     case DEMILL_DRUM_CRITICAL_DIAMETER: d->crit_diameter = value; break;
     case DEMILL_DRUM_FILL_POROSITY: d->porosity = value; break;
     case DEMILL_DRUM_SAMPLE_INTERVAL: d->sample_interval = (uint32_t)value; break;
+    default: /* the translation keys */
+        if (w->dim == 2 && value != 0.0 &&
+            (key == DEMILL_DRUM_CENTER_Z || key == DEMILL_DRUM_VELOCITY_Z ||
+             key == DEMILL_DRUM_VIBRATION_Z))
+            return dm_fail(w, DEMILL_ERR_DIMENSION, "drum_set: %s = %g in a 2D world",
+                           demill_param_name(key), value);
+        dm_drum_set_motion(w, key, value);
     }
     if (rebuild) {
         if (key != DEMILL_DRUM_DIAMETER && key != DEMILL_DRUM_LENGTH && key != DEMILL_DRUM_LIFTERS &&
@@ -221,14 +232,116 @@ DEMILL_API demill_status demill_drum_attach_wall(demill_world *w, demill_id drum
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                        "drum_attach_wall: the wall is attached to body 0x%llx and moves with it",
                        (unsigned long long)dm_body_id(w, wl->body - 1));
-    if (wl->kind != DM_WALL_PLANE && wl->kind != DM_WALL_MESH)
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "drum_attach_wall: only planes, meshes and polylines turn with the drum "
-                       "(a finite wall cannot be attached yet)");
-    dm_wall_attach(wl, part, w->time, w->drum.theta, w->drum.omega);
+    dm_wall_attach(wl, part, w->time, &w->drum);
+    for (int q = 0; q < 2; q++) /* a capped wall's caps, which share its pose */
+        if (wl->parts[q])
+            dm_wall_attach(&w->walls[wl->parts[q] - 1], part, w->time, &w->drum);
     w->nlist_valid = false;
     w->forces_valid = false;
     dm_changed(w);
+    return DEMILL_OK;
+}
+
+/* The checks of demill_drum_add_profile()'s points: finite, inside the
+ * shell, no segment of zero length. */
+static demill_status profile_check(demill_world *w, size_t n, const double *xy, int closed)
+{
+    const char *fn = "drum_add_profile";
+    const double R = 0.5 * w->drum.diameter;
+    for (size_t k = 0; k < n; k++) {
+        const double x = xy[2 * k], y = xy[2 * k + 1];
+        if (!isfinite(x) || !isfinite(y))
+            return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: point %zu (%g, %g) is not finite", fn,
+                           k, x, y);
+        /* (a point computed on the shell may lie an ulp or two beyond it) */
+        if (hypot(x, y) > R * (1.0 + 1e-12))
+            return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                           "%s: point %zu (%g, %g) lies %g m from the axis, outside the shell "
+                           "of radius %g m",
+                           fn, k, x, y, hypot(x, y), R);
+    }
+    const size_t nseg = closed ? n : n - 1;
+    for (size_t k = 0; k < nseg; k++) {
+        const size_t j = (k + 1) % n;
+        if (xy[2 * k] == xy[2 * j] && xy[2 * k + 1] == xy[2 * j + 1])
+            return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                           "%s: segment %zu (points %zu and %zu) has zero length", fn, k, k, j);
+    }
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_drum_add_profile(demill_world *w, demill_id drum,
+                                                 demill_id material, int32_t part,
+                                                 size_t n_points, const double *points,
+                                                 int closed, uint32_t copies, demill_id *out)
+{
+    const char *fn = "drum_add_profile";
+    uint32_t slot, mat;
+    int q = 0;
+    demill_status s = dm_enter(w, drum, DEMILL_KIND_DRUM, "drum", &slot);
+    if (s || (s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", &mat)) ||
+        (s = drum_part(w, part, fn, &q)))
+        return s;
+    if (!points || !out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "%s: %s is NULL", fn, !points ? "points" : "out");
+    if (closed != 0 && closed != 1)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: closed is %d, not 0 or 1", fn, closed);
+    if (n_points < (closed ? 3u : 2u) || n_points > DM_MAX_PROFILE_POINTS)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "%s: %zu points (%s profile needs %d to %d)", fn, n_points,
+                       closed ? "a closed" : "an open", closed ? 3 : 2, DM_MAX_PROFILE_POINTS);
+    if (copies < 1 || copies > DM_MAX_PROFILE_COPIES)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: %u copies (1 to %d)", fn, copies,
+                       DM_MAX_PROFILE_COPIES);
+    if ((s = profile_check(w, n_points, points, closed)))
+        return s;
+    /* each copy's points where they are now (at the drum's angle), twice in
+     * 3D: at both ends of the drum, joined by two triangles a segment */
+    const int D = w->dim, ends = D == 3 ? 2 : 1, nel = D == 3 ? 3 : 2;
+    const size_t nseg = closed ? n_points : n_points - 1, nv = copies * n_points * ends;
+    const size_t nt = copies * nseg * (D == 3 ? 2 : 1);
+    double *v = malloc(3 * nv * sizeof *v);
+    uint32_t *el = malloc((size_t)nel * nt * sizeof *el);
+    if (!v || !el) {
+        free(v);
+        free(el);
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "%s: out of memory", fn);
+    }
+    const dm_drum *d = &w->drum;
+    size_t iv = 0, it = 0;
+    for (uint32_t c = 0; c < copies; c++) {
+        const double a = d->theta + TWO_PI * c / copies, ca = cos(a), sa = sin(a);
+        const size_t first = iv;
+        for (int e = 0; e < ends; e++)
+            for (size_t k = 0; k < n_points; k++, iv++) {
+                const double x = points[2 * k], y = points[2 * k + 1];
+                v[3 * iv] = d->centre[0] + (ca * x - sa * y);
+                v[3 * iv + 1] = d->centre[1] + (sa * x + ca * y);
+                v[3 * iv + 2] = d->centre[2] + (D == 3 ? (e ? 0.5 : -0.5) * d->length : 0.0);
+            }
+        for (size_t k = 0; k < nseg; k++) {
+            const uint32_t p0 = (uint32_t)(first + k), p1 = (uint32_t)(first + (k + 1) % n_points);
+            if (D == 2) {
+                el[2 * it] = p0;
+                el[2 * it + 1] = p1;
+                it++;
+                continue;
+            }
+            const uint32_t q0 = p0 + (uint32_t)n_points, q1 = p1 + (uint32_t)n_points;
+            const uint32_t tri[6] = {p0, p1, q1, p0, q1, q0};
+            memcpy(el + 3 * it, tri, sizeof tri);
+            it += 2;
+        }
+    }
+    demill_id id;
+    uint32_t ws;
+    s = dm_walls_add_mesh(w, mat, nel, nv, v, nt, el, fn, D == 3 ? "triangle" : "segment", &id);
+    free(v);
+    free(el);
+    if (s || (s = dm_resolve(w, id, DEMILL_KIND_WALL, "wall", &ws)))
+        return s;
+    dm_wall_attach(&w->walls[ws], part, w->time, d);
+    *out = id;
     return DEMILL_OK;
 }
 
@@ -279,7 +392,28 @@ DEMILL_API demill_status demill_drum_get(demill_world *w, demill_id drum, int32_
     case DEMILL_DRUM_ANGLE: *value = d->theta; break;
     case DEMILL_DRUM_REVOLUTIONS: *value = (double)d->revolutions; break;
     case DEMILL_DRUM_TORQUE: *value = dm_drum_load(w, NULL); break;
-    case DEMILL_DRUM_POWER: *value = -dm_drum_load(w, NULL) * d->omega; break;
+    case DEMILL_DRUM_POWER: {
+        double f[3];
+        const double t = dm_drum_load(w, f);
+        *value = dm_drum_power(d, t, f);
+        break;
+    }
+    case DEMILL_DRUM_CENTER_X:
+    case DEMILL_DRUM_CENTER_Y:
+    case DEMILL_DRUM_CENTER_Z: *value = d->centre[key - DEMILL_DRUM_CENTER_X]; break;
+    case DEMILL_DRUM_VELOCITY_X:
+    case DEMILL_DRUM_VELOCITY_Y:
+    case DEMILL_DRUM_VELOCITY_Z: *value = d->velocity[key - DEMILL_DRUM_VELOCITY_X]; break;
+    case DEMILL_DRUM_VIBRATION_X:
+    case DEMILL_DRUM_VIBRATION_Y:
+    case DEMILL_DRUM_VIBRATION_Z: *value = d->vib_amp[key - DEMILL_DRUM_VIBRATION_X]; break;
+    case DEMILL_DRUM_VIBRATION_FREQUENCY: *value = d->vib_freq; break;
+    case DEMILL_DRUM_VIBRATION_PHASE: *value = d->vib_phase; break;
+    case DEMILL_DRUM_CURRENT_VELOCITY_X:
+    case DEMILL_DRUM_CURRENT_VELOCITY_Y:
+    case DEMILL_DRUM_CURRENT_VELOCITY_Z:
+        *value = d->vcentre[key - DEMILL_DRUM_CURRENT_VELOCITY_X];
+        break;
     case DEMILL_DRUM_POWER_MEAN: *value = d->mean_power; break;
     case DEMILL_DRUM_POWER_CM: *value = dm_drum_power_cm(w, d->omega); break;
     case DEMILL_DRUM_POWER_CM_MEAN: *value = d->mean_power_cm; break;

@@ -46,8 +46,7 @@ demill_status dm_energies(demill_world *w, int stored, double e[DM_ENERGIES])
             e[0] += 0.5 * P->m[i] * P->v[D * i + c] * P->v[D * i + c];
             e[2] -= P->m[i] * w->g[c] * P->x[D * i + c];
         }
-        for (int c = 0; c < W; c++)
-            e[1] += 0.5 * P->w[W * i + c] * P->w[W * i + c] / P->iinv[i];
+        e[1] += dm_particle_spin_energy(P, i, W);
     }
     demill_status s = DEMILL_OK;
     if (stored && !(s = prepare_query(w)))

@@ -281,6 +281,18 @@ DEMILL_API demill_status demill_fill_region(demill_world *w, int32_t region,
                 ids, capacity, added);
 }
 
+/* The particles' translational kinetic energy. */
+static double translational_energy(const demill_world *w)
+{
+    const dm_particles *P = &w->p;
+    const int D = w->dim;
+    double ke = 0.0;
+    for (uint32_t i = 0; i < P->n; i++)
+        for (int c = 0; c < D; c++)
+            ke += 0.5 * P->m[i] * P->v[D * i + c] * P->v[D * i + c];
+    return ke;
+}
+
 DEMILL_API demill_status demill_world_settle(demill_world *w, double max_time,
                                              double energy_per_particle, int32_t *settled)
 {
@@ -299,19 +311,18 @@ DEMILL_API demill_status demill_world_settle(demill_world *w, double max_time,
                        "world_settle: max_time %g s is %.3g steps of %g s, too many", max_time,
                        steps, w->dt);
     const uint64_t chunk = (uint64_t)fmax(1.0, ceil(1e-3 / w->dt));
-    const dm_particles *P = &w->p;
-    const int D = w->dim;
     int32_t calm = 0;
+    /* settled: low and no longer rising, so that particles placed at rest
+     * and starting to fall do not count */
+    double before = translational_energy(w);
     for (uint64_t left = (uint64_t)steps; !calm && left;) {
         const uint64_t n = left < chunk ? left : chunk;
         if ((s = demill_world_step(w, n)))
             return s;
         left -= n;
-        double ke = 0.0;
-        for (uint32_t i = 0; i < P->n; i++)
-            for (int c = 0; c < D; c++)
-                ke += 0.5 * P->m[i] * P->v[D * i + c] * P->v[D * i + c];
-        calm = P->n == 0 || ke / P->n <= energy_per_particle;
+        const double ke = translational_energy(w);
+        calm = w->p.n == 0 || (ke / w->p.n <= energy_per_particle && ke <= before);
+        before = ke;
     }
     if (settled)
         *settled = calm;

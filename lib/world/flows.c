@@ -349,8 +349,7 @@ static demill_status outlets_act(demill_world *w, size_t *removed)
         o->interval_mass += m;
         for (int c = 0; c < D; c++)
             fl->energy -= 0.5 * m * P->v[D * i + c] * P->v[D * i + c] - m * w->g[c] * x[c];
-        for (int c = 0; c < W; c++)
-            fl->energy -= 0.5 * P->w[W * i + c] * P->w[W * i + c] / P->iinv[i];
+        fl->energy -= dm_particle_spin_energy(P, i, W);
         ++*removed;
     }
     if (map)

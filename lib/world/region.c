@@ -128,10 +128,11 @@ bool dm_region_contains(const demill_world *w, const dm_region *r, const double 
             s += (x[c] - p[c]) * p[3 + c];
         return s <= -m;
     }
-    default: {
-        const double R = 0.5 * w->drum.diameter - m;
-        return R >= 0.0 && x[0] * x[0] + x[1] * x[1] <= R * R &&
-               (D == 2 || fabs(x[2]) <= 0.5 * w->drum.length - m);
+    default: { /* about the drum's centre */
+        const double R = 0.5 * w->drum.diameter - m, *c = w->drum.centre;
+        const double dx = x[0] - c[0], dy = x[1] - c[1];
+        return R >= 0.0 && dx * dx + dy * dy <= R * R &&
+               (D == 2 || fabs(x[2] - c[2]) <= 0.5 * w->drum.length - m);
     }
     }
 }
@@ -162,9 +163,11 @@ void dm_region_bounds(const demill_world *w, const dm_region *r, double lo[3], d
         break;
     default: {
         const double R = 0.5 * w->drum.diameter, h = 0.5 * w->drum.length;
-        const double l[3] = {-R, -R, -h}, u[3] = {R, R, h};
-        memcpy(lo, l, sizeof l);
-        memcpy(hi, u, sizeof u);
+        const double e[3] = {R, R, h}, *c = w->drum.centre;
+        for (int k = 0; k < 3; k++) {
+            lo[k] = c[k] - e[k];
+            hi[k] = c[k] + e[k];
+        }
     }
     }
     if (w->dim == 2)

@@ -281,7 +281,7 @@ static void sync_caps(demill_world *w, uint32_t slot)
 /* Adds a mesh wall of nt elements of nel vertices (3: triangles, 2: segments)
  * over nv vertices, after checking them all. what: the function's name;
  * element: what an element is called in messages. */
-static demill_status add_mesh(demill_world *w, uint32_t mat, int nel, size_t nv, const double *v,
+demill_status dm_walls_add_mesh(demill_world *w, uint32_t mat, int nel, size_t nv, const double *v,
                               size_t nt, const uint32_t *el, const char *what,
                               const char *element, demill_id *out)
 {
@@ -336,7 +336,7 @@ DEMILL_API demill_status demill_wall_add_mesh(demill_world *w, demill_id materia
                        "wall_add_mesh: %zu triangles over %zu vertices (1 to %u triangles, at "
                        "most %u vertices)",
                        n_triangles, n_vertices, UINT32_MAX / 3, UINT32_MAX);
-    return add_mesh(w, mat, 3, n_vertices, vertices, n_triangles, triangles, "wall_add_mesh",
+    return dm_walls_add_mesh(w, mat, 3, n_vertices, vertices, n_triangles, triangles, "wall_add_mesh",
                     "triangle", out);
 }
 
@@ -432,7 +432,7 @@ DEMILL_API demill_status demill_wall_add_polyline(demill_world *w, demill_id mat
         seg[2 * k] = (uint32_t)k;
         seg[2 * k + 1] = (uint32_t)((k + 1) % n_points);
     }
-    s = add_mesh(w, mat, 2, n_points, points, nseg, seg, "wall_add_polyline", "segment", out);
+    s = dm_walls_add_mesh(w, mat, 2, n_points, points, nseg, seg, "wall_add_polyline", "segment", out);
     free(seg);
     return s;
 }
@@ -556,6 +556,9 @@ DEMILL_API demill_status demill_wall_set_harmonic(demill_world *w, demill_id id,
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: frequency = %g must be positive", fn,
                        frequency);
     dm_wall *wall = &w->walls[slot];
+    if (wall->drum_part)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "%s: the wall is attached to the drum and turns with it", fn);
     if (wall->body)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                        "%s: the wall is attached to body 0x%llx and moves with it", fn,

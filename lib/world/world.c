@@ -146,7 +146,8 @@ DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double v
         return DEMILL_OK;
     case DEMILL_WORLD_TIME:
         dm_walls_retime(w, value);
-        w->drum.t_set += value - w->time; /* the drum keeps its angle and speed */
+        w->drum.t_set += value - w->time; /* the drum keeps its angle and speed, */
+        w->drum.t_move += value - w->time; /* its centre and velocity */
         w->drum.rev.t0 += value - w->time;
         w->time = value;
         break;

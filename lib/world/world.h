@@ -35,6 +35,13 @@ demill_id dm_particle_id(const demill_world *w, uint32_t storage);
 demill_id dm_wall_id(const demill_world *w, uint32_t wall_slot);
 /* Removes the user's wall in this slot (its contacts, handle and mesh). */
 void dm_wall_release(demill_world *w, uint32_t slot);
+/* Adds a mesh wall of material slot mat: nt elements of nel vertices (3:
+ * triangles, 2: segments) over nv vertices (3 doubles each), after checking
+ * them all (finite, indices in range, none degenerate); what: the calling
+ * function's name, element: what an element is called in its messages. */
+demill_status dm_walls_add_mesh(demill_world *w, uint32_t mat, int nel, size_t nv,
+                                const double *v, size_t nt, const uint32_t *el, const char *what,
+                                const char *element, demill_id *out);
 demill_id dm_material_id(const demill_world *w, uint32_t material);
 demill_id dm_drum_id(const demill_world *w);
 demill_id dm_body_id(const demill_world *w, uint32_t slot);

@@ -151,6 +151,8 @@ OPTIONAL_PROTOTYPES = {
     "demill_wall_add_stl": (status, (WorldP, id_t, c_void_p, c_size_t, c_double, dptr, idptr)),
     "demill_wall_load_stl": (status, (WorldP, id_t, c_char_p, c_double, dptr, idptr)),
     "demill_drum_attach_wall": (status, (WorldP, id_t, id_t, c_int32)),
+    "demill_drum_add_profile": (status, (WorldP, id_t, id_t, c_int32, c_size_t, dptr, c_int32,
+                                         c_uint32, idptr)),
     "demill_wall_add_polyline": (status, (WorldP, id_t, c_size_t, dptr, c_int32, idptr)),
     "demill_wall_mesh_info": (status, (WorldP, id_t, sizeptr, sizeptr)),
     # insert.h

@@ -8,7 +8,7 @@ import numpy as np
 from ._core import Keyed, Param, as_id, doubles, first, ptr, read_counted, read_field
 from .constants import DrumKey, DrumPart, Kind, LifterField
 from .errors import BufferTooSmall
-from .objects import Handle, Material, count
+from .objects import Handle, Material, Wall, count
 
 
 class Drum(Handle, Keyed):
@@ -39,6 +39,17 @@ class Drum(Handle, Keyed):
     fill_porosity = Param(DrumKey.FILL_POROSITY)
     sample_interval = Param(DrumKey.SAMPLE_INTERVAL, int)
     shell = Param(DrumKey.SHELL, int)
+    center_x = Param(DrumKey.CENTER_X)
+    center_y = Param(DrumKey.CENTER_Y)
+    center_z = Param(DrumKey.CENTER_Z)
+    velocity_x = Param(DrumKey.VELOCITY_X)
+    velocity_y = Param(DrumKey.VELOCITY_Y)
+    velocity_z = Param(DrumKey.VELOCITY_Z)
+    vibration_x = Param(DrumKey.VIBRATION_X)
+    vibration_y = Param(DrumKey.VIBRATION_Y)
+    vibration_z = Param(DrumKey.VIBRATION_Z)
+    vibration_frequency = Param(DrumKey.VIBRATION_FREQUENCY)
+    vibration_phase = Param(DrumKey.VIBRATION_PHASE)
     critical_speed = Param(DrumKey.CRITICAL_SPEED)
     current_speed = Param(DrumKey.CURRENT_SPEED)
     angle = Param(DrumKey.ANGLE)
@@ -61,6 +72,9 @@ class Drum(Handle, Keyed):
     force_x = Param(DrumKey.FORCE_X)
     force_y = Param(DrumKey.FORCE_Y)
     force_z = Param(DrumKey.FORCE_Z)
+    current_velocity_x = Param(DrumKey.CURRENT_VELOCITY_X)
+    current_velocity_y = Param(DrumKey.CURRENT_VELOCITY_Y)
+    current_velocity_z = Param(DrumKey.CURRENT_VELOCITY_Z)
 
     @property
     def force(self):
@@ -87,10 +101,25 @@ class Drum(Handle, Keyed):
         return Material(self.world, out.value)
 
     def attach_wall(self, wall, part):
-        """Makes ``wall`` (a mesh, polyline or plane of this world) a part
-        (:class:`DrumPart`) of the drum: it turns with the drum from where it
-        is now and counts in the drum's torque, power and charge shape."""
+        """Makes ``wall`` (a mesh, polyline, plane or finite wall of this
+        world) a part (:class:`DrumPart`) of the drum: it turns with the drum
+        from where it is now and counts in the drum's torque, power and
+        charge shape."""
         self.world._call("demill_drum_attach_wall", self.id, as_id(wall), int(DrumPart(part)))
+
+    def add_profile(self, material, part, points, closed=False, copies=1):
+        """Adds lifters or liners from their cross-section: ``points`` (n x
+        2, m) in the drum's frame at drum angle 0, joined in order (and back
+        to the first if ``closed``), repeated ``copies`` times evenly about
+        the axis; extruded over the drum's length in 3D. One mesh (3D) or
+        polyline (2D) :class:`Wall` of ``material``, attached as ``part``
+        (:class:`DrumPart`)."""
+        p = doubles(points, (-1, 2), "points")
+        out = ctypes.c_uint64()
+        self.world._call("demill_drum_add_profile", self.id, as_id(material),
+                         int(DrumPart(part)), p.shape[0], ptr(p), 1 if closed else 0,
+                         int(copies), ctypes.byref(out))
+        return Wall(self.world, out.value)
 
     def add_lifter(self, angle, height, width, face_angle=0.0):
         """Adds one lifter: centre line at polar angle ``angle`` (rad, drum

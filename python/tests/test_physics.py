@@ -264,6 +264,64 @@ class FiniteWalls(unittest.TestCase):
         w2.close()
 
 
+class DrumProfiles(unittest.TestCase):
+    def test_four_lifters_from_one_profile(self):
+        """One lifter's open profile (0.02 m high, 0.02 m wide at 6 o'clock
+        in a drum 0.3 m across) repeated 4 times: a ball of radius 0.005
+        pressed 1e-4 m onto each lifter's top (radius 0.13) feels k delta =
+        10 N (k = 1e5 N/m) towards the axis, and the drum feels the
+        reactions: no torque (they are radial), no net force (they
+        cancel)."""
+        w, m = linear_world(3)
+        w.pair(m, m, damping=demill.Damping.NONE, tangential=Tangential.NONE,
+               normal_stiffness=1e5)
+        drum = w.add_drum(m, diameter=0.3, length=0.1)
+        hw, rs, ri = 0.01, math.sqrt(0.15 ** 2 - 0.01 ** 2), 0.13
+        profile = [(t, -r) for r, t in [(rs, -hw), (ri, -hw), (ri, hw), (rs, hw)]]
+        wall = drum.add_profile(m, demill.DrumPart.LIFTERS, profile, copies=4)
+        self.assertEqual(wall.mesh_size, (4 * 4 * 2, 4 * 3 * 2))
+        r, delta = 0.005, 1e-4
+        for k in range(4):
+            a = 1.5 * math.pi + k * math.pi / 2
+            rho = ri - r + delta
+            (pid,) = w.particles.add(m, [(rho * math.cos(a), rho * math.sin(a), 0.01)], r)
+            w.step(0)
+            np.testing.assert_allclose(w.particle(pid).force,
+                                       (-10 * math.cos(a), -10 * math.sin(a), 0), atol=1e-9)
+        self.assertAlmostEqual(drum.torque, 0.0, delta=1e-12)
+        with self.assertRaisesRegex(demill.InvalidValue, "outside the shell"):
+            drum.add_profile(m, demill.DrumPart.LIFTERS, [(0, 0), (0.2, 0)])
+        with self.assertRaises(demill.NotFinite):
+            drum.add_profile(m, demill.DrumPart.LIFTERS, [(0, 0), (math.nan, 0)])
+        self.assertEqual(len(w.walls), 1)
+        w.close()
+
+    def test_a_lifted_drum_does_the_work(self):
+        """A drum raised at 0.5 m/s for 0.1 s with a ball of radius 0.01
+        (7800 kg/m3) resting on its shell, the ball given the drum's
+        velocity: the drum rises 0.05 m and does the work m g v t of lifting
+        the ball, and its power is m g v."""
+        w, m = linear_world(3, gravity=(0, -9.81, 0))
+        w.pair(m, m, normal_stiffness=1e5)
+        m.density = 7800
+        mat = m
+        drum = w.add_drum(mat, diameter=0.3)
+        r = 0.01
+        mass = 7800 * 4 / 3 * math.pi * r ** 3
+        (pid,) = w.particles.add(mat, [(0, -(0.15 - r + mass * 9.81 / 1e5), 0)], r)
+        w.step(5000)
+        drum.velocity_y = 0.5
+        w.particle(pid).velocity = (0, 0.5, 0)
+        e0 = drum.energy_in
+        w.step(10000)
+        self.assertAlmostEqual(drum.center_y, 0.05, delta=1e-12)
+        self.assertAlmostEqual(drum.current_velocity_y, 0.5, delta=1e-15)
+        work = mass * 9.81 * 0.5 * 0.1
+        self.assertAlmostEqual((drum.energy_in - e0) / work, 1.0, delta=1e-6)
+        self.assertAlmostEqual(drum.power / (mass * 9.81 * 0.5), 1.0, delta=1e-6)
+        w.close()
+
+
 class TimeStepGuide(unittest.TestCase):
     def test_linear_suggestion(self):
         """For a linear pair: contact time π/ω (undamped: e = 1 is not

@@ -266,6 +266,14 @@ START_TEST(ball_on_rough_floor)
     for (int f = 0; f < 3; f++)
         for (int q = 0; q < 25; q++)
             DM_OK(w, demill_particle_get(w, ids[q], fields[f], before[f] + 3 * q));
+    /* The fixed balls neither turn nor move, so the rotational energy is the
+     * ball's own 1/2 I ω², I = 2/5 m r², here of a spin of 10 rad/s (which
+     * nothing couples to its fall: the contacts have no friction). */
+    const double spin[3] = {0, 0, 10}, mb = dm_test_get(w, ids[25], DEMILL_PARTICLE_MASS, 0);
+    double rot;
+    DM_OK(w, demill_particle_set(w, ids[25], DEMILL_PARTICLE_ANGULAR_VELOCITY, spin));
+    DM_OK(w, demill_world_energy(w, DEMILL_ENERGY_KINETIC_ROTATIONAL, &rot));
+    DM_ASSERT_REL(rot, 0.5 * 0.4 * mb * r * r * 100, 1e-12);
     size_t contacts = 1;
     for (int k = 0; k < 50; k++) { /* 0.5 s */
         DM_OK(w, demill_world_step(w, 1000));

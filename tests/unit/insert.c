@@ -194,6 +194,49 @@ START_TEST(region_fill_fraction)
 }
 END_TEST
 
+/* Balls filled into a box 5 cm above a floor are placed at rest: a settle
+ * must let them fall and come to rest rather than stop at its first look (1
+ * ms in, when their kinetic energy, ½ m (g t)² = 1.0e-7 J each, is still below
+ * the threshold). At rest the floor carries their weight (static
+ * equilibrium) and the lowest ball lies on it. */
+START_TEST(settle_waits_for_the_fall)
+{
+    demill_id m, floor;
+    demill_world *w = steel_world(0, 0, &m, NULL);
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_DAMPING, DEMILL_DAMPING_RESTITUTION));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, 0.3));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_COULOMB));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_FRICTION, 0.5));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_ROLLING, DEMILL_ROLLING_CONSTANT_TORQUE));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_ROLLING_FRICTION, 0.1));
+    const double o[3] = {0, 0, 0}, up[3] = {0, 1, 0};
+    DM_OK(w, demill_wall_add_plane(w, m, o, up, &floor));
+    const double box[6] = {-0.02, 0.05, -0.02, 0.02, 0.1, 0.02}, sizes[2] = {0.008, 1.0};
+    size_t n;
+    DM_OK(w, demill_fill_region(w, DEMILL_REGION_BOX, box, 6, m, DEMILL_SIZES_CLASSES, sizes, 2,
+                                DEMILL_FILL_COUNT, 20, 4, NULL, 0, &n));
+    ck_assert_uint_eq(n, 20);
+    double dt, critical, contact;
+    DM_OK(w, demill_world_suggest_time_step(w, 1.0, 1, &dt, &critical, &contact));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+    int32_t settled = 0;
+    DM_OK(w, demill_world_settle(w, 5.0, 1e-6, &settled));
+    ck_assert(settled);
+    charge c = read_charge(w);
+    double weight = 0.0, low = INFINITY, f[3];
+    for (size_t i = 0; i < c.n; i++) {
+        weight += c.m[i] * 9.81;
+        low = fmin(low, c.x[3 * i + 1] - c.r[i]);
+    }
+    DM_OK(w, demill_wall_get(w, floor, DEMILL_WALL_FORCE, f));
+    ck_assert_msg(fabs(-f[1] - weight) <= 1e-3 * weight, "floor %g N, weight %g N", -f[1],
+                  weight);
+    ck_assert_msg(low < 1e-4, "the lowest ball is %g m above the floor", low);
+    free_charge(&c);
+    demill_world_destroy(w);
+}
+END_TEST
+
 /* A feed of 5 and 7 mm steel balls (half and half by mass) at 2 kg/s into a
  * box in empty space; outlets optional. */
 static const double feed_box[6] = {-0.05, 0.0, -0.05, 0.05, 0.05, 0.05};
@@ -408,6 +451,7 @@ int main(void)
     tcase_add_test(t, bond_charge_fits);
     tcase_add_test(t, two_sizes_half_and_half_fit);
     tcase_add_test(t, region_fill_fraction);
+    tcase_add_test(t, settle_waits_for_the_fall);
     tcase_add_test(t, feed_inserts_its_rate);
     tcase_add_test(t, outlet_conserves_particles);
     tcase_add_test(t, bad_input_changes_nothing);

@@ -4,11 +4,13 @@
  * must hold exactly the pairs an O(N²) loop finds within the interaction
  * distance r_i + r_j + skin, each once, in the bucket of its material pair's
  * kernel; the particle-wall lists exactly the particles within r + skin of
- * each wall. Contact histories must follow their pairs through the re-sort
+ * each wall (a finite wall's included, though its bounding sphere holds
+ * them all). Contact histories must follow their pairs through the re-sort
  * of particles by cell (the 3D spring vector changing sign when the pair's
  * order flips), and particle ids must keep naming the same particles.
  * Internal test: it links the static library and reads the lists directly.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -21,11 +23,12 @@ static double urand(void)
 }
 
 /* A world of n particles with radii in [rmin, 10 rmin], centres uniform in a
- * box of edge `edge`, two materials (with different kernels) and two walls. */
-static demill_world *random_world(int dim, int n, double edge, demill_id *ids)
+ * box of edge `edge`, two materials m (with different kernels) and two planes,
+ * and in 3D a cylinder about the box's z axis, as wide and long as it. */
+static demill_world *random_world(int dim, int n, double edge, demill_id *ids, demill_id *m)
 {
     demill_world *w;
-    demill_id m[2], wall;
+    demill_id wall;
     ck_assert_int_eq(demill_world_create(dim, &w), DEMILL_OK);
     for (int k = 0; k < 2; k++)
         DM_OK(w, demill_material_create(w, &m[k]));
@@ -39,6 +42,11 @@ static demill_world *random_world(int dim, int n, double edge, demill_id *ids)
     double p0[3] = {0, 0, 0}, n0[3] = {0, 1, 0}, p1[3] = {0, 0, 0}, n1[3] = {1, -1, 0};
     DM_OK(w, demill_wall_add_plane(w, m[0], p0, n0, &wall));
     DM_OK(w, demill_wall_add_plane(w, m[1], p1, n1, &wall));
+    if (dim == 3) { /* a finite wall about the particles, as a silo's is */
+        const double base[3] = {edge / 2, edge / 2, 0}, z[3] = {0, 0, 1};
+        DM_OK(w, demill_wall_add_cylinder(w, m[1], base, z, edge / 2, edge, DEMILL_CAPS_NONE,
+                                          &wall));
+    }
     const double rmin = 0.001;
     for (int i = 0; i < n; i++) {
         double x[3] = {0, 0, 0}, r = rmin * (1 + 9 * urand() * urand());
@@ -133,9 +141,9 @@ START_TEST(grid_matches_all_pairs)
     for (int dim = 2; dim <= 3; dim++)
         for (int trial = 0; trial < 3; trial++) {
             const int n = 600;
-            demill_id ids[600];
+            demill_id ids[600], mats[2];
             /* dense enough that many pairs are near, at several skins */
-            demill_world *w = random_world(dim, n, dim == 3 ? 0.04 : 0.15, ids);
+            demill_world *w = random_world(dim, n, dim == 3 ? 0.04 : 0.15, ids, mats);
             DM_OK(w, demill_world_set(w, DEMILL_WORLD_SKIN, 0.05 + 0.5 * trial));
             DM_OK(w, dm_resolve_pairs(w, true));
             DM_OK(w, dm_nlist_build(w));
@@ -157,6 +165,134 @@ START_TEST(grid_matches_all_pairs)
 }
 END_TEST
 
+/* The distance from x to the segment a-b (3 components). */
+static double segment_distance(const double *x, const double *a, const double *b)
+{
+    double ab[3], ax[3], l2 = 0.0, t = 0.0, d2 = 0.0;
+    for (int c = 0; c < 3; c++) {
+        ab[c] = b[c] - a[c];
+        ax[c] = x[c] - a[c];
+        l2 += ab[c] * ab[c];
+        t += ab[c] * ax[c];
+    }
+    t = t <= 0.0 ? 0.0 : t >= l2 ? 1.0 : t / l2;
+    for (int c = 0; c < 3; c++)
+        d2 += (ax[c] - t * ab[c]) * (ax[c] - t * ab[c]);
+    return sqrt(d2);
+}
+
+/* The distance from x to the triangle a, b, c: to its plane when x projects
+ * inside it, else to the nearest of its edges. */
+static double triangle_distance(const double *x, const double *a, const double *b,
+                                const double *c)
+{
+    const double *v[3] = {a, b, c};
+    double u[3], w[3], n[3], nn = 0.0, h = 0.0;
+    for (int k = 0; k < 3; k++) {
+        u[k] = b[k] - a[k];
+        w[k] = c[k] - a[k];
+    }
+    for (int k = 0; k < 3; k++) {
+        n[k] = u[(k + 1) % 3] * w[(k + 2) % 3] - u[(k + 2) % 3] * w[(k + 1) % 3];
+        nn += n[k] * n[k];
+    }
+    for (int k = 0; k < 3; k++)
+        h += n[k] * (x[k] - a[k]) / sqrt(nn);
+    int inside = 1;
+    for (int e = 0; e < 3; e++) { /* x on the inner side of each edge's plane through n */
+        const double *p = v[e], *q = v[(e + 1) % 3];
+        double s = 0.0;
+        for (int k = 0; k < 3; k++) {
+            const double ek = q[(k + 1) % 3] - p[(k + 1) % 3], el = q[(k + 2) % 3] - p[(k + 2) % 3];
+            s += (ek * n[(k + 2) % 3] - el * n[(k + 1) % 3]) * (x[k] - p[k]);
+        }
+        inside &= s <= 0.0;
+    }
+    if (inside)
+        return fabs(h);
+    return fmin(segment_distance(x, a, b),
+                fmin(segment_distance(x, b, c), segment_distance(x, c, a)));
+}
+
+/* A mesh wall's candidates are exactly the (particle, element) pairs within
+ * r + skin, by brute force over every element: in 3D a rough height field of
+ * 2 x 20 x 20 triangles across a box of random particles, most of them far
+ * from it, in 2D a zigzag polyline. */
+START_TEST(mesh_candidates_match_all_elements)
+{
+    srand(7);
+    for (int dim = 2; dim <= 3; dim++) {
+        const int n = 600, g = 21;
+        demill_id ids[600], wall, mats[2];
+        demill_world *w = random_world(dim, n, dim == 3 ? 0.04 : 0.15, ids, mats);
+        const double edge = dim == 3 ? 0.04 : 0.15;
+        double *v = malloc(3 * g * g * sizeof *v);
+        uint32_t *tri = malloc(6 * (g - 1) * (g - 1) * sizeof *tri);
+        size_t nv = 0, nt = 0;
+        if (dim == 3) {
+            for (int a = 0; a < g; a++)
+                for (int b = 0; b < g; b++, nv++) {
+                    v[3 * nv] = edge * a / (g - 1);
+                    v[3 * nv + 1] = 0.5 * edge + 0.004 * (urand() - 0.5);
+                    v[3 * nv + 2] = edge * b / (g - 1);
+                }
+            for (int a = 0; a + 1 < g; a++)
+                for (int b = 0; b + 1 < g; b++) {
+                    const uint32_t q = (uint32_t)(a * g + b);
+                    const uint32_t t6[6] = {q, q + 1, q + g, q + 1, q + g + 1, q + g};
+                    memcpy(tri + 3 * nt, t6, sizeof t6);
+                    nt += 2;
+                }
+            DM_OK(w, demill_wall_add_mesh(w, mats[1], nv, v, nt, tri, &wall));
+        } else {
+            for (int a = 0; a < g; a++, nv++) {
+                v[3 * nv] = edge * a / (g - 1);
+                v[3 * nv + 1] = 0.5 * edge + 0.01 * (a % 2) + 0.002 * urand();
+                v[3 * nv + 2] = 0.0;
+            }
+            nt = nv - 1;
+            DM_OK(w, demill_wall_add_polyline(w, mats[1], nv, v, 0, &wall));
+        }
+        DM_OK(w, demill_world_set(w, DEMILL_WORLD_SKIN, 0.5));
+        DM_OK(w, dm_resolve_pairs(w, true));
+        DM_OK(w, dm_nlist_build(w));
+        const dm_particles *P = &w->p;
+        const uint32_t slot = w->nwalls - 1;
+        size_t want = 0, got = 0;
+        char *listed = calloc((size_t)P->n * nt, 1);
+        for (int k = 0; k < DM_KERNELS; k++)
+            for (uint32_t p = 0; p < w->pw.b[k].n; p++)
+                if (w->pw.b[k].j[p] == slot) {
+                    got++;
+                    listed[w->pw.b[k].i[p] * nt + w->pw.b[k].t[p]] = 1;
+                }
+        for (uint32_t i = 0; i < P->n; i++) {
+            double x[3] = {P->x[dim * i], P->x[dim * i + 1], dim == 3 ? P->x[dim * i + 2] : 0.0};
+            for (size_t t = 0; t < nt; t++) {
+                const double d =
+                    dim == 3 ? triangle_distance(x, v + 3 * tri[3 * t], v + 3 * tri[3 * t + 1],
+                                                 v + 3 * tri[3 * t + 2])
+                             : segment_distance(x, v + 3 * t, v + 3 * (t + 1));
+                const int close = d < P->r[i] + w->skin;
+                const int found = listed[i * nt + t];
+                ck_assert_msg(found == close,
+                              "%dD: particle %u and element %zu at %g (reach %g): listed %d",
+                              dim, i, t, d, P->r[i] + w->skin, found);
+                want += close;
+            }
+        }
+        ck_assert_msg(want > 20 && want < (size_t)n * nt / 20,
+                      "%dD: %zu candidates: the test must have near and far particles", dim,
+                      want);
+        ck_assert_uint_eq(got, want);
+        free(listed);
+        free(v);
+        free(tri);
+        demill_world_destroy(w);
+    }
+}
+END_TEST
+
 /* Marks every listed contact's history with a value derived from the pair's
  * handles (and the contact on), rebuilds after a shuffle of the storage
  * order, and checks that each value followed its pair. */
@@ -164,8 +300,8 @@ START_TEST(history_follows_pairs)
 {
     srand(7);
     for (int dim = 2; dim <= 3; dim++) {
-        demill_id ids[400];
-        demill_world *w = random_world(dim, 400, dim == 3 ? 0.03 : 0.1, ids);
+        demill_id ids[400], mats[2];
+        demill_world *w = random_world(dim, 400, dim == 3 ? 0.03 : 0.1, ids, mats);
         DM_OK(w, dm_resolve_pairs(w, true));
         DM_OK(w, dm_nlist_build(w));
         const dm_particles *P = &w->p;
@@ -239,6 +375,7 @@ int main(void)
     TCase *tc = tcase_create("grid");
     tcase_add_test(tc, grid_matches_all_pairs);
     tcase_add_test(tc, history_follows_pairs);
+    tcase_add_test(tc, mesh_candidates_match_all_elements);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }

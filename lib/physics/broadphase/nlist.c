@@ -316,7 +316,14 @@ static void search_range(demill_world *w, void *arg, int t, uint32_t begin, uint
                     dm_mesh_near(wall, P->x + D * i, D, P->r[i] + skin, push_element, &na);
                 continue;
             }
-            if (!wall->kind || dm_wall_distance_bound(wall, P->x + D * i, D) >= P->r[i] + skin)
+            const double *x = P->x + D * i, reach = P->r[i] + skin;
+            if (!wall->kind || dm_wall_distance_bound(wall, x, D) >= reach)
+                continue;
+            /* a finite wall's bounding sphere holds every particle it
+             * surrounds (in a silo, a can): of those, only the ones near its
+             * surface */
+            if ((wall->kind == DM_WALL_REVOLVED || wall->kind == DM_WALL_RECT) &&
+                dm_wall_distance(wall, x, D) >= reach)
                 continue;
             const int kern = tab[P->mat[i] * nm + wall->material].kernel;
             if (kern >= 0)

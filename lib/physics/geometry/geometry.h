@@ -21,10 +21,11 @@ void dm_wall_rebase(dm_wall *wall, double now, double t0);
 /* Moves every wall to `time`; the drum's walls to the drum's current angle
  * and speed (moved first: dm_drum_advance). */
 void dm_walls_advance(demill_world *w, double time);
-/* Makes a free wall part `part` (DM_PART_*) of the drum at angle theta and
- * speed omega: its geometry at `now` mapped into the drum's frame, so that
- * it does not move, and from then on turning with the drum. */
-void dm_wall_attach(dm_wall *wall, int part, double now, double theta, double omega);
+/* Makes a free wall part `part` (DM_PART_*) of the drum (at its current
+ * angle, speed, centre and velocity): its geometry at `now` mapped into the
+ * drum's frame, so that it does not move, and from then on turning and
+ * moving with the drum. */
+void dm_wall_attach(dm_wall *wall, int part, double now, const dm_drum *drum);
 /* Moves the world's clock to `time` without moving the walls. */
 void dm_walls_retime(demill_world *w, double time);
 /* A body's wall (wall->body): its pose and velocity from the body's. */
@@ -92,13 +93,15 @@ void dm_mesh_vertex_at(const dm_wall *wall, uint32_t k, double *out);
 double dm_mesh_reach(const dm_wall *wall);
 /* Before a mesh wall's current pose becomes its reference (dm_wall_rebase). */
 void dm_mesh_rebase(dm_wall *wall);
-/* A mesh wall's current geometry placed by its frame in the frame of a drum
- * at angle theta (the wall's pose then being the drum's: c0 = 0). */
-void dm_mesh_into_drum(dm_wall *wall, double theta);
-/* The smallest (far = 0) or largest (far = 1) distance of a mesh wall's
- * vertices from the z axis. */
+/* A mesh wall at rest in its reference (rebased: dm_wall_rebase) placed by
+ * its frame in the frame of a drum at angle theta about its centre (the
+ * wall's pose then being the drum's: c0 = 0). */
+void dm_mesh_into_drum(dm_wall *wall, double theta, const double centre[3]);
+/* The smallest (far = 0) or largest (far = 1) distance of a mesh wall
+ * attached to the drum (its frame the drum's) from the drum's axis. */
 double dm_mesh_axis_distance(const dm_wall *wall, int far);
-/* The widest angle about the z axis one element of a mesh wall spans. */
+/* The widest angle about the drum's axis one element of a mesh wall
+ * attached to the drum spans. */
 double dm_mesh_widest_angle(const dm_wall *wall);
 /* Whether the world has a mesh wall. */
 int dm_walls_have_mesh(const demill_world *w);

@@ -23,6 +23,8 @@ enum { REGION_FACE = 0, REGION_VERTEX = 1, REGION_EDGE = 4 };
 
 #define BVH_LEAF 4     /* elements per leaf, at most */
 #define BVH_STACK 128  /* deeper than a median-split tree of 2^32 elements */
+#define FAR_CUBES 32768 /* cubes of the distance-bound grid, about */
+#define FAR_FIELDS 11   /* the arrays in a mesh's block (fields()) */
 
 static double dot3(const double *a, const double *b)
 {
@@ -211,10 +213,10 @@ static void **fields(dm_trimesh *m, size_t *size, int k)
     void **const f[] = {(void **)&m->v,          (void **)&m->el,         (void **)&m->nrm,
                         (void **)&m->el_edge,    (void **)&m->edge_start, (void **)&m->edge_el,
                         (void **)&m->vert_start, (void **)&m->vert_el,    (void **)&m->node,
-                        (void **)&m->order};
+                        (void **)&m->order,      (void **)&m->far};
     const size_t s[] = {sizeof(double),   sizeof(uint32_t), sizeof(double),   sizeof(uint32_t),
                         sizeof(uint32_t), sizeof(uint32_t), sizeof(uint32_t), sizeof(uint32_t),
-                        sizeof(dm_bvh_node), sizeof(uint32_t)};
+                        sizeof(dm_bvh_node), sizeof(uint32_t), sizeof(float)};
     *size = s[k];
     return f[k];
 }
@@ -360,15 +362,83 @@ static void build_edges(dm_trimesh *m, edge_key *key)
     m->edge_start[m->ne] = (uint32_t)n3;
 }
 
+static double trimesh_nearest(const dm_trimesh *m, const double *x, double *n);
+
+/* The distance-bound grid over the box lo .. hi of the vertices, widened by a
+ * twentieth of its largest side (a flat mesh's box has no thickness): about
+ * FAR_CUBES cubes, one layer across the plane of a polyline. Returns the
+ * number of cubes. */
+static size_t far_grid(dm_trimesh *g, int nel, const double *lo, const double *hi)
+{
+    const int axes = nel == 3 ? 3 : 2;
+    double side[3], span = 0.0;
+    for (int c = 0; c < 3; c++)
+        span = fmax(span, hi[c] - lo[c]);
+    double volume = 1.0;
+    for (int c = 0; c < axes; c++) {
+        side[c] = hi[c] - lo[c] + 0.1 * span;
+        volume *= side[c];
+    }
+    g->far_h = pow(volume / FAR_CUBES, 1.0 / axes);
+    size_t cubes = 1;
+    for (int c = 0; c < 3; c++) {
+        const double wide = c < axes ? side[c] : 0.0;
+        g->far_n[c] = c < axes ? (uint32_t)fmax(1.0, ceil(wide / g->far_h)) : 1;
+        g->far_lo[c] = 0.5 * (lo[c] + hi[c]) - 0.5 * g->far_n[c] * g->far_h;
+        cubes *= g->far_n[c];
+    }
+    return cubes;
+}
+
+/* Each cube's bound: the distance from its centre to the mesh less its half
+ * diagonal (triangle inequality), rounded down to a float. */
+static void far_fill(dm_trimesh *m)
+{
+    const double h = m->far_h, half = 0.5 * sqrt(3.0) * h;
+    size_t q = 0;
+    for (uint32_t z = 0; z < m->far_n[2]; z++)
+        for (uint32_t y = 0; y < m->far_n[1]; y++)
+            for (uint32_t x = 0; x < m->far_n[0]; x++, q++) {
+                const double c[3] = {m->far_lo[0] + (x + 0.5) * h, m->far_lo[1] + (y + 0.5) * h,
+                                     m->far_lo[2] + (z + 0.5) * h};
+                double n[3];
+                const double bound = fmax(0.0, trimesh_nearest(m, c, n) - half);
+                float f = (float)bound;
+                m->far[q] = (double)f > bound ? nextafterf(f, 0.0f) : f;
+            }
+}
+
+/* Whether the grid shows x (in the mesh's frame) farther than reach from
+ * every element. */
+static int far_from_mesh(const dm_trimesh *m, const double *x, double reach)
+{
+    size_t q = 0;
+    for (int c = 2; c >= 0; c--) {
+        const double u = (x[c] - m->far_lo[c]) / m->far_h;
+        if (!(u >= 0.0 && u < m->far_n[c]))
+            return 0;
+        q = q * m->far_n[c] + (size_t)u;
+    }
+    return m->far[q] >= reach;
+}
+
 dm_trimesh *dm_trimesh_build(int nel, uint32_t nv, const double *v, uint32_t nt,
                              const uint32_t *el)
 {
     const size_t n3 = (size_t)nel * nt, tri = nel == 3 ? 3 * (size_t)nt : 0;
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (uint32_t k = 0; k < nv; k++)
+        for (int c = 0; c < 3; c++) {
+            lo[c] = fmin(lo[c], v[3 * (size_t)k + c]);
+            hi[c] = fmax(hi[c], v[3 * (size_t)k + c]);
+        }
+    dm_trimesh grid;
+    const size_t cubes = far_grid(&grid, nel, lo, hi);
     const size_t count[] = {3 * (size_t)nv, n3,  3 * (size_t)nt,      tri,
                             tri + 1,        tri, (size_t)nv + 1,      n3,
-                            2 * (size_t)nt, nt};
+                            2 * (size_t)nt, nt,  cubes};
     size_t bytes = round8(sizeof(dm_trimesh)), size;
-    for (int k = 0; k < 10; k++) {
+    for (int k = 0; k < FAR_FIELDS; k++) {
         dm_trimesh probe;
         fields(&probe, &size, k);
         bytes += round8(count[k] * size);
@@ -382,7 +452,7 @@ dm_trimesh *dm_trimesh_build(int nel, uint32_t nv, const double *v, uint32_t nt,
     }
     m->bytes = bytes;
     char *at = (char *)m + round8(sizeof *m);
-    for (int k = 0; k < 10; k++) {
+    for (int k = 0; k < FAR_FIELDS; k++) {
         void **f = fields(m, &size, k);
         *f = at;
         at += round8(count[k] * size);
@@ -409,12 +479,10 @@ dm_trimesh *dm_trimesh_build(int nel, uint32_t nv, const double *v, uint32_t nt,
         m->vert_start[k] = m->vert_start[k - 1];
     m->vert_start[0] = 0;
     bvh_build(m);
-    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    for (uint32_t k = 0; k < nv; k++)
-        for (int c = 0; c < 3; c++) {
-            lo[c] = fmin(lo[c], v[3 * (size_t)k + c]);
-            hi[c] = fmax(hi[c], v[3 * (size_t)k + c]);
-        }
+    memcpy(m->far_n, grid.far_n, sizeof grid.far_n);
+    memcpy(m->far_lo, grid.far_lo, sizeof grid.far_lo);
+    m->far_h = grid.far_h;
+    far_fill(m);
     double r2 = 0.0;
     for (int c = 0; c < 3; c++) {
         m->bs_centre[c] = 0.5 * (lo[c] + hi[c]);
@@ -432,7 +500,7 @@ dm_trimesh *dm_trimesh_copy(const dm_trimesh *src)
         return NULL;
     memcpy(m, src, src->bytes);
     size_t size;
-    for (int k = 0; k < 10; k++) {
+    for (int k = 0; k < FAR_FIELDS; k++) {
         void **f = fields(m, &size, k);
         *f = (char *)m + ((const char *)*f - (const char *)src);
     }
@@ -472,6 +540,8 @@ static double box_dist2(const dm_bvh_node *nd, const double *x)
 void dm_trimesh_near(const dm_trimesh *m, const double *x, double reach, dm_near_fn fn,
                      void *ctx)
 {
+    if (far_from_mesh(m, x, reach))
+        return;
     uint32_t stack[BVH_STACK];
     int top = 0;
     stack[top++] = 0;
@@ -615,30 +685,40 @@ void dm_mesh_rebase(dm_wall *wall)
     memcpy(m->frame_off, b, sizeof b);
 }
 
-void dm_mesh_into_drum(dm_wall *wall, double theta)
+void dm_mesh_into_drum(dm_wall *wall, double theta, const double centre[3])
 {
-    dm_mesh_rebase(wall); /* now X = B V + b in the world */
-    dm_trimesh *m = wall->mesh;
+    dm_trimesh *m = wall->mesh; /* X = B V + b in the world */
     const double c = cos(theta), s = sin(theta);
-    double B[9], b[3];
+    double B[9], b[3], o[3];
     for (int col = 0; col < 3; col++) { /* B := R(theta)^T B */
         const double *F = m->frame_rot;
         B[col] = c * F[col] + s * F[3 + col];
         B[3 + col] = -s * F[col] + c * F[3 + col];
         B[6 + col] = F[6 + col];
     }
-    b[0] = c * m->frame_off[0] + s * m->frame_off[1];
-    b[1] = -s * m->frame_off[0] + c * m->frame_off[1];
-    b[2] = m->frame_off[2];
+    for (int k = 0; k < 3; k++) /* b := R(theta)^T (b - centre) */
+        o[k] = m->frame_off[k] - centre[k];
+    b[0] = c * o[0] + s * o[1];
+    b[1] = -s * o[0] + c * o[1];
+    b[2] = o[2];
     memcpy(m->frame_rot, B, sizeof B);
     memcpy(m->frame_off, b, sizeof b);
+}
+
+/* Vertex k of a mesh attached to the drum in the drum's frame: B V + b. */
+static void drum_frame_vertex(const dm_wall *wall, uint32_t k, double *out)
+{
+    const dm_trimesh *m = wall->mesh;
+    const double *B = m->frame_rot, *v = vert(m, k);
+    for (int r = 0; r < 3; r++)
+        out[r] = B[3 * r] * v[0] + B[3 * r + 1] * v[1] + B[3 * r + 2] * v[2] + m->frame_off[r];
 }
 
 double dm_mesh_axis_distance(const dm_wall *wall, int far)
 {
     double best = far ? 0.0 : HUGE_VAL, x[3];
     for (uint32_t k = 0; k < wall->mesh->nv; k++) {
-        dm_mesh_vertex_at(wall, k, x);
+        drum_frame_vertex(wall, k, x);
         const double r = hypot(x[0], x[1]);
         best = far ? fmax(best, r) : fmin(best, r);
     }
@@ -652,7 +732,7 @@ double dm_mesh_widest_angle(const dm_wall *wall)
     for (uint32_t t = 0; t < m->nt; t++) {
         double phi[3], x[3];
         for (int k = 0; k < m->nel; k++) {
-            dm_mesh_vertex_at(wall, m->el[(size_t)m->nel * t + k], x);
+            drum_frame_vertex(wall, m->el[(size_t)m->nel * t + k], x);
             phi[k] = atan2(x[1], x[0]);
         }
         for (int a = 0; a < m->nel; a++)
@@ -740,7 +820,7 @@ void dm_wgeom_meshes(demill_world *w, uint32_t begin, uint32_t end, int carry)
                 if (wall->kind != DM_WALL_MESH)
                     continue;
                 const dm_trimesh *m = wall->mesh;
-                double d, nm[3], n[3];
+                double d, nm[3];
                 /* an element no nearer than its plane's distance: most candidates, within
                  * the skin but not touching, end here, before the contact rule */
                 const double *nt = m->nrm + 3 * (size_t)b->t[p];
@@ -753,9 +833,15 @@ void dm_wgeom_meshes(demill_world *w, uint32_t begin, uint32_t end, int carry)
                 } else {
                     valid = element_contact(m, b->t[p], V, &d, nm);
                 }
+                const double delta = r - d, stored = valid || delta <= 0.0 ? delta : 0.0;
+                if (!(stored > 0.0) && !b->on[p]) {
+                    /* apart, and apart before: the forces read only its overlap */
+                    w->wg.delta[g0 + p] = stored;
+                    continue;
+                }
+                double n[3];
                 to_world(wall, nm, n);
-                const double delta = r - d;
-                dm_wgeom_store(w, g0 + p, i, wall, valid || delta <= 0.0 ? delta : 0.0, n);
+                dm_wgeom_store(w, g0 + p, i, wall, stored, n);
             }
             if (carry && wall->kind == DM_WALL_MESH && p - p0 > 1)
                 carry_group(w, b, g0, p0, p);

@@ -171,18 +171,23 @@ void dm_wall_detach_body(demill_world *w, dm_wall *wall)
     dm_wall_at(wall, w->time);
 }
 
-/* A drum wall at drum angle theta, turning at omega about the z axis. */
-static void wall_at_drum(dm_wall *wall, double theta, double omega)
+/* A drum wall at drum angle theta, turning at omega about the drum's axis
+ * (along z through its centre `centre`, which moves at `vel`). A prism's
+ * section (cpoly, cedge, bc) is kept about the centre. */
+static void wall_at_drum(dm_wall *wall, double theta, double omega, const double centre[3],
+                         const double vel[3])
 {
     const double c = cos(theta), s = sin(theta);
     const double R[9] = {c, -s, 0, s, c, 0, 0, 0, 1};
     memcpy(wall->rot, R, sizeof R);
-    memset(wall->c, 0, sizeof wall->c);
-    memset(wall->vel, 0, sizeof wall->vel);
+    memcpy(wall->c, centre, sizeof wall->c);
+    memcpy(wall->vel, vel, sizeof wall->vel);
     wall->omega[0] = wall->omega[1] = 0.0;
     wall->omega[2] = omega;
     mat_vec(R, wall->p0, wall->p);
     mat_vec(R, wall->n0, wall->n);
+    for (int k = 0; k < 3; k++)
+        wall->p[k] += centre[k];
     const int n = wall->npoly;
     for (int k = 0; k < n; k++) {
         const double x = wall->poly[2 * k], y = wall->poly[2 * k + 1];
@@ -203,21 +208,28 @@ static void wall_at_drum(dm_wall *wall, double theta, double omega)
     wall->bc[1] = s * wall->bc0[0] + c * wall->bc0[1];
 }
 
-void dm_wall_attach(dm_wall *wall, int part, double now, double theta, double omega)
+void dm_wall_attach(dm_wall *wall, int part, double now, const dm_drum *drum)
 {
-    dm_wall_at(wall, now);
+    dm_wall_rebase(wall, now, now); /* the reference is the wall where it is now */
+    const double *centre = drum->centre;
     if (wall->mesh) {
-        dm_mesh_into_drum(wall, theta);
+        dm_mesh_into_drum(wall, drum->theta, centre);
         wall->reach = dm_mesh_axis_distance(wall, 1);
     }
-    const double c = cos(theta), s = sin(theta);
+    const double c = cos(drum->theta), s = sin(drum->theta);
     const double Rt[9] = {c, s, 0, -s, c, 0, 0, 0, 1}; /* back by the drum's angle */
-    mat_vec(Rt, wall->p, wall->p0);
-    mat_vec(Rt, wall->n, wall->n0);
+    for (int k = 0; k < 3; k++) /* the point about the drum's centre */
+        wall->p0[k] -= centre[k];
+    double *const world[4] = {wall->p0, wall->n0, wall->e0, wall->surf0};
+    for (int q = 0; q < 4; q++) {
+        double v[3];
+        mat_vec(Rt, world[q], v);
+        memcpy(world[q], v, sizeof v);
+    }
     memset(wall->c0, 0, sizeof wall->c0);
     wall->drum_part = part;
     wall->lifter = -1;
-    wall_at_drum(wall, theta, omega);
+    wall_at_drum(wall, drum->theta, drum->omega, centre, drum->vcentre);
     memcpy(wall->c_build, wall->c, sizeof wall->c);
     memcpy(wall->rot_build, wall->rot, sizeof wall->rot);
 }
@@ -227,13 +239,13 @@ void dm_wall_attach(dm_wall *wall, int part, double now, double theta, double om
  * to their bodies' positions. */
 void dm_walls_advance(demill_world *w, double time)
 {
-    const double theta = w->drum.theta, omega = w->drum.omega;
+    const dm_drum *d = &w->drum;
     for (uint32_t k = 0; k < w->nwalls; k++) {
         dm_wall *wall = &w->walls[k];
         if (!wall->kind)
             continue;
         if (wall->drum_part)
-            wall_at_drum(wall, theta, omega);
+            wall_at_drum(wall, d->theta, d->omega, d->centre, d->vcentre);
         else if (wall->body)
             dm_wall_at_body(w, wall);
         else
@@ -371,20 +383,22 @@ double dm_wall_closest(const dm_wall *wall, const double *x, int dim, double *no
     normal[0] = normal[1] = normal[2] = 0.0;
     switch (wall->kind) {
     case DM_WALL_MESH: return dm_mesh_closest(wall, x, dim, normal);
-    case DM_WALL_SHELL: {
-        const double r = sqrt(x[0] * x[0] + x[1] * x[1]);
+    case DM_WALL_SHELL: { /* about the drum's axis, through its centre c */
+        const double rx = x[0] - wall->c[0], ry = x[1] - wall->c[1], r = sqrt(rx * rx + ry * ry);
         if (r > 0.0) {
-            normal[0] = x[0] / r;
-            normal[1] = x[1] / r;
+            normal[0] = rx / r;
+            normal[1] = ry / r;
         } else {
             normal[0] = 1.0;
         }
         return wall->radius - r;
     }
     case DM_WALL_PRISM: {
-        /* convex polygon, counter-clockwise: outside if beyond some edge */
+        /* convex polygon, counter-clockwise, about the drum's centre c:
+         * outside if beyond some edge */
         const int n = wall->npoly;
-        const double *v = wall->cpoly;
+        const double *v = wall->cpoly, xc[2] = {x[0] - wall->c[0], x[1] - wall->c[1]};
+        x = xc;
         double best_sep = -HUGE_VAL, best_n[2] = {0.0, 0.0}, best_d2 = HUGE_VAL;
         double best_c[2] = {0.0, 0.0};
         for (int k = 0; k < n; k++) {
@@ -460,7 +474,7 @@ double dm_wall_distance_bound(const dm_wall *wall, const double *x, int dim)
     }
     if (wall->kind != DM_WALL_PRISM)
         return dm_wall_distance(wall, x, dim);
-    const double dx = x[0] - wall->bc[0], dy = x[1] - wall->bc[1];
+    const double dx = x[0] - wall->c[0] - wall->bc[0], dy = x[1] - wall->c[1] - wall->bc[1];
     return sqrt(dx * dx + dy * dy) - wall->brad;
 }
 

@@ -126,12 +126,12 @@ static void plane_patch(dm_mesh *m, const dm_wall *wall, int dim, const double c
 
 /* Points of the drum's circle of radius R at height z, turned with the drum;
  * returns the first. */
-static size_t ring(dm_mesh *m, double R, double theta, double z)
+static size_t ring(dm_mesh *m, const dm_drum *d, double R, double z)
 {
     const size_t first = m->npt;
     for (int k = 0; k < SHELL_SEGMENTS; k++) {
-        const double a = theta + 2.0 * DM_PI * k / SHELL_SEGMENTS;
-        point(m, R * cos(a), R * sin(a), z);
+        const double a = d->theta + 2.0 * DM_PI * k / SHELL_SEGMENTS;
+        point(m, d->centre[0] + R * cos(a), d->centre[1] + R * sin(a), z);
     }
     return first;
 }
@@ -139,17 +139,17 @@ static size_t ring(dm_mesh *m, double R, double theta, double z)
 /* The shell: 3D quadrilaterals facing the axis; 2D a closed line. */
 static void shell(dm_mesh *m, const demill_world *w)
 {
-    const double R = 0.5 * w->drum.diameter, th = w->drum.theta;
+    const double R = 0.5 * w->drum.diameter;
     size_t v[SHELL_SEGMENTS + 1];
     if (w->dim == 2) {
-        const size_t r0 = ring(m, R, th, 0.0);
+        const size_t r0 = ring(m, &w->drum, R, 0.0);
         for (int k = 0; k <= SHELL_SEGMENTS; k++)
             v[k] = r0 + (size_t)(k % SHELL_SEGMENTS);
         cell(m, 0, v, SHELL_SEGMENTS + 1);
         return;
     }
-    const double L = 0.5 * w->drum.length;
-    const size_t r0 = ring(m, R, th, -L), r1 = ring(m, R, th, L);
+    const double L = 0.5 * w->drum.length, zc = w->drum.centre[2];
+    const size_t r0 = ring(m, &w->drum, R, zc - L), r1 = ring(m, &w->drum, R, zc + L);
     for (int k = 0; k < SHELL_SEGMENTS; k++) {
         const size_t k1 = (size_t)((k + 1) % SHELL_SEGMENTS);
         const size_t q[4] = {r0 + (size_t)k, r1 + (size_t)k, r1 + k1, r0 + k1};
@@ -160,7 +160,7 @@ static void shell(dm_mesh *m, const demill_world *w)
 /* An end cap: the disc of the shell, counter-clockwise about its normal. */
 static void end_cap(dm_mesh *m, const demill_world *w, const dm_wall *cap)
 {
-    const size_t r0 = ring(m, 0.5 * w->drum.diameter, w->drum.theta, cap->p[2]);
+    const size_t r0 = ring(m, &w->drum, 0.5 * w->drum.diameter, cap->p[2]);
     size_t v[SHELL_SEGMENTS];
     for (int k = 0; k < SHELL_SEGMENTS; k++)
         v[k] = r0 + (size_t)(cap->n[2] > 0.0 ? k : SHELL_SEGMENTS - 1 - k);
@@ -241,18 +241,19 @@ static void lifter(dm_mesh *m, const demill_world *w, const dm_wall *wall)
     size_t v[CLIP_MAX];
     if (!n)
         return;
+    const double *c = wall->c; /* the section is about the drum's centre */
     if (w->dim == 2) {
         for (int k = 0; k < n; k++)
-            v[k] = point(m, sec[2 * k], sec[2 * k + 1], 0.0);
+            v[k] = point(m, c[0] + sec[2 * k], c[1] + sec[2 * k + 1], 0.0);
         cell(m, 1, v, (size_t)n);
         return;
     }
     const double L = 0.5 * w->drum.length;
     const size_t b0 = m->npt;
     for (int k = 0; k < n; k++)
-        point(m, sec[2 * k], sec[2 * k + 1], -L);
+        point(m, c[0] + sec[2 * k], c[1] + sec[2 * k + 1], c[2] - L);
     for (int k = 0; k < n; k++)
-        point(m, sec[2 * k], sec[2 * k + 1], L);
+        point(m, c[0] + sec[2 * k], c[1] + sec[2 * k + 1], c[2] + L);
     for (int k = 0; k < n; k++) { /* sides, facing out of the lifter */
         const size_t k1 = (size_t)((k + 1) % n);
         const size_t q[4] = {b0 + (size_t)k, b0 + k1, b0 + (size_t)n + k1, b0 + (size_t)(n + k)};

@@ -61,14 +61,53 @@ double dm_drum_target_speed(const demill_world *w)
     }
 }
 
-/* Moves the drum to `time` (its angle and speed), then every wall: the
- * drum's walls turn with it. */
+/* The drum's centre at `time` and its velocity: a steady motion and a
+ * harmonic one from t_move on. */
+static void centre_at(const dm_drum *d, double time, double c[3], double v[3])
+{
+    const double tau = time - d->t_move, om = 2.0 * DM_PI * d->vib_freq;
+    const double s = sin(om * tau + d->vib_phase), ds = om * cos(om * tau + d->vib_phase);
+    for (int k = 0; k < 3; k++) {
+        c[k] = d->centre_set[k] + d->velocity[k] * tau + d->vib_amp[k] * s;
+        v[k] = d->velocity[k] + d->vib_amp[k] * ds;
+    }
+}
+
+/* Moves the drum to `time` (its angle and speed, its centre and velocity),
+ * then every wall: the drum's walls turn and move with it. */
 void dm_drum_advance(demill_world *w, double time)
 {
     dm_drum *d = &w->drum;
-    if (d->alive)
+    if (d->alive) {
         d->omega = dm_drum_omega_at(d, time, &d->theta);
+        centre_at(d, time, d->centre, d->vcentre);
+    }
     dm_walls_advance(w, time);
+}
+
+/* Sets a translation key (DEMILL_DRUM_CENTER_X .. _VIBRATION_PHASE): the
+ * motion restarts now from where the centre is (or is put, for a centre
+ * key), and the drum's walls follow. */
+void dm_drum_set_motion(demill_world *w, int32_t key, double value)
+{
+    dm_drum *d = &w->drum;
+    double c[3], v[3];
+    centre_at(d, w->time, c, v);
+    if (key >= DEMILL_DRUM_CENTER_X && key <= DEMILL_DRUM_CENTER_Z)
+        c[key - DEMILL_DRUM_CENTER_X] = value;
+    else if (key >= DEMILL_DRUM_VELOCITY_X && key <= DEMILL_DRUM_VELOCITY_Z)
+        d->velocity[key - DEMILL_DRUM_VELOCITY_X] = value;
+    else if (key >= DEMILL_DRUM_VIBRATION_X && key <= DEMILL_DRUM_VIBRATION_Z)
+        d->vib_amp[key - DEMILL_DRUM_VIBRATION_X] = value;
+    else if (key == DEMILL_DRUM_VIBRATION_FREQUENCY)
+        d->vib_freq = value;
+    else
+        d->vib_phase = value;
+    d->t_move = w->time;
+    const double s = sin(d->vib_phase);
+    for (int k = 0; k < 3; k++)
+        d->centre_set[k] = c[k] - d->vib_amp[k] * s;
+    dm_drum_advance(w, w->time);
 }
 
 static void revolution_reset(demill_world *w);
@@ -268,17 +307,26 @@ double dm_drum_load(const demill_world *w, double *force)
     return t;
 }
 
+/* The power the drum delivers to the charge, -(T_z ω + F·v), from the
+ * torque and the force the charge exerts on it. */
+double dm_drum_power(const dm_drum *d, double torque, const double force[3])
+{
+    return -(torque * d->omega + force[0] * d->vcentre[0] + force[1] * d->vcentre[1] +
+             force[2] * d->vcentre[2]);
+}
+
 /* Power from the charge's centre of mass: the torque gravity exerts on the
  * charge about the axis, T_g = (M x_cm × g)_z, is balanced by the drum in the
- * mean, so the drum delivers P = -ω T_g. */
+ * mean, so the drum delivers P = -ω T_g (x_cm about the drum's centre). */
 double dm_drum_power_cm(const demill_world *w, double omega)
 {
     const dm_particles *P = &w->p;
     const int D = w->dim;
     double mx = 0.0, my = 0.0;
+    const double *c = w->drum.centre;
     for (uint32_t i = 0; i < P->n; i++) {
-        mx += P->m[i] * P->x[D * i];
-        my += P->m[i] * P->x[D * i + 1];
+        mx += P->m[i] * (P->x[D * i] - c[0]);
+        my += P->m[i] * (P->x[D * i + 1] - c[1]);
     }
     return -omega * (mx * w->g[1] - my * w->g[0]);
 }
@@ -306,8 +354,9 @@ void dm_drum_measure(demill_world *w)
     if (!d->alive)
         return;
     const double dt = w->dt;
-    d->torque = dm_drum_load(w, NULL);
-    d->power = -d->torque * d->omega;
+    double f[3];
+    d->torque = dm_drum_load(w, f);
+    d->power = dm_drum_power(d, d->torque, f);
     d->energy_in += d->power * dt;
     d->energy_dissipated = 0.0;
     for (uint32_t k = 0; k < w->nwalls; k++) {

@@ -10,6 +10,13 @@
 double dm_drum_omega_at(const dm_drum *d, double time, double *theta);
 /* Moves the drum to `time`, then every wall (the drum's walls turn with it). */
 void dm_drum_advance(demill_world *w, double time);
+/* Sets one of the drum's translation keys (DEMILL_DRUM_CENTER_X ..
+ * DEMILL_DRUM_VIBRATION_PHASE), the motion restarting now from where the
+ * centre is. */
+void dm_drum_set_motion(demill_world *w, int32_t key, double value);
+/* The power the drum delivers, -(T_z ω + F·v), from the torque about its
+ * axis and the force on it. */
+double dm_drum_power(const dm_drum *d, double torque, const double force[3]);
 /* Critical speed √(2 g / (D - d)); NaN when undefined. */
 double dm_drum_critical_speed(const demill_world *w);
 /* The target speed in rad/s the speed key and value ask for; NaN for a

@@ -59,10 +59,11 @@ void dm_charge_shape(const demill_world *w, double angles[3])
         if (wall->kind && wall->mesh && wall->drum_part == DM_PART_LIFTER)
             hmax = fmax(hmax, 0.5 * d->diameter - dm_mesh_axis_distance(wall, 0));
     }
+    const double *c = d->centre; /* positions about the drum's centre */
     for (uint32_t i = 0; i < P->n; i++) {
         dmax = fmax(dmax, 2.0 * P->r[i]);
-        mx += P->m[i] * P->x[D * i];
-        my += P->m[i] * P->x[D * i + 1];
+        mx += P->m[i] * (P->x[D * i] - c[0]);
+        my += P->m[i] * (P->x[D * i + 1] - c[1]);
         mass += P->m[i];
     }
     angles[2] = charge_angle(mx / mass, my / mass, s);
@@ -71,7 +72,7 @@ void dm_charge_shape(const demill_world *w, double angles[3])
     double bins[DM_SHAPE_BINS] = {0}, sorted[DM_SHAPE_BINS];
     const double width = 2.0 * DM_PI / DM_SHAPE_BINS;
     for (uint32_t i = 0; i < P->n; i++) {
-        const double x = P->x[D * i], y = P->x[D * i + 1], r = sqrt(x * x + y * y);
+        const double x = P->x[D * i] - c[0], y = P->x[D * i + 1] - c[1], r = sqrt(x * x + y * y);
         if (!(r > inner && r < R)) /* (also a particle flown off to inf or NaN) */
             continue;
         int b = (int)floor((charge_angle(x, y, s) + DM_PI) / width);

@@ -88,6 +88,12 @@ typedef struct dm_trimesh {
     uint32_t *order;        /* elements in leaf order */
     double frame_rot[9], frame_off[3];
     double bs_centre[3], bs_radius; /* a sphere about every vertex, in the mesh's frame */
+    /* a grid of cubes of side far_h over a box about the mesh, from corner
+     * far_lo, with far_n cubes per axis (x fastest): per cube a lower bound
+     * of the distance from its points to the mesh */
+    float *far;
+    uint32_t far_n[3];
+    double far_lo[3], far_h;
 } dm_trimesh;
 
 #define DM_MAX_POLY 8 /* vertices of a lifter's cross-section, at most */
@@ -174,10 +180,11 @@ enum { DM_HARMONIC_TRANSLATE = 1, DM_HARMONIC_ROTATE = 2 };
 /* The drum's parts, numbered as DEMILL_DRUM_PART_* */
 enum { DM_PART_NONE = 0, DM_PART_SHELL = 1, DM_PART_CAP = 2, DM_PART_LIFTER = 3 };
 /* Whether a wall of the drum is one a user attached to it (it keeps its own
- * handle, demill_drum_attach_wall) rather than one the drum built. */
+ * handle, demill_drum_attach_wall), or a cap of one, rather than one the
+ * drum built. */
 static inline bool dm_wall_attached(const dm_wall *wall)
 {
-    return wall->drum_part && wall->handle != DM_FREE;
+    return wall->drum_part && (wall->handle != DM_FREE || wall->parent);
 }
 
 /* ---- bodies (bodies/bodies.c) -------------------------------------------- */
@@ -358,6 +365,10 @@ typedef struct dm_drum {
     double speed_value, ramp, crit_diameter;
     double t_set, theta_set, omega_from, omega_to;
     double theta, omega;    /* at world time */
+    /* translation: the centre at time t is centre_set + velocity (t - t_move)
+     * + vib_amp sin(2π vib_freq (t - t_move) + vib_phase) */
+    double centre_set[3], velocity[3], vib_amp[3], vib_freq, vib_phase, t_move;
+    double centre[3], vcentre[3]; /* the centre and its velocity at world time */
     double theta_start;     /* angle when it first turned; NaN before */
     uint32_t sample_interval;
     uint64_t samples_due;   /* step count at the next charge-shape sample */
@@ -584,6 +595,19 @@ void dm_particle_set_mass(demill_world *w, uint32_t i, bool fixed);
 static inline bool dm_particle_fixed(const dm_particles *P, uint32_t i)
 {
     return P->im[i] == 0.0;
+}
+
+/* The kinetic energy of particle i's spin, 1/2 I ω² over its W components
+ * of ω: 0 for a fixed particle, which does not turn (its inverse moment of
+ * inertia is 0, so that 1/2 ω² / I⁻¹ would be 0/0). */
+static inline double dm_particle_spin_energy(const dm_particles *P, uint32_t i, int W)
+{
+    if (dm_particle_fixed(P, i))
+        return 0.0;
+    double w2 = 0.0;
+    for (int c = 0; c < W; c++)
+        w2 += P->w[W * i + c] * P->w[W * i + c];
+    return 0.5 * w2 / P->iinv[i];
 }
 
 #endif /* DM_STATE_H */
