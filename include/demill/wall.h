@@ -356,6 +356,55 @@ DEMILL_API demill_status demill_wall_set_surface_velocity(demill_world *world, d
 DEMILL_API demill_status demill_wall_get(const demill_world *world, demill_id wall,
                                          int32_t field, double *out);
 
+/** Starts recording the loads on a wall, for pressure and liner-wear maps
+ *  (docs/geometry.md, Wall loads), from zero: per element, a mesh's
+ *  triangle or a polyline's segment, or for any other wall the wall as one
+ *  patch (a capped cylinder or cone with its caps), after every step: the
+ *  normal force on the element at that step (the sum over its contacts of
+ *  F·n, N), its time integral since the start (N s: the mean pressure over
+ *  the interval is the integral over the element's area and the interval),
+ *  and the shear work ∫ |F_t · v_slip| dt (J), the input of Archard-type
+ *  wear models, with v_slip the velocity of the wall's surface relative to
+ *  the particle's surface at the contact point (the wall's motion and
+ *  surface velocity, the particle's velocity and spin). A contact at a
+ *  mesh's edge or vertex counts for the one triangle that holds it. Off by
+ *  default: a wall that does not record costs nothing. Called again, it
+ *  starts again from zero. Snapshots and checkpoints carry the loads; they
+ *  are the same bits for any thread count.
+ *  @param world the world.
+ *  @param wall  the wall's id.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_wall_loads_start(demill_world *world, demill_id wall);
+
+/** Stops recording a wall's loads and forgets them (nothing happens if it
+ *  records none).
+ *  @param world the world.
+ *  @param wall  the wall's id.
+ *  @return DEMILL_OK or DEMILL_ERR_INVALID_HANDLE. */
+DEMILL_API demill_status demill_wall_loads_stop(demill_world *world, demill_id wall);
+
+/** Reads the loads a wall has recorded since demill_wall_loads_start(), per
+ *  element: n is the number of its triangles or segments
+ *  (demill_wall_mesh_info()), 1 for any other wall. Each array receives n
+ *  values, element after element; any of them may be NULL.
+ *  @param world           the world.
+ *  @param wall            the wall's id.
+ *  @param n               the number of elements.
+ *  @param[out] normal     the normal force on each element at the last
+ *                         step, N (0 before the first).
+ *  @param[out] impulse    its integral over the time recorded, N s.
+ *  @param[out] shear_work the shear work on it over that time, J.
+ *  @param[out] area       its area, m² (a polyline's segment: its length,
+ *                         m, so that the pressure is a load per length;
+ *                         NaN for a plane, which has no bounded area).
+ *  @param[out] interval   the time recorded, s (one value).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE or DEMILL_ERR_INVALID_VALUE
+ *          (the wall records no loads, or n is not its number of
+ *          elements). */
+DEMILL_API demill_status demill_wall_loads(const demill_world *world, demill_id wall, size_t n,
+                                           double *normal, double *impulse, double *shear_work,
+                                           double *area, double *interval);
+
 #ifdef __cplusplus
 }
 #endif

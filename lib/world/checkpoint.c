@@ -96,7 +96,8 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
                                  meshes (section MESH), the feeds and outlets (FLOW),
                                  the finite walls, harmonic motion and surface
                                  velocity (WFIN), the bodies (BODY), the drum's
-                                 translation (DRMV) */
+                                 translation (DRMV), the loads the walls record
+                                 (LOAD) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -580,6 +581,44 @@ static void transfer_bodies(io *s, demill_world *w)
     }
 }
 
+/* The loads the walls record (format 3): per wall slot its number of
+ * elements (0: it records none), then the time and the steps recorded and
+ * DM_LOADS values per element. Only a wall with an id records, for as many
+ * elements as it has. */
+static void transfer_loads(io *s, demill_world *w)
+{
+    io_section(s, "LOAD");
+    for (uint32_t k = 0; k < w->nwalls && !s->status; k++) {
+        dm_wall *wl = &w->walls[k];
+        uint32_t n = wl->loads ? wl->loads->n : 0;
+        io_u32(s, &n, 1);
+        if (!n || s->status)
+            continue;
+        if (s->reading) {
+            if (!wl->kind || wl->handle == DM_FREE || n != dm_loads_elements(wl)) {
+                io_fail(s, DEMILL_ERR_FORMAT, "wall %u: loads of %u elements on a wall %s", k,
+                        n, wl->kind && wl->handle != DM_FREE ? "of another size" : "without an id");
+                return;
+            }
+            if (s->left / (DM_LOADS * sizeof(double)) < n) {
+                io_fail(s, DEMILL_ERR_FORMAT, "wall %u: loads of %u elements in %zu bytes", k, n,
+                        s->left);
+                return;
+            }
+            if (!(wl->loads = dm_loads_new(n))) {
+                io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory");
+                return;
+            }
+        }
+        io_f64(s, &wl->loads->interval, 1);
+        io_f64(s, &wl->loads->steps, 1);
+        io_f64(s, wl->loads->v, DM_LOADS * (size_t)n);
+        if (s->reading && !s->status && !(wl->loads->interval >= 0.0 && wl->loads->steps >= 0.0))
+            io_fail(s, DEMILL_ERR_FORMAT, "wall %u: loads recorded over %g s in %g steps", k,
+                    wl->loads->interval, wl->loads->steps);
+    }
+}
+
 /* Walks every field of state w. Reading, w starts zeroed (with its pointers
  * NULL) and the arrays are allocated as they are read. */
 static void transfer(io *s, demill_world *w)
@@ -706,6 +745,7 @@ static void transfer(io *s, demill_world *w)
     if (s->format >= 3) {
         io_section(s, "BODY");
         transfer_bodies(s, w);
+        transfer_loads(s, w);
     }
     io_section(s, "END.");
 }

@@ -78,7 +78,7 @@ static size_t buffers_of(demill_world *s, buffer *b)
 void dm_state_free(demill_world *s)
 {
     if (s->walls)
-        dm_walls_free_meshes(s);
+        dm_walls_free_owned(s);
     buffer b[MAX_BUFFERS];
     const size_t nb = buffers_of(s, b);
     for (size_t k = 0; k < nb; k++) {
@@ -106,15 +106,20 @@ demill_status dm_state_copy(demill_world *dst, const demill_world *src)
         memcpy(to, from, nb[k].bytes);
         *nb[k].field = to;
     }
-    uint32_t meshes = 0; /* the walls' meshes, each its own block */
-    for (; k == count && meshes < n.nwalls; meshes++) {
+    uint32_t meshes = 0; /* the walls' meshes and loads, each its own block */
+    bool lost = k < count;
+    for (; !lost && meshes < n.nwalls; meshes++) {
         const dm_trimesh *m = src->walls[meshes].mesh;
-        if (m && !(n.walls[meshes].mesh = dm_trimesh_copy(m)))
-            break;
+        const dm_loads *l = src->walls[meshes].loads;
+        n.walls[meshes].mesh = m ? dm_trimesh_copy(m) : NULL;
+        n.walls[meshes].loads = l ? dm_loads_copy(l) : NULL;
+        lost = (m && !n.walls[meshes].mesh) || (l && !n.walls[meshes].loads);
     }
-    if (k < count || meshes < n.nwalls) {
-        for (uint32_t q = 0; q < meshes; q++)
+    if (lost) {
+        for (uint32_t q = 0; q < meshes; q++) {
             dm_trimesh_free(n.walls[q].mesh);
+            dm_loads_free(n.walls[q].loads);
+        }
         for (size_t q = 0; q < k; q++)
             free(*nb[q].field);
         return DEMILL_ERR_OUT_OF_MEMORY;

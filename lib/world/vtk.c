@@ -102,18 +102,73 @@ DEMILL_API demill_status demill_vtk_write_particles(demill_world *w, const char 
 /* ---- walls -------------------------------------------------------------------- */
 
 enum {
-    W_WALL, W_PART, W_LIFTER, W_POINTS, W_LINE_CONN, W_LINE_OFF, W_POLY_CONN, W_POLY_OFF,
-    W_COLUMNS
+    W_WALL, W_PART, W_LIFTER, W_NORMAL, W_PRESSURE, W_SHEAR, W_POINTS, W_LINE_CONN, W_LINE_OFF,
+    W_POLY_CONN, W_POLY_OFF, W_COLUMNS
 };
+
+/* The surfaces, and the recorded loads of their cells (NULL when no wall
+ * records any). */
+typedef struct wall_file {
+    dm_mesh m;
+    double *loads; /* 3 per cell: normal force, mean pressure, shear work */
+} wall_file;
+
+/* ctx: the columns' W_* numbers, then the wall_file (see demill_vtk_write_walls). */
+typedef struct wall_ctx {
+    const int *which;
+    const wall_file *f;
+} wall_ctx;
 
 static const void *wall_bytes(demill_world *w, void *ctx, int k, void *scratch)
 {
-    const dm_mesh *m = ctx;
+    const wall_ctx *c = ctx;
+    const dm_mesh *m = &c->f->m;
+    const int col = c->which[k];
     (void)w;
-    (void)scratch;
-    const void *arrays[W_COLUMNS] = {m->wall,      m->part,     m->lifter,    m->pt,
-                                     m->line.conn, m->line.off, m->poly.conn, m->poly.off};
-    return arrays[k];
+    if (col >= W_NORMAL && col <= W_SHEAR) {
+        const size_t ncells = m->line.n + m->poly.n;
+        double *out = scratch;
+        for (size_t q = 0; q < ncells; q++)
+            out[q] = c->f->loads[3 * q + (size_t)(col - W_NORMAL)];
+        return scratch;
+    }
+    const void *arrays[W_COLUMNS] = {
+        [W_WALL] = m->wall,          [W_PART] = m->part,          [W_LIFTER] = m->lifter,
+        [W_POINTS] = m->pt,          [W_LINE_CONN] = m->line.conn, [W_LINE_OFF] = m->line.off,
+        [W_POLY_CONN] = m->poly.conn, [W_POLY_OFF] = m->poly.off};
+    return arrays[col];
+}
+
+/* The loads of each cell of the walls' surfaces, from the wall that records
+ * them (a cap's: the wall it closes) and the element the cell draws: the
+ * normal force at the last step, the mean pressure over the time recorded
+ * (the normal force's integral over the element's area and the time) and
+ * the shear work; NaN for the cells of walls that record none. Leaves
+ * f->loads NULL when no wall records any; -1 when out of memory. */
+static int cell_loads(const demill_world *w, wall_file *f)
+{
+    const size_t ncells = f->m.line.n + f->m.poly.n;
+    int any = 0;
+    for (uint32_t k = 0; k < w->nwalls; k++)
+        any |= w->walls[k].loads != NULL;
+    if (!any)
+        return 0;
+    if (!(f->loads = malloc((3 * ncells + 1) * sizeof *f->loads)))
+        return -1;
+    for (size_t q = 0; q < ncells; q++) {
+        const uint32_t slot = (uint32_t)f->m.wall[q], parent = w->walls[slot].parent;
+        const uint32_t owner = parent ? parent - 1 : slot, e = f->m.element[q];
+        const dm_loads *l = w->walls[owner].loads;
+        double *out = f->loads + 3 * q;
+        if (!l) {
+            out[0] = out[1] = out[2] = NAN;
+            continue;
+        }
+        out[0] = dm_loads_normal(l, e);
+        out[1] = l->v[DM_LOADS * (size_t)e + 1] / (dm_loads_area(w, owner, e) * l->interval);
+        out[2] = l->v[DM_LOADS * (size_t)e + 2];
+    }
+    return 0;
 }
 
 DEMILL_API demill_status demill_vtk_write_walls(demill_world *w, const char *path)
@@ -123,27 +178,45 @@ DEMILL_API demill_status demill_vtk_write_walls(demill_world *w, const char *pat
         return s;
     if (!path)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "vtk_write_walls: path is NULL");
-    dm_mesh m;
-    if (dm_walls_mesh(w, &m))
+    wall_file f = {.loads = NULL};
+    if (dm_walls_mesh(w, &f.m))
         return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "vtk: out of memory writing %s", path);
-    const size_t ncells = m.line.n + m.poly.n;
+    dm_mesh *m = &f.m;
+    if (cell_loads(w, &f)) {
+        dm_mesh_free(m);
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "vtk: out of memory writing %s", path);
+    }
+    const size_t ncells = m->line.n + m->poly.n;
     for (size_t c = 0; c < ncells; c++) /* the walls' ids, of their slots */
-        m.wall[c] = dm_wall_id(w, (uint32_t)m.wall[c]);
-    const dm_column cols[W_COLUMNS] = {{"CellData", "wall", "UInt64", 1, ncells},
-                                       {"CellData", "part", "Int32", 1, ncells},
-                                       {"CellData", "lifter", "Int32", 1, ncells},
-                                       {"Points", "Points", "Float64", 3, m.npt},
-                                       {"Lines", "connectivity", "Int64", 1, m.line.nconn},
-                                       {"Lines", "offsets", "Int64", 1, m.line.n},
-                                       {"Polys", "connectivity", "Int64", 1, m.poly.nconn},
-                                       {"Polys", "offsets", "Int64", 1, m.poly.n}};
+        m->wall[c] = dm_wall_id(w, (uint32_t)m->wall[c]);
+    const dm_column all[W_COLUMNS] = {
+        [W_WALL] = {"CellData", "wall", "UInt64", 1, ncells},
+        [W_PART] = {"CellData", "part", "Int32", 1, ncells},
+        [W_LIFTER] = {"CellData", "lifter", "Int32", 1, ncells},
+        [W_NORMAL] = {"CellData", "normal_force", "Float64", 1, ncells},
+        [W_PRESSURE] = {"CellData", "mean_pressure", "Float64", 1, ncells},
+        [W_SHEAR] = {"CellData", "shear_work", "Float64", 1, ncells},
+        [W_POINTS] = {"Points", "Points", "Float64", 3, m->npt},
+        [W_LINE_CONN] = {"Lines", "connectivity", "Int64", 1, m->line.nconn},
+        [W_LINE_OFF] = {"Lines", "offsets", "Int64", 1, m->line.n},
+        [W_POLY_CONN] = {"Polys", "connectivity", "Int64", 1, m->poly.nconn},
+        [W_POLY_OFF] = {"Polys", "offsets", "Int64", 1, m->poly.n}};
+    dm_column cols[W_COLUMNS];
+    int which[W_COLUMNS], ncols = 0;
+    for (int k = 0; k < W_COLUMNS; k++)
+        if (f.loads || k < W_NORMAL || k > W_SHEAR) {
+            which[ncols] = k;
+            cols[ncols++] = all[k];
+        }
     char piece[160];
     snprintf(piece, sizeof piece,
              "NumberOfPoints=\"%zu\" NumberOfVerts=\"0\" NumberOfLines=\"%zu\" "
              "NumberOfStrips=\"0\" NumberOfPolys=\"%zu\"",
-             m.npt, m.line.n, m.poly.n);
-    s = dm_vtk_write_file(w, path, "PolyData", piece, cols, W_COLUMNS, wall_bytes, &m);
-    dm_mesh_free(&m);
+             m->npt, m->line.n, m->poly.n);
+    const wall_ctx ctx = {which, &f};
+    s = dm_vtk_write_file(w, path, "PolyData", piece, cols, ncols, wall_bytes, (void *)&ctx);
+    free(f.loads);
+    dm_mesh_free(m);
     return s;
 }
 

@@ -2,9 +2,10 @@
  * and finite walls (cylinders, cones, discs, rectangles; a capped
  * cylinder's caps are walls of their own, without an id, that follow it),
  * moving them (rigidly, harmonically, their surfaces along themselves),
- * removing them and reading their state (lib/physics/geometry/walls.c
- * computes their motion and their distances, lib/physics/geometry/mesh.c the
- * meshes'). */
+ * removing them, reading their state and recording their loads
+ * (lib/physics/geometry/walls.c computes their motion and their distances,
+ * lib/physics/geometry/mesh.c the meshes', lib/physics/geometry/loads.c
+ * keeps their loads). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -482,6 +483,8 @@ void dm_wall_release(demill_world *w, uint32_t slot)
     dm_handles_release(&w->wh, wall->handle);
     dm_trimesh_free(wall->mesh);
     wall->mesh = NULL;
+    dm_loads_free(wall->loads);
+    wall->loads = NULL;
     wall->kind = 0;
 }
 
@@ -629,5 +632,65 @@ DEMILL_API demill_status demill_wall_get(const demill_world *cw, demill_id id, i
     default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "%d is not a wall field", (int)field);
     }
     memcpy(out, src, 3 * sizeof *out);
+    return DEMILL_OK;
+}
+
+/* ---- recorded loads (docs/geometry.md, Wall loads) ---------------------------------- */
+
+DEMILL_API demill_status demill_wall_loads_start(demill_world *w, demill_id id)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, id, DEMILL_KIND_WALL, "wall", &slot);
+    if (s)
+        return s;
+    dm_wall *wall = &w->walls[slot];
+    dm_loads *l = dm_loads_new(dm_loads_elements(wall));
+    if (!l)
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "wall_loads_start: out of memory");
+    dm_loads_free(wall->loads);
+    wall->loads = l;
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_wall_loads_stop(demill_world *w, demill_id id)
+{
+    uint32_t slot;
+    demill_status s = dm_enter(w, id, DEMILL_KIND_WALL, "wall", &slot);
+    if (s)
+        return s;
+    dm_loads_free(w->walls[slot].loads);
+    w->walls[slot].loads = NULL;
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_wall_loads(const demill_world *cw, demill_id id, size_t n,
+                                           double *normal, double *impulse, double *shear_work,
+                                           double *area, double *interval)
+{
+    demill_world *w = (demill_world *)cw;
+    uint32_t slot;
+    demill_status s = dm_enter(w, id, DEMILL_KIND_WALL, "wall", &slot);
+    if (s)
+        return s;
+    const dm_loads *l = w->walls[slot].loads;
+    if (!l)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "wall_loads: the wall records no loads (demill_wall_loads_start first)");
+    if (n != l->n)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "wall_loads: n = %zu, but the wall keeps its loads for %u element%s", n,
+                       l->n, l->n == 1 ? "" : "s");
+    for (size_t e = 0; e < n && normal; e++)
+        normal[e] = dm_loads_normal(l, (uint32_t)e);
+    for (size_t e = 0; e < n && impulse; e++)
+        impulse[e] = l->v[DM_LOADS * e + 1];
+    for (size_t e = 0; e < n && shear_work; e++)
+        shear_work[e] = l->v[DM_LOADS * e + 2];
+    for (size_t e = 0; e < n && area; e++)
+        area[e] = dm_loads_area(w, slot, (uint32_t)e);
+    if (interval)
+        *interval = l->interval;
     return DEMILL_OK;
 }

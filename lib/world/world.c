@@ -61,7 +61,7 @@ DEMILL_API void demill_world_destroy(demill_world *w)
     dm_watch_free(w);
     dm_handles_free(&w->wh);
     dm_handles_free(&w->bh);
-    dm_walls_free_meshes(w);
+    dm_walls_free_owned(w);
     free(w->walls);
     free(w->bodies);
     free(w->pairs);

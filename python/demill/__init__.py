@@ -29,14 +29,14 @@ from .drum import Drum, Lifter
 from .errors import *  # noqa: F403 - the exceptions
 from .flows import Feed, FeedTotals, Outlet, OutletTotals
 from .grinding import Grinding
-from .objects import Body, Contacts, Material, Pair, Particle, Particles, Wall
+from .objects import Body, Contacts, Material, Pair, Particle, Particles, Wall, WallLoads
 from .state import Snapshot, VtkSeries
 from .world import Progress, TimeStep, World
 
 __version__ = VERSION_STRING
 __all__ = (constants.__all__ + errors.__all__ + [
-    "World", "Material", "Pair", "Particle", "Particles", "Wall", "Body", "Contacts", "Drum",
-    "Lifter", "Feed", "FeedTotals", "Outlet", "OutletTotals",
+    "World", "Material", "Pair", "Particle", "Particles", "Wall", "WallLoads", "Body", "Contacts",
+    "Drum", "Lifter", "Feed", "FeedTotals", "Outlet", "OutletTotals",
     "Snapshot", "VtkSeries", "Grinding", "Progress", "TimeStep", "ParamInfo", "library_path",
     "version", "version_number", "check_version", "id_kind", "param_info", "particle_field_size",
     "contact_field_size", "strerror"])

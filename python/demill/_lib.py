@@ -122,7 +122,7 @@ PROTOTYPES = {
 
 #: Functions newer than the oldest library this binding supports (progress,
 #: VTK output, snapshots and checkpoints, object listing, mesh walls, finite
-#: walls and wall motions, grinding): bound when the library has them.
+#: walls and wall motions, wall loads, grinding): bound when the library has them.
 OPTIONAL_PROTOTYPES = {
     # body.h
     "demill_body_add": (status, (WorldP, c_double, dptr, c_int32, c_uint32, idptr)),
@@ -180,6 +180,9 @@ OPTIONAL_PROTOTYPES = {
     "demill_wall_set_harmonic": (status, (WorldP, id_t, c_int32, dptr, c_double, c_double,
                                           c_double)),
     "demill_wall_set_surface_velocity": (status, (WorldP, id_t, dptr)),
+    "demill_wall_loads_start": (status, (WorldP, id_t)),
+    "demill_wall_loads_stop": (status, (WorldP, id_t)),
+    "demill_wall_loads": (status, (WorldP, id_t, c_size_t, dptr, dptr, dptr, dptr, dptr)),
     # grinding.h
     "demill_grinding_create": (status, (c_double, c_uint32, POINTER(GrindingP))),
     "demill_grinding_destroy": (None, (GrindingP,)),

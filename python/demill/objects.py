@@ -6,12 +6,14 @@ own (the world does), so they are cheap views that may be created at will.
 
 import ctypes
 import operator
+from typing import NamedTuple
 
 import numpy as np
 
 from ._core import (Keyed, Param, as_id, doubles, first, output, ptr, read_counted, read_field,
                     vector)
 from ._lib import lib
+from .errors import InvalidValue
 from .constants import (AddFlag, BodyAxis, BodyField, ContactField, Damping, IdField, Kind,
                         MaterialKey, Normal, PairKey, ParticleField, Rolling, Tangential,
                         WallField, WorldKey)
@@ -238,6 +240,26 @@ class Particles:
     _set = write
 
 
+class WallLoads(NamedTuple):
+    """The loads a wall has recorded (:meth:`Wall.loads`), per element (a
+    mesh's triangle, a polyline's segment, or the whole wall): the normal
+    force at the last step (N), its integral over the time recorded (N s),
+    the shear work (J), the element's area (m²; a segment's length, m; NaN
+    for a plane), and the time recorded (s)."""
+
+    normal: np.ndarray
+    impulse: np.ndarray
+    shear_work: np.ndarray
+    area: np.ndarray
+    interval: float
+
+    @property
+    def mean_pressure(self):
+        """The mean pressure on each element over the time recorded, Pa
+        (a polyline's: a load per length, N/m)."""
+        return self.impulse / (self.area * self.interval)
+
+
 class Wall(Handle, Keyed):
     """A wall: a plane (:meth:`World.add_plane`), a triangle mesh
     (:meth:`World.add_mesh`), a polyline (:meth:`World.add_polyline`) or a
@@ -292,6 +314,28 @@ class Wall(Handle, Keyed):
         None: 0), the geometry staying put."""
         v = vector(velocity, "velocity")
         self.world._call("demill_wall_set_surface_velocity", self.id, ptr(v))
+
+    def loads_start(self):
+        """Starts recording the loads on the wall from zero, after every
+        step (docs/geometry.md, Wall loads); :meth:`loads` reads them."""
+        self.world._call("demill_wall_loads_start", self.id)
+
+    def loads_stop(self):
+        """Stops recording the wall's loads and forgets them."""
+        self.world._call("demill_wall_loads_stop", self.id)
+
+    def loads(self):
+        """The loads recorded since :meth:`loads_start`, a
+        :class:`WallLoads` of arrays with one value per element."""
+        try:
+            n = self.mesh_size[1]
+        except InvalidValue:  # not a mesh or a polyline: one patch
+            n = 1
+        arrays = [np.empty(n) for _ in range(4)]
+        interval = ctypes.c_double()
+        self.world._call("demill_wall_loads", self.id, n, *(ptr(a) for a in arrays),
+                         ctypes.byref(interval))
+        return WallLoads(*arrays, interval.value)
 
     def remove(self):
         """Removes the wall; its id becomes invalid."""

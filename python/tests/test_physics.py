@@ -186,6 +186,39 @@ class Walls(unittest.TestCase):
                 wall.point
 
 
+class WallLoads(unittest.TestCase):
+    def test_resting_ball_loads_one_triangle(self):
+        """A ball of mass m at rest on a floor of two triangles of 0.02 m²
+        each, placed at its equilibrium overlap m g / k: after T = 500
+        steps the loaded triangle holds m g and m g T (statics), its mean
+        pressure is m g / 0.02 m², the other nothing; a plane has no area;
+        stopped, the loads are gone."""
+        g, k, r, dt, n = 9.81, 1e5, 0.01, 1e-5, 500
+        w, m = linear_world(3, gravity=(0, -g, 0))
+        w.time_step = dt
+        w.pair(m, m, normal_stiffness=k)
+        floor = w.add_mesh(m, [(-0.1, 0, -0.1), (0.1, 0, -0.1), (0.1, 0, 0.1), (-0.1, 0, 0.1)],
+                           [(0, 1, 2), (0, 2, 3)])
+        plane = w.add_plane(m, (0, -1, 0), (0, 1, 0))
+        m.density = 7800
+        mg = sphere_mass(r, 7800) * g
+        w.particles.add(m, [(0.03, r - mg / k, -0.02)], r)
+        floor.loads_start()
+        plane.loads_start()
+        w.step(n)
+        loads = floor.loads()
+        self.assertAlmostEqual(loads.interval, n * dt, delta=1e-15)
+        np.testing.assert_allclose(loads.normal, [mg, 0], rtol=1e-9)
+        np.testing.assert_allclose(loads.impulse, [mg * n * dt, 0], rtol=1e-9)
+        np.testing.assert_allclose(loads.area, [0.02, 0.02], rtol=1e-12)
+        np.testing.assert_allclose(loads.mean_pressure, [mg / 0.02, 0], rtol=1e-9)
+        self.assertTrue(math.isnan(plane.loads().area[0]))
+        floor.loads_stop()
+        with self.assertRaises(demill.InvalidValue):
+            floor.loads()
+        w.close()
+
+
 class FiniteWalls(unittest.TestCase):
     def test_closest_points_and_motions(self):
         """A sphere of radius 0.01 held 0.007 from a face (the linear law,

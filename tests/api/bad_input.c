@@ -1576,6 +1576,41 @@ START_TEST(mesh_values)
 }
 END_TEST
 
+/* The mesh of setup_mesh records its loads; the scene's first wall does not. */
+static void setup_loads(scene *sc)
+{
+    setup_mesh(sc);
+    DM_OK(sc->w, demill_wall_loads_start(sc->w, sc->wall[sc->nwall - 1]));
+    DM_OK(sc->w, demill_world_step(sc->w, 10));
+}
+
+static void bad_loads(scene *sc)
+{
+    demill_world *w = sc->w;
+    const demill_id mesh = sc->wall[sc->nwall - 1];
+    const size_t n = 2; /* two triangles (3D), two segments (2D) */
+    double out[3];
+    ctx(sc, "wall_loads");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_loads(w, mesh, n + 1, out, NULL, NULL, NULL,
+                                                        NULL), "n = 3", "2 elements");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_loads(w, mesh, 1, NULL, NULL, NULL, NULL,
+                                                        NULL), "n = 1");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_wall_loads(w, sc->wall[0], 1, out, NULL, NULL, NULL,
+                                                        NULL), "records no loads");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_wall_loads(w, sc->pid[0], 1, out, NULL, NULL, NULL,
+                                                         NULL), "wall");
+    ctx(sc, "wall_loads_start, wall_loads_stop");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_wall_loads_start(w, sc->pid[0]), "wall");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_wall_loads_start(w, DEMILL_ID_NONE), "wall");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_wall_loads_stop(w, sc->mat[0]), "wall");
+}
+
+START_TEST(wall_loads_values)
+{
+    both_dims(setup_loads, bad_loads, NULL);
+}
+END_TEST
+
 /* ------------------------------------------------------------------------ */
 /* Bodies and fixed particles                                                 */
 
@@ -2411,6 +2446,7 @@ int main(void)
     tcase_add_test(tc, body_values);
     tcase_add_test(tc, finite_wall_values);
     tcase_add_test(tc, mesh_values);
+    tcase_add_test(tc, wall_loads_values);
     tcase_add_test(tc, removed_handles);
     tcase_add_test(tc, foreign_handles);
     tcase_add_test(tc, wrong_kind_and_none_handles);

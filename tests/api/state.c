@@ -646,6 +646,48 @@ START_TEST(finite_wall_values_the_api_refuses_are_refused)
 }
 END_TEST
 
+/* The loads a wall records (section LOAD: per wall slot its element count,
+ * then the time and the steps recorded and 4 values per element) are held
+ * to what demill_wall_loads_start() makes: a count that is not the wall's
+ * number of elements, a negative or NaN time, written behind a repaired
+ * checksum, are refused. */
+START_TEST(wall_loads_the_api_would_not_make_are_refused)
+{
+    demill_world *w, *target;
+    demill_id m, rect;
+    ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+    ck_assert_int_eq(demill_world_create(3, &target), DEMILL_OK);
+    DM_OK(w, demill_material_create(w, &m));
+    const double o[3] = {0, 0, 0}, y[3] = {0, 1, 0}, x[3] = {1, 0, 0};
+    DM_OK(w, demill_wall_add_rectangle(w, m, o, y, x, 0.1, 0.1, &rect)); /* wall slot 0 */
+    DM_OK(w, demill_wall_loads_start(w, rect));
+    DM_OK(w, demill_world_step(w, 10));
+    bytes good = checkpoint_of(w), before = checkpoint_of(target);
+    const size_t at = unique_offset(good, "LOAD", 4);
+    const uint32_t two = 2, many = 0x7fffffffu;
+    const double negative = -1.0, nan = NAN;
+    const struct {
+        size_t offset;
+        const void *bad;
+        size_t len;
+        const char *word;
+    } cases[] = {{4, &two, 4, "another size"},
+                 {4, &many, 4, "another size"},
+                 {8, &negative, 8, "recorded over -1 s"},
+                 {8, &nan, 8, "not finite"}};
+    unsigned char *bad = malloc(good.n);
+    ck_assert_ptr_nonnull(bad);
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        memcpy(bad, good.b, good.n);
+        memcpy(bad + at + cases[c].offset, cases[c].bad, cases[c].len);
+        dm_test_ckpt_repair(bad, good.n);
+        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, cases[c].word, "wall loads");
+    }
+    DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
+    release(w, target, good, before, bad);
+}
+END_TEST
+
 /* The drum's recording of impacts on an ore (checkpoint format 2) is held
  * to finite values as demill_drum_impacts_start() is: a top size, energy
  * span or start time that is not finite, written behind a repaired checksum,
@@ -1000,6 +1042,7 @@ int main(int argc, char **argv)
         {"drum", drum_values_the_api_refuses_are_refused, 1},
         {"impacts", impact_recordings_not_finite_are_refused, 1},
         {"finite_walls", finite_wall_values_the_api_refuses_are_refused, 1},
+        {"wall_loads", wall_loads_the_api_would_not_make_are_refused, 1},
         {"empty", empty_state_into_a_refining_world, 1},
         {"files", file_errors, 1},
         {"accepted", accepted_states_reload, 1},

@@ -383,6 +383,27 @@ class ReadBack(unittest.TestCase):
         got = {tuple(round(c, 12) + 0.0 for c in pts[q]) for q in by_wall[3][0][1]}
         self.assertEqual(got, corners)
 
+    def test_loads(self):
+        """The floor's two triangles record a ball of mass m at rest on
+        triangle 0 at its equilibrium overlap: normal force m g, mean
+        pressure m g over the triangle's area 0.02 m², no shear work;
+        triangle 1 nothing; the rectangle, which records nothing, NaN. A
+        scene where no wall records has no such arrays."""
+        data = read(self.path("loads_walls.vtp"))
+        wall = array(data, "wall", "cell")
+        normal, pressure, shear = (array(data, name, "cell") for name in
+                                   ("normal_force", "mean_pressure", "shear_work"))
+        ids = sorted(set(wall), key=wall.index)
+        self.assertEqual([wall.count(i) for i in ids], [2, 1])
+        mg = sphere_mass(0.01, 7800.0) * -G
+        self.close(normal[0], mg, 1e-9 * mg, "normal force")
+        self.close(pressure[0], mg / 0.02, 1e-9 * mg / 0.02, "mean pressure")
+        self.assertEqual((normal[1], pressure[1]), (0.0, 0.0))
+        self.assertLessEqual(abs(shear[0]) + abs(shear[1]), 1e-15)
+        self.assertTrue(all(math.isnan(a[2]) for a in (normal, pressure, shear)))
+        plane = read(self.path("plane_walls.vtp"))
+        self.assertIsNone(plane.GetCellData().GetAbstractArray("normal_force"))
+
     # ---- the series ----
     def test_series(self):
         pvd = self.path("series/mill.pvd")

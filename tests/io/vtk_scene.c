@@ -34,6 +34,12 @@
  *   annulus about (-0.5, 0, 0), normal (1, 0, 0), radii 0.1 and 0.04; a
  *   rectangle about (0, 0, 0.5), normal (0, 1, 0), half-widths 0.2 along
  *   (1, 0, 0) and 0.1 across: finite_walls.vtp.
+ * loads: a 3D world, material 0 (7800 kg/m³) with linear contacts of
+ *   stiffness 1e5 N/m; a mesh floor of the vertices (-0.1, 0, -0.1),
+ *   (0.1, 0, -0.1), (0.1, 0, 0.1), (-0.1, 0, 0.1) and the triangles (0, 1, 2),
+ *   (0, 2, 3), recording its loads; the rectangle of finite, not recording;
+ *   a ball of radius 0.01 at rest at (0.03, 0.01 - m g / k, -0.02), m its
+ *   mass and g 9.81 m/s². 500 steps: loads_walls.vtp.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -200,6 +206,28 @@ static void scene_finite(void)
     demill_world_destroy(w);
 }
 
+static void scene_loads(void)
+{
+    demill_world *w;
+    check(demill_world_create(3, &w), "world");
+    g_world = w;
+    demill_id m = material(w, 7800), floor, rect, ball;
+    linear(w, m, m);
+    const double k = 1e5, r = 0.01, mg = 7800 * 4.0 / 3.0 * 3.14159265358979323846 * r * r * r * 9.81;
+    check(demill_pair_set(w, m, m, DEMILL_PAIR_NORMAL_STIFFNESS, k), "stiffness");
+    const double v[] = {-0.1, 0, -0.1, 0.1, 0, -0.1, 0.1, 0, 0.1, -0.1, 0, 0.1};
+    const uint32_t t[] = {0, 1, 2, 0, 2, 3};
+    check(demill_wall_add_mesh(w, m, 4, v, 2, t, &floor), "floor");
+    const double c[3] = {0, 0, 0.5}, y[3] = {0, 1, 0}, x[3] = {1, 0, 0};
+    check(demill_wall_add_rectangle(w, m, c, y, x, 0.2, 0.1, &rect), "rectangle");
+    const double at[3] = {0.03, r - mg / k, -0.02};
+    check(demill_particles_add(w, m, 1, at, &r, NULL, 0, &ball), "ball");
+    check(demill_wall_loads_start(w, floor), "loads");
+    check(demill_world_step(w, 500), "steps");
+    check(demill_vtk_write_walls(w, path("loads_walls.vtp")), "loads walls");
+    demill_world_destroy(w);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -211,5 +239,6 @@ int main(int argc, char **argv)
     scene2d();
     scene_empty_and_plane();
     scene_finite();
+    scene_loads();
     return EXIT_SUCCESS;
 }

@@ -33,28 +33,6 @@
 #define CELLS 10 /* floor cells along x and z, from -0.05 m */
 #define K 1e5    /* linear normal stiffness, N/m */
 
-/* A floor of CELLS × CELLS squares of side h from (x0, 0, x0) in the plane
- * y = 0, each cut by the same diagonal into two triangles, so that an inner
- * vertex is shared by six; into v (3 per vertex) and t (3 per triangle). */
-static void floor_grid(int cells, double h, double x0, double *v, uint32_t *t)
-{
-    const int n = cells + 1;
-    for (int i = 0; i < n; i++)
-        for (int j = 0; j < n; j++) {
-            double *p = v + 3 * (i * n + j);
-            p[0] = x0 + i * h;
-            p[1] = 0.0;
-            p[2] = x0 + j * h;
-        }
-    for (int i = 0; i < cells; i++)
-        for (int j = 0; j < cells; j++) {
-            const uint32_t a = (uint32_t)(i * n + j), b = a + (uint32_t)n, c = b + 1, d = a + 1;
-            uint32_t *q = t + 6 * (i * cells + j);
-            q[0] = a, q[1] = b, q[2] = c;
-            q[3] = a, q[4] = c, q[5] = d;
-        }
-}
-
 /* A world with gravity, the given integrator and one material whose pair
  * has a linear spring with restitution damping and a spring-slider. */
 static demill_world *floor_world(int dim, int refine, demill_id *mat)
@@ -95,7 +73,7 @@ static void add_floor(demill_world *w, int dim, demill_id mat, int mesh)
     }
     double v[3 * (CELLS + 1) * (CELLS + 1)];
     uint32_t t[6 * CELLS * CELLS];
-    floor_grid(CELLS, H, -0.05, v, t);
+    dm_test_floor_grid(CELLS, H, -0.05, v, t);
     DM_OK(w, demill_wall_add_mesh(w, mat, (CELLS + 1) * (CELLS + 1), v, 2 * CELLS * CELLS, t, &id));
 }
 
@@ -345,7 +323,7 @@ START_TEST(huge_and_tiny_triangles)
     double *v = malloc(3 * sizeof *v * (cells + 1) * (cells + 1));
     uint32_t *t = malloc(6 * sizeof *t * cells * cells);
     ck_assert(v && t);
-    floor_grid(cells, 0.001, -0.05, v, t);
+    dm_test_floor_grid(cells, 0.001, -0.05, v, t);
     carry_balls((size_t)(cells + 1) * (cells + 1), v, 2 * (size_t)cells * cells, t,
                 25 * (191 + 139));
     free(v);

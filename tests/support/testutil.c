@@ -147,3 +147,22 @@ dm_collision dm_test_hit_fixed(demill_world *w, demill_id mat, double r, double 
     DM_OK(w, demill_particles_remove(w, 2, ids));
     return o;
 }
+
+void dm_test_floor_grid(int cells, double h, double x0, double *v, uint32_t *t)
+{
+    const int n = cells + 1;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+            double *p = v + 3 * (i * n + j);
+            p[0] = x0 + i * h;
+            p[1] = 0.0;
+            p[2] = x0 + j * h;
+        }
+    for (int i = 0; i < cells; i++)
+        for (int j = 0; j < cells; j++) {
+            const uint32_t a = (uint32_t)(i * n + j), b = a + (uint32_t)n, c = b + 1, d = a + 1;
+            uint32_t *q = t + 6 * (i * cells + j);
+            q[0] = a, q[1] = b, q[2] = c;
+            q[3] = a, q[4] = c, q[5] = d;
+        }
+}

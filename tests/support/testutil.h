@@ -7,6 +7,12 @@
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
+/* A floor of cells × cells squares of side h from (x0, 0, x0) in the plane
+ * y = 0, each cut by the same diagonal into two triangles, so that an inner
+ * vertex is shared by six; into v (3 (cells + 1)² doubles, 3 per vertex) and
+ * t (6 cells² indices, 3 per triangle). */
+void dm_test_floor_grid(int cells, double h, double x0, double *v, uint32_t *t);
+
 #endif
 #include <demill.h>
 

@@ -48,6 +48,11 @@ void dm_results_free(demill_world *w);
 void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
                int tally);
 
+/* After a step of dt whose forces dm_forces() has just evaluated, friction
+ * seeing velocities vp, wp: the loads of the walls that record them
+ * (geometry/loads.c, docs/geometry.md, Wall loads); nothing when none does. */
+void dm_wall_loads_record(demill_world *w, const double *vp, const double *wp, double dt);
+
 /* One contact as a query sees it: between particles i and j (storage
  * slots), or particle i and wall slot j (wall = 1). */
 typedef struct dm_contact_eval {

@@ -1,5 +1,6 @@
 /* forces.c: one force evaluation (gravity, every contact bucket through its
  * kernel) and the read-only walk over contacts that queries use. */
+#include <math.h>
 #include <string.h>
 
 #include "base/threads.h"
@@ -109,50 +110,132 @@ static void sum_forces3(demill_world *w, void *arg, int t, uint32_t p0, uint32_t
     sum_forces(3, w, p0, p1);
 }
 
-/* The walls' forces and torques (about their centres) from their contacts'
- * results, in pair-id order; with tally, their dissipation and the work
- * they deliver over dt (but for the walls of bodies, whose energy the
- * account holds: what they deliver comes from it). */
-DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_tally *t)
+/* What the walks over the walls' contacts below need. */
+typedef struct wall_walk {
+    int tally;
+    double dt;
+    dm_tally *t;
+    const double *vp, *wp; /* the loads: the velocities friction saw */
+} wall_walk;
+
+typedef void (*wall_visit)(const int D, demill_world *w, const wall_walk *a,
+                           const dm_bucket *b, uint32_t p, uint32_t pid, uint32_t gk);
+
+/* Calls fn for every particle-wall pair with a result at the last force
+ * evaluation (p: its index in bucket b, pid: its pair id, gk: its geometry's
+ * index in w->wg), in pair-id order, which does not depend on the threads. */
+DM_INLINE void walk_walls(const int D, demill_world *w, const wall_walk *a, wall_visit fn)
 {
-    const int W = D == 3 ? 3 : 1, S = D + 2 * W;
     const dm_results *q = &w->res;
-    const dm_wgeom *g = &w->wg;
-    for (uint32_t k = 0; k < w->nwalls; k++) {
-        memset(w->walls[k].force, 0, sizeof w->walls[k].force);
-        memset(w->walls[k].torque, 0, sizeof w->walls[k].torque);
-    }
     for (int k = 0; k < DM_KERNELS; k++) {
         const dm_bucket *b = &w->pw.b[k];
         for (uint32_t k0 = 0; k0 < b->n; k0 += DM_CHUNK) {
             const uint32_t *list = q->list + b->base + k0;
             const uint32_t listed = q->chunk_listed[b->chunk0 + k0 / DM_CHUNK];
             for (uint32_t e = 0; e < listed; e++) {
-                const uint32_t p = list[e], pid = b->base + p, gk = pid - q->npp;
-                dm_wall *wall = &w->walls[b->j[p]];
-                const double *fw = q->out + (size_t)S * pid, *tw = fw + D + W;
-                double arm[3] = {0.0, 0.0, 0.0}, f3[3] = {0.0, 0.0, 0.0}, work = 0.0;
-                for (int c = 0; c < D; c++) {
-                    f3[c] = fw[c];
-                    wall->force[c] += fw[c];
-                    arm[c] = g->cp[D * gk + c] - wall->c[c];
-                    work -= fw[c] * g->vw[D * gk + c];
-                }
-                wall->torque[0] += arm[1] * f3[2] - arm[2] * f3[1];
-                wall->torque[1] += arm[2] * f3[0] - arm[0] * f3[2];
-                wall->torque[2] += arm[0] * f3[1] - arm[1] * f3[0];
-                for (int c = 0; c < W; c++) {
-                    const int z = D == 3 ? c : 2;
-                    wall->torque[z] += tw[c];
-                    work -= tw[c] * wall->omega[z];
-                }
-                if (tally) { /* a body's walls: work within the system (bodies.c) */
-                    wall->dissipated += g->lost[gk];
-                    t->wall_work += wall->body ? 0.0 : work * dt;
-                }
+                const uint32_t p = list[e], pid = b->base + p;
+                fn(D, w, a, b, p, pid, pid - q->npp);
             }
         }
     }
+}
+
+/* One contact's share of its wall's force and torque (about its centre);
+ * with tally, of its dissipation and the work it delivers over dt (but for
+ * the walls of bodies, whose energy the account holds: what they deliver
+ * comes from it). */
+DM_INLINE void wall_sum(const int D, demill_world *w, const wall_walk *a, const dm_bucket *b,
+                        uint32_t p, uint32_t pid, uint32_t gk)
+{
+    const int W = D == 3 ? 3 : 1, S = D + 2 * W;
+    const dm_wgeom *g = &w->wg;
+    dm_wall *wall = &w->walls[b->j[p]];
+    const double *fw = w->res.out + (size_t)S * pid, *tw = fw + D + W;
+    double arm[3] = {0.0, 0.0, 0.0}, f3[3] = {0.0, 0.0, 0.0}, work = 0.0;
+    for (int c = 0; c < D; c++) {
+        f3[c] = fw[c];
+        wall->force[c] += fw[c];
+        arm[c] = g->cp[D * gk + c] - wall->c[c];
+        work -= fw[c] * g->vw[D * gk + c];
+    }
+    wall->torque[0] += arm[1] * f3[2] - arm[2] * f3[1];
+    wall->torque[1] += arm[2] * f3[0] - arm[0] * f3[2];
+    wall->torque[2] += arm[0] * f3[1] - arm[1] * f3[0];
+    for (int c = 0; c < W; c++) {
+        const int z = D == 3 ? c : 2;
+        wall->torque[z] += tw[c];
+        work -= tw[c] * wall->omega[z];
+    }
+    if (a->tally) { /* a body's walls: work within the system (bodies.c) */
+        wall->dissipated += g->lost[gk];
+        a->t->wall_work += wall->body ? 0.0 : work * a->dt;
+    }
+}
+
+/* The walls' forces and torques from their contacts' results, in pair-id
+ * order; with tally, their dissipation and the work they deliver over dt. */
+DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_tally *t)
+{
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        memset(w->walls[k].force, 0, sizeof w->walls[k].force);
+        memset(w->walls[k].torque, 0, sizeof w->walls[k].torque);
+    }
+    const wall_walk a = {.tally = tally, .dt = dt, .t = t};
+    walk_walls(D, w, &a, wall_sum);
+}
+
+/* One contact's share of the loads of the element it touches, if its wall
+ * (a cap's: the wall it closes) records them: its normal force F·n (F the
+ * force on the wall, n the normal into it) now, F·n dt, and the power of its
+ * tangential force F_t = F − (F·n) n against the slip velocity, the velocity
+ * of the wall's surface relative to the particle's surface at the contact
+ * point (the wall's rigid and surface velocity, the particle's velocity and
+ * spin: what friction saw), |F_t · v| dt. */
+DM_INLINE void wall_load(const int D, demill_world *w, const wall_walk *a, const dm_bucket *b,
+                         uint32_t p, uint32_t pid, uint32_t gk)
+{
+    const int S = D + 2 * (D == 3 ? 3 : 1);
+    const dm_wall *wall = &w->walls[b->j[p]];
+    const dm_wall *owner = wall->parent ? &w->walls[wall->parent - 1] : wall;
+    if (!owner->loads)
+        return;
+    dm_loads *l = owner->loads;
+    double *v = l->v + DM_LOADS * (size_t)(owner->mesh ? b->t[p] : 0);
+    const double *f = w->res.out + (size_t)S * pid, *n = w->wg.nrm + D * gk;
+    dm_kin q;
+    dm_pw_kin(D, 1, 0, &w->p, a->vp, a->wp, &w->wg, gk, b->i[p], wall, &q);
+    double fn = 0.0, power = 0.0;
+    for (int c = 0; c < D; c++)
+        fn += f[c] * n[c];
+    for (int c = 0; c < D; c++)
+        power += (f[c] - fn * n[c]) * q.vc[c];
+    if (v[3] != l->steps) { /* the element's first contact of the step */
+        v[0] = 0.0;
+        v[3] = l->steps;
+    }
+    v[0] += fn;
+    v[1] += fn * a->dt;
+    v[2] += fabs(power) * a->dt;
+}
+
+void dm_wall_loads_record(demill_world *w, const double *vp, const double *wp, double dt)
+{
+    int any = 0;
+    for (uint32_t k = 0; k < w->nwalls; k++) { /* one test per wall */
+        dm_loads *l = w->walls[k].loads;
+        if (!l)
+            continue;
+        any = 1;
+        l->interval += dt;
+        l->steps += 1.0;
+    }
+    if (!any)
+        return;
+    const wall_walk a = {.dt = dt, .vp = vp, .wp = wp};
+    if (w->dim == 3)
+        walk_walls(3, w, &a, wall_load);
+    else
+        walk_walls(2, w, &a, wall_load);
 }
 
 typedef struct chunk_args {

@@ -74,8 +74,9 @@ dm_trimesh *dm_trimesh_build(int nel, uint32_t nv, const double *v, uint32_t nt,
                              const uint32_t *el);
 dm_trimesh *dm_trimesh_copy(const dm_trimesh *m);
 void dm_trimesh_free(dm_trimesh *m);
-/* Frees the meshes of every wall slot (the walls themselves stay). */
-void dm_walls_free_meshes(demill_world *w);
+/* Frees the meshes and the recorded loads of every wall slot (the walls
+ * themselves stay). */
+void dm_walls_free_owned(demill_world *w);
 /* Calls fn(ctx, t) for every element t closer than reach to x (the mesh's
  * frame), in the tree's order. */
 typedef void (*dm_near_fn)(void *ctx, uint32_t t);
@@ -109,5 +110,20 @@ int dm_walls_have_mesh(const demill_world *w);
  * another element takes its history along (a force evaluation that advances
  * the histories). */
 void dm_wgeom_meshes(demill_world *w, uint32_t begin, uint32_t end, int carry);
+
+/* ---- recorded loads (loads.c) ----------------------------------------------------- */
+/* The elements a wall's loads are kept for: a mesh's triangles or a
+ * polyline's segments, else 1 (the wall as one patch, with its caps). */
+uint32_t dm_loads_elements(const dm_wall *wall);
+/* Loads of n elements, all 0; NULL when out of memory. */
+dm_loads *dm_loads_new(uint32_t n);
+dm_loads *dm_loads_copy(const dm_loads *l);
+void dm_loads_free(dm_loads *l);
+/* Element e's normal force at the last step recorded. */
+double dm_loads_normal(const dm_loads *l, uint32_t e);
+/* The area of element e of the wall in slot `slot` (m²; a polyline's
+ * segment: its length, m): a triangle's, a segment's, a finite wall's with
+ * its caps; NaN for a plane. */
+double dm_loads_area(const demill_world *w, uint32_t slot, uint32_t e);
 
 #endif /* DM_GEOMETRY_H */

@@ -512,11 +512,13 @@ void dm_trimesh_free(dm_trimesh *m)
     free(m);
 }
 
-void dm_walls_free_meshes(demill_world *w)
+void dm_walls_free_owned(demill_world *w)
 {
     for (uint32_t k = 0; k < w->nwalls; k++) {
         dm_trimesh_free(w->walls[k].mesh);
         w->walls[k].mesh = NULL;
+        dm_loads_free(w->walls[k].loads);
+        w->walls[k].loads = NULL;
     }
 }
 

@@ -2,7 +2,8 @@
  * dm_integrate(): velocity Verlet (default), symplectic Euler and the
  * iterative refinement (refine.c). Each step
  * moves the particles, advances the walls, rebuilds the neighbour lists when
- * the skin is used up, and evaluates the forces of the new state. Bodies
+ * the skin is used up, evaluates the forces of the new state and adds them
+ * to the loads the walls record. Bodies
  * (bodies.c) take the same half steps as the particles.
  *
  * Velocity Verlet here differs from the usual DEM form in one respect: the
@@ -192,6 +193,7 @@ static demill_status finish_step(demill_world *w, double max_disp2, const double
             return s;
     }
     dm_forces(w, vp, wp, w->dt, reach, w->energy_tracking || w->events);
+    dm_wall_loads_record(w, vp, wp, w->dt);
     dm_drum_measure(w);
     return DEMILL_OK;
 }

@@ -472,6 +472,7 @@ static demill_status refine_step(demill_world *w)
     swap(&P->v, &P->vp); /* the accepted state moves with its end velocities */
     if (w->rotation)
         swap(&P->w, &P->wp);
+    dm_wall_loads_record(w, P->v, P->w, w->dt); /* once, from the accepted iterate */
     w->iterations_last = (uint32_t)k;
     w->force_evals += (uint64_t)k;
     w->unconverged += !done;

@@ -67,8 +67,10 @@ typedef struct dm_mesh {
     dm_cells line, poly;
     size_t nlines;         /* lines in all (from the count): where polygons start */
     uint64_t *wall;        /* per cell: the wall slot */
+    uint32_t *element;     /* per cell: the mesh element it draws, 0 for other walls */
     int32_t *part, *lifter;
     uint64_t cur_wall;     /* of the wall being drawn */
+    uint32_t cur_element;
     int32_t cur_part, cur_lifter;
 } dm_mesh;
 

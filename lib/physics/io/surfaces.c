@@ -35,6 +35,7 @@ static void cell(dm_mesh *m, int polygon, const size_t *v, size_t nv)
         c->off[c->n] = (int64_t)(c->nconn + nv);
         const size_t at = polygon ? m->nlines + c->n : c->n;
         m->wall[at] = m->cur_wall;
+        m->element[at] = m->cur_element;
         m->part[at] = m->cur_part;
         m->lifter[at] = m->cur_lifter;
     }
@@ -278,6 +279,7 @@ static void mesh_surface(dm_mesh *m, const dm_wall *wall)
     }
     for (uint32_t e = 0; e < t->nt; e++) {
         size_t v[3];
+        m->cur_element = e;
         for (int k = 0; k < t->nel; k++)
             v[k] = first + t->el[(size_t)t->nel * e + k];
         cell(m, t->nel == 3, v, (size_t)t->nel);
@@ -345,6 +347,7 @@ static void walls_mesh(dm_mesh *m, const demill_world *w)
         if (!wall->kind)
             continue;
         m->cur_wall = k;
+        m->cur_element = 0;
         m->cur_part = wall->drum_part;
         m->cur_lifter = wall->drum_part == DM_PART_LIFTER ? wall->lifter : -1;
         switch (dm_wall_attached(wall) ? DM_PART_NONE : wall->drum_part) {
@@ -374,9 +377,10 @@ int dm_walls_mesh(const demill_world *w, dm_mesh *out)
     m.line.conn = malloc((count.line.nconn + count.poly.nconn + 1) * sizeof *m.line.conn);
     m.line.off = malloc((ncells + 1) * sizeof *m.line.off);
     m.wall = malloc((ncells + 1) * sizeof *m.wall);
+    m.element = malloc((ncells + 1) * sizeof *m.element);
     m.part = malloc((ncells + 1) * sizeof *m.part);
     m.lifter = malloc((ncells + 1) * sizeof *m.lifter);
-    if (!(m.pt && m.line.conn && m.line.off && m.wall && m.part && m.lifter)) {
+    if (!(m.pt && m.line.conn && m.line.off && m.wall && m.element && m.part && m.lifter)) {
         dm_mesh_free(&m);
         return -1;
     }
@@ -393,6 +397,7 @@ void dm_mesh_free(dm_mesh *m)
     free(m->line.conn);
     free(m->line.off);
     free(m->wall);
+    free(m->element);
     free(m->part);
     free(m->lifter);
 }

@@ -98,6 +98,20 @@ typedef struct dm_trimesh {
 
 #define DM_MAX_POLY 8 /* vertices of a lifter's cross-section, at most */
 
+/* The loads a wall records (demill_wall_loads_start(); geometry/loads.c,
+ * summed by contact/forces.c), per element: a mesh's triangle or a
+ * polyline's segment, or the whole wall as one patch (with its caps). */
+typedef struct dm_loads {
+    uint32_t n;         /* elements */
+    double interval;    /* time recorded since the reset, s */
+    double steps;       /* steps recorded since the reset (a whole number) */
+    double v[];         /* DM_LOADS per element: the normal force (N) at the step
+                           numbered by the fourth (0 at any other step, so that a step
+                           touches only the elements in contact), its time integral
+                           (N s) and the shear work (J) since the reset */
+} dm_loads;
+#define DM_LOADS 4
+
 typedef struct dm_wall {
     uint32_t handle;       /* handle index (DM_FREE for the drum's walls) */
     uint32_t material;     /* material slot */
@@ -148,6 +162,7 @@ typedef struct dm_wall {
     double h_axis[3], h_amp, h_freq, h_phase, h_t0;
     int surface;           /* 1: surf0 is set */
     double surf0[3];       /* surface velocity, reference frame */
+    dm_loads *loads;       /* the loads it records (owned), NULL: none */
 } dm_wall;
 
 /* Wall kinds: a plane (half-space), the inside of a cylindrical shell about
