@@ -236,15 +236,22 @@ START_TEST(attaching_moves_nothing)
 }
 END_TEST
 
-/* Every particle's position and velocity, in id order. */
-static double *state_of(demill_world *w, size_t *n)
+/* The copy's drum has the energy in of the original's, and its wall is
+ * still attached: a second attachment is refused. */
+static void mesh_attached(demill_world *w, demill_world *v, int way, void *ctx)
 {
-    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_POSITION, NULL, 0, n));
-    double *x = malloc(6 * *n * sizeof *x);
-    ck_assert(x);
-    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_POSITION, x, 3 * *n, n));
-    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_VELOCITY, x + 3 * *n, 3 * *n, n));
-    return x;
+    (void)way;
+    const demill_id drum = *(const demill_id *)ctx;
+    demill_id ids[2];
+    size_t nd;
+    double energy0, energy1;
+    DM_OK(v, demill_world_ids(v, DEMILL_KIND_DRUM, ids, 1, &nd));
+    DM_OK(v, demill_world_ids(v, DEMILL_KIND_WALL, ids + 1, 1, &nd));
+    DM_OK(w, demill_drum_get(w, drum, DEMILL_DRUM_ENERGY_IN, &energy0));
+    DM_OK(v, demill_drum_get(v, ids[0], DEMILL_DRUM_ENERGY_IN, &energy1));
+    ck_assert(energy0 != 0.0 && energy0 == energy1);
+    ck_assert_int_eq(demill_drum_attach_wall(v, ids[0], ids[1], DEMILL_DRUM_PART_SHELL),
+                     DEMILL_ERR_INVALID_VALUE);
 }
 
 START_TEST(checkpoint_and_snapshot_carry_the_attachment)
@@ -254,43 +261,7 @@ START_TEST(checkpoint_and_snapshot_carry_the_attachment)
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_SPEED, 3.0));
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_GRAVITY_Y, -9.81));
     DM_OK(w, demill_world_step(w, 300));
-    size_t size, n0, n1;
-    DM_OK(w, demill_world_save_buffer(w, NULL, 0, &size));
-    void *bytes = malloc(size);
-    ck_assert(bytes);
-    DM_OK(w, demill_world_save_buffer(w, bytes, size, &size));
-    demill_snapshot *snap;
-    DM_OK(w, demill_snapshot_take(w, &snap));
-    DM_OK(w, demill_world_step(w, 500));
-    double *ref = state_of(w, &n0), energy0;
-    DM_OK(w, demill_drum_get(w, drum, DEMILL_DRUM_ENERGY_IN, &energy0));
-    for (int way = 0; way < 2; way++) {
-        demill_world *v;
-        ck_assert_int_eq(demill_world_create(3, &v), DEMILL_OK);
-        if (way)
-            DM_OK(v, demill_snapshot_restore(v, snap));
-        else
-            DM_OK(v, demill_world_load_buffer(v, bytes, size));
-        demill_id ids[2];
-        size_t nd;
-        DM_OK(v, demill_world_ids(v, DEMILL_KIND_DRUM, ids, 1, &nd));
-        DM_OK(v, demill_world_ids(v, DEMILL_KIND_WALL, ids + 1, 1, &nd));
-        DM_OK(v, demill_world_step(v, 500));
-        double *got = state_of(v, &n1), energy1;
-        DM_OK(v, demill_drum_get(v, ids[0], DEMILL_DRUM_ENERGY_IN, &energy1));
-        ck_assert_uint_eq(n0, n1);
-        ck_assert_msg(memcmp(ref, got, 6 * n0 * sizeof *ref) == 0 && energy0 == energy1,
-                      "%s: the run differs", way ? "snapshot" : "checkpoint");
-        /* the wall is still attached: a second attachment is refused */
-        ck_assert_int_eq(demill_drum_attach_wall(v, ids[0], ids[1], DEMILL_DRUM_PART_SHELL),
-                         DEMILL_ERR_INVALID_VALUE);
-        free(got);
-        demill_world_destroy(v);
-    }
-    ck_assert(energy0 != 0.0);
-    free(ref);
-    free(bytes);
-    demill_snapshot_free(snap);
+    dm_test_copies_run_on(w, 500, mesh_attached, &drum);
     demill_world_destroy(w);
 }
 END_TEST

@@ -292,15 +292,29 @@ START_TEST(finite_walls_turn_with_the_drum)
 }
 END_TEST
 
-/* Every particle's position and velocity, in id order. */
-static double *state_of(demill_world *w, size_t *n)
+/* The copy's drum has the energy in of the original's; its three finite
+ * walls are still attached, and go with the drum, caps and all. */
+static void finite_walls_attached(demill_world *w, demill_world *v, int way, void *ctx)
 {
-    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_POSITION, NULL, 0, n));
-    double *x = malloc(6 * *n * sizeof *x);
-    ck_assert(x);
-    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_POSITION, x, 3 * *n, n));
-    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_VELOCITY, x + 3 * *n, 3 * *n, n));
-    return x;
+    (void)way;
+    const demill_id drum = *(const demill_id *)ctx;
+    demill_id d, found[4];
+    size_t nd, nw;
+    double energy0, energy1;
+    DM_OK(v, demill_world_ids(v, DEMILL_KIND_DRUM, &d, 1, &nd));
+    DM_OK(v, demill_world_ids(v, DEMILL_KIND_WALL, found, 4, &nw));
+    ck_assert_uint_eq(nw, 3); /* the cylinder's caps have no ids */
+    DM_OK(w, demill_drum_get(w, drum, DEMILL_DRUM_ENERGY_IN, &energy0));
+    DM_OK(v, demill_drum_get(v, d, DEMILL_DRUM_ENERGY_IN, &energy1));
+    ck_assert(energy0 != 0.0 && energy0 == energy1);
+    for (size_t k = 0; k < nw; k++) /* still attached */
+        ck_assert_int_eq(demill_drum_attach_wall(v, d, found[k], DEMILL_DRUM_PART_SHELL),
+                         DEMILL_ERR_INVALID_VALUE);
+    DM_OK(v, demill_drum_remove(v, d));
+    DM_OK(v, demill_world_ids(v, DEMILL_KIND_WALL, NULL, 0, &nw));
+    ck_assert_uint_eq(nw, 0);
+    for (uint32_t k = 0; k < v->nwalls; k++)
+        ck_assert_int_eq(v->walls[k].kind, 0);
 }
 
 START_TEST(checkpoint_and_snapshot_carry_finite_walls)
@@ -314,50 +328,7 @@ START_TEST(checkpoint_and_snapshot_carry_finite_walls)
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_VIBRATION_FREQUENCY, 5.0));
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_GRAVITY_Y, -9.81));
     DM_OK(w, demill_world_step(w, 300));
-    size_t size, n0, n1;
-    DM_OK(w, demill_world_save_buffer(w, NULL, 0, &size));
-    void *bytes = malloc(size);
-    ck_assert(bytes);
-    DM_OK(w, demill_world_save_buffer(w, bytes, size, &size));
-    demill_snapshot *snap;
-    DM_OK(w, demill_snapshot_take(w, &snap));
-    DM_OK(w, demill_world_step(w, 500));
-    double *ref = state_of(w, &n0), energy0;
-    DM_OK(w, demill_drum_get(w, drum, DEMILL_DRUM_ENERGY_IN, &energy0));
-    ck_assert(energy0 != 0.0);
-    for (int way = 0; way < 2; way++) {
-        demill_world *v;
-        ck_assert_int_eq(demill_world_create(3, &v), DEMILL_OK);
-        if (way)
-            DM_OK(v, demill_snapshot_restore(v, snap));
-        else
-            DM_OK(v, demill_world_load_buffer(v, bytes, size));
-        demill_id d, found[4];
-        size_t nd, nw;
-        DM_OK(v, demill_world_ids(v, DEMILL_KIND_DRUM, &d, 1, &nd));
-        DM_OK(v, demill_world_ids(v, DEMILL_KIND_WALL, found, 4, &nw));
-        ck_assert_uint_eq(nw, 3); /* the cylinder's caps have no ids */
-        DM_OK(v, demill_world_step(v, 500));
-        double *got = state_of(v, &n1), energy1;
-        DM_OK(v, demill_drum_get(v, d, DEMILL_DRUM_ENERGY_IN, &energy1));
-        ck_assert_uint_eq(n0, n1);
-        ck_assert_msg(memcmp(ref, got, 6 * n0 * sizeof *ref) == 0 && energy0 == energy1,
-                      "%s: the run differs", way ? "snapshot" : "checkpoint");
-        for (size_t k = 0; k < nw; k++) /* still attached */
-            ck_assert_int_eq(demill_drum_attach_wall(v, d, found[k], DEMILL_DRUM_PART_SHELL),
-                             DEMILL_ERR_INVALID_VALUE);
-        /* the drum takes them with it, caps and all */
-        DM_OK(v, demill_drum_remove(v, d));
-        DM_OK(v, demill_world_ids(v, DEMILL_KIND_WALL, NULL, 0, &nw));
-        ck_assert_uint_eq(nw, 0);
-        for (uint32_t k = 0; k < v->nwalls; k++)
-            ck_assert_int_eq(v->walls[k].kind, 0);
-        free(got);
-        demill_world_destroy(v);
-    }
-    free(ref);
-    free(bytes);
-    demill_snapshot_free(snap);
+    dm_test_copies_run_on(w, 500, finite_walls_attached, &drum);
     demill_world_destroy(w);
 }
 END_TEST

@@ -331,7 +331,7 @@ START_TEST(huge_and_tiny_triangles)
 }
 END_TEST
 
-#define NBOX 1100 /* balls in the box: two ranges of particles for two threads */
+#define NBOX DM_TEST_BOX_BALLS
 
 /* A box of four walls and a floor, one mesh of 10 triangles, turning about
  * y and z, with NBOX balls of 2.5-3.4 mm tumbling in it. */
@@ -340,24 +340,7 @@ static demill_world *box_scene(int threads)
     demill_id mat, box;
     demill_world *w = floor_world(3, 0, &mat);
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_THREADS, threads));
-    const double a = 0.05;
-    const double v[] = {-a, 0, -a, a, 0, -a, a, 0, a, -a, 0, a,
-                        -a, 2 * a, -a, a, 2 * a, -a, a, 2 * a, a, -a, 2 * a, a};
-    const uint32_t t[] = {0, 1, 2, 0, 2, 3, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5,
-                          2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
-    DM_OK(w, demill_wall_add_mesh(w, mat, 8, v, 10, t, &box));
-    const double om[3] = {0, 3.0, 0.5};
-    DM_OK(w, demill_wall_set_motion(w, box, NULL, om, NULL));
-    double *x = malloc(3 * NBOX * sizeof *x), r[NBOX];
-    ck_assert_ptr_nonnull(x);
-    for (int k = 0; k < NBOX; k++) {
-        x[3 * k] = 0.008 * (k % 11 - 5) + 0.001 * (k % 2);
-        x[3 * k + 1] = 0.006 + 0.008 * (k / 110);
-        x[3 * k + 2] = 0.008 * (k / 11 % 10) - 0.036;
-        r[k] = 0.0025 + 0.0003 * (k % 4);
-    }
-    DM_OK(w, demill_particles_add(w, mat, NBOX, x, r, NULL, 0, NULL));
-    free(x);
+    dm_test_tumbling_box(w, mat, &box);
     DM_OK(w, demill_world_step(w, 2000));
     return w;
 }

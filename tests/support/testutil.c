@@ -2,6 +2,7 @@
 #include "testutil.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 demill_world *dm_test_world(int dim, int normal, int damping, demill_id *material)
 {
@@ -165,4 +166,70 @@ void dm_test_floor_grid(int cells, double h, double x0, double *v, uint32_t *t)
             q[0] = a, q[1] = b, q[2] = c;
             q[3] = a, q[4] = c, q[5] = d;
         }
+}
+
+void dm_test_tumbling_box(demill_world *w, demill_id mat, demill_id *box)
+{
+    const double a = 0.05;
+    const double v[] = {-a, 0, -a, a, 0, -a, a, 0, a, -a, 0, a,
+                        -a, 2 * a, -a, a, 2 * a, -a, a, 2 * a, a, -a, 2 * a, a};
+    const uint32_t t[] = {0, 1, 2, 0, 2, 3, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5,
+                          2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+    DM_OK(w, demill_wall_add_mesh(w, mat, 8, v, 10, t, box));
+    const double om[3] = {0, 3.0, 0.5};
+    DM_OK(w, demill_wall_set_motion(w, *box, NULL, om, NULL));
+    enum { N = DM_TEST_BOX_BALLS };
+    double *x = malloc(3 * N * sizeof *x), r[N];
+    ck_assert_ptr_nonnull(x);
+    for (int k = 0; k < N; k++) {
+        x[3 * k] = 0.008 * (k % 11 - 5) + 0.001 * (k % 2);
+        x[3 * k + 1] = 0.006 + 0.008 * (k / 110);
+        x[3 * k + 2] = 0.008 * (k / 11 % 10) - 0.036;
+        r[k] = 0.0025 + 0.0003 * (k % 4);
+    }
+    DM_OK(w, demill_particles_add(w, mat, N, x, r, NULL, 0, NULL));
+    free(x);
+}
+
+double *dm_test_state(demill_world *w, size_t *n)
+{
+    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_POSITION, NULL, 0, n));
+    double *x = malloc(6 * *n * sizeof *x);
+    ck_assert(x);
+    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_POSITION, x, 3 * *n, n));
+    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_VELOCITY, x + 3 * *n, 3 * *n, n));
+    return x;
+}
+
+void dm_test_copies_run_on(demill_world *w, uint64_t steps, dm_test_copy_fn check, void *ctx)
+{
+    size_t size, n0, n1;
+    DM_OK(w, demill_world_save_buffer(w, NULL, 0, &size));
+    void *bytes = malloc(size);
+    ck_assert(bytes);
+    DM_OK(w, demill_world_save_buffer(w, bytes, size, &size));
+    demill_snapshot *snap;
+    DM_OK(w, demill_snapshot_take(w, &snap));
+    DM_OK(w, demill_world_step(w, steps));
+    double *ref = dm_test_state(w, &n0);
+    for (int way = 0; way < 2; way++) {
+        demill_world *v;
+        ck_assert_int_eq(demill_world_create(3, &v), DEMILL_OK);
+        if (way)
+            DM_OK(v, demill_snapshot_restore(v, snap));
+        else
+            DM_OK(v, demill_world_load_buffer(v, bytes, size));
+        DM_OK(v, demill_world_step(v, steps));
+        double *got = dm_test_state(v, &n1);
+        ck_assert_uint_eq(n0, n1);
+        ck_assert_msg(memcmp(ref, got, 6 * n0 * sizeof *ref) == 0, "%s: the run differs",
+                      way ? "snapshot" : "checkpoint");
+        if (check)
+            check(w, v, way, ctx);
+        free(got);
+        demill_world_destroy(v);
+    }
+    free(ref);
+    free(bytes);
+    demill_snapshot_free(snap);
 }

@@ -7,14 +7,34 @@
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
+#endif
+#include <demill.h>
+
 /* A floor of cells × cells squares of side h from (x0, 0, x0) in the plane
  * y = 0, each cut by the same diagonal into two triangles, so that an inner
  * vertex is shared by six; into v (3 (cells + 1)² doubles, 3 per vertex) and
  * t (6 cells² indices, 3 per triangle). */
 void dm_test_floor_grid(int cells, double h, double x0, double *v, uint32_t *t);
 
-#endif
-#include <demill.h>
+/* A box of four walls and a floor, one mesh of 10 triangles (0.1 m wide and
+ * high, open at the top, its floor at y = 0), turning at 3 rad/s about y
+ * and 0.5 rad/s about z, with DM_TEST_BOX_BALLS balls of 2.5-3.4 mm of
+ * material mat in it (enough for two particle ranges on two threads);
+ * the box's id in *box. */
+#define DM_TEST_BOX_BALLS 1100
+void dm_test_tumbling_box(demill_world *w, demill_id mat, demill_id *box);
+
+/* Every particle's position, then every velocity (3D), in id order, in a
+ * new array of 6 n doubles (free it). */
+double *dm_test_state(demill_world *w, size_t *n);
+
+/* Saves world w to checkpoint bytes and to a snapshot, steps it `steps`,
+ * and for each copy (way 0: the checkpoint loaded, 1: the snapshot
+ * restored, into new 3D worlds) steps the copy the same and asserts every
+ * position and velocity bitwise equal to w's, then calls check(w, copy,
+ * way, ctx) (may be NULL) before destroying the copy. */
+typedef void (*dm_test_copy_fn)(demill_world *w, demill_world *copy, int way, void *ctx);
+void dm_test_copies_run_on(demill_world *w, uint64_t steps, dm_test_copy_fn check, void *ctx);
 
 /* Fails the test with the world's message unless the call returns DEMILL_OK. */
 #define DM_OK(world, call)                                                                         \
