@@ -38,6 +38,11 @@ void dm_wall_detach_body(demill_world *w, dm_wall *wall);
 /* Signed distance of x from the wall's surface (positive on the particle
  * side), and the unit normal from x into the wall. */
 double dm_wall_closest(const dm_wall *wall, const double *x, int dim, double *normal);
+
+/* A unit vector q perpendicular to the unit vector n (n crossed with the
+ * coordinate axis least aligned with it). */
+void dm_perpendicular(const double n[3], double q[3]);
+
 double dm_wall_distance(const dm_wall *wall, const double *x, int dim);
 /* A lower bound of dm_wall_distance(), cheaper. */
 double dm_wall_distance_bound(const dm_wall *wall, const double *x, int dim);

@@ -273,8 +273,7 @@ static void to_reference(const dm_wall *wall, const double *x, double d[3])
                (wall->p0[c] - wall->c0[c]);
 }
 
-/* A unit vector perpendicular to the unit vector n. */
-static void perpendicular(const double n[3], double q[3])
+void dm_perpendicular(const double n[3], double q[3])
 {
     int a = 0;
     for (int k = 1; k < 3; k++)
@@ -310,7 +309,7 @@ static double revolved_closest(const dm_wall *wall, const double d[3], double nl
         for (int c = 0; c < 3; c++)
             q[c] /= rho;
     else
-        perpendicular(e, q);
+        dm_perpendicular(e, q);
     const double sx = sg[2] - sg[0], sy = sg[3] - sg[1], len = sqrt(sx * sx + sy * sy);
     const double mx = -sy / len, my = sx / len; /* the segment's unit normal */
     const double t = ((rho - sg[0]) * sx + (h - sg[1]) * sy) / (len * len);

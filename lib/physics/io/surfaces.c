@@ -81,17 +81,7 @@ static double scene_box(const demill_world *w, double centre[3])
 /* Two unit vectors u, v with (u, v, n) right-handed, n a unit vector. */
 static void frame_about(const double n[3], double u[3], double v[3])
 {
-    int a = 0;
-    for (int k = 1; k < 3; k++)
-        a = fabs(n[k]) < fabs(n[a]) ? k : a;
-    double e[3] = {0, 0, 0};
-    e[a] = 1.0;
-    u[0] = n[1] * e[2] - n[2] * e[1];
-    u[1] = n[2] * e[0] - n[0] * e[2];
-    u[2] = n[0] * e[1] - n[1] * e[0];
-    const double len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (int k = 0; k < 3; k++)
-        u[k] /= len;
+    dm_perpendicular(n, u);
     v[0] = n[1] * u[2] - n[2] * u[1];
     v[1] = n[2] * u[0] - n[0] * u[2];
     v[2] = n[0] * u[1] - n[1] * u[0];
