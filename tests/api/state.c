@@ -440,6 +440,20 @@ static void refused(demill_world *w, bytes before, const unsigned char *bad, siz
     free(now.b);
 }
 
+/* Writes `len` bytes of `patch` at offset `at` of a copy of the good
+ * checkpoint (into scratch, good.n bytes), repairs its checksum, and checks
+ * that loading it into w is refused with DEMILL_ERR_FORMAT and `word`,
+ * leaving w's bytes as `before`. */
+static void refused_patched(demill_world *w, bytes before, bytes good, unsigned char *scratch,
+                            size_t at, const void *patch, size_t len, const char *word,
+                            const char *what)
+{
+    memcpy(scratch, good.b, good.n);
+    memcpy(scratch + at, patch, len);
+    dm_test_ckpt_repair(scratch, good.n);
+    refused(w, before, scratch, good.n, DEMILL_ERR_FORMAT, word, what);
+}
+
 /* Frees what a refusal test made: its two worlds, the good checkpoint, the
  * target's before loading, and the corrupted copy. */
 static void release(demill_world *w, demill_world *target, bytes good, bytes before, void *bad)
@@ -597,10 +611,8 @@ START_TEST(drum_values_the_api_refuses_are_refused)
     ck_assert_ptr_nonnull(bad);
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         const size_t at = unique_offset(good, &cases[c].value, 8);
-        memcpy(bad, good.b, good.n);
-        memcpy(bad + at, &cases[c].bad, 8);
-        dm_test_ckpt_repair(bad, good.n);
-        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, cases[c].word, cases[c].word);
+        refused_patched(target, before, good, bad, at, &cases[c].bad, 8, cases[c].word,
+                        cases[c].word);
     }
     /* unchanged, it loads */
     DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
@@ -636,10 +648,8 @@ START_TEST(finite_wall_values_the_api_refuses_are_refused)
     ck_assert_ptr_nonnull(bad);
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         const size_t at = unique_offset(good, &cases[c].value, 8);
-        memcpy(bad, good.b, good.n);
-        memcpy(bad + at, &cases[c].bad, 8);
-        dm_test_ckpt_repair(bad, good.n);
-        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, cases[c].word, "a finite wall");
+        refused_patched(target, before, good, bad, at, &cases[c].bad, 8, cases[c].word,
+                        "a finite wall");
     }
     DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
     release(w, target, good, before, bad);
@@ -678,10 +688,8 @@ START_TEST(wall_loads_the_api_would_not_make_are_refused)
     unsigned char *bad = malloc(good.n);
     ck_assert_ptr_nonnull(bad);
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
-        memcpy(bad, good.b, good.n);
-        memcpy(bad + at + cases[c].offset, cases[c].bad, cases[c].len);
-        dm_test_ckpt_repair(bad, good.n);
-        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, cases[c].word, "wall loads");
+        refused_patched(target, before, good, bad, at + cases[c].offset, cases[c].bad,
+                        cases[c].len, cases[c].word, "wall loads");
     }
     DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
     release(w, target, good, before, bad);
@@ -716,10 +724,8 @@ START_TEST(impact_recordings_not_finite_are_refused)
     unsigned char *bad = malloc(good.n);
     ck_assert_ptr_nonnull(bad);
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
-        memcpy(bad, good.b, good.n);
-        memcpy(bad + at + cases[c].offset, &cases[c].bad, 8);
-        dm_test_ckpt_repair(bad, good.n);
-        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "not finite", "impacts");
+        refused_patched(target, before, good, bad, at + cases[c].offset, &cases[c].bad, 8,
+                        "not finite", "impacts");
     }
     /* unchanged, it loads */
     DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
@@ -1000,10 +1006,8 @@ START_TEST(values_not_finite_are_refused)
                 found++;
             }
         ck_assert_uint_eq(found, 1);
-        memcpy(bad, good.b, good.n);
-        memcpy(bad + at, &bad_values[c], 8);
-        dm_test_ckpt_repair(bad, good.n);
-        refused(target, before, bad, good.n, DEMILL_ERR_FORMAT, "not finite", "a value");
+        refused_patched(target, before, good, bad, at, &bad_values[c], 8, "not finite",
+                        "a value");
     }
     release(w, target, good, before, bad);
 
