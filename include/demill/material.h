@@ -93,8 +93,14 @@ enum {
     DEMILL_ROLLING_CONSTANT_TORQUE = 1
 };
 
+/** Cohesion laws, the values of DEMILL_PAIR_COHESION. */
+enum {
+    /** No cohesion (default): the pair interacts only while it overlaps. */
+    DEMILL_COHESION_NONE = 0
+};
+
 /** Material pair parameter keys (demill_pair_set(), demill_pair_get()).
- *  The four law keys choose the contact model; the others tune it. Keys
+ *  The five law keys choose the contact model; the others tune it. Keys
  *  marked "derived" take their value from the two materials until set for
  *  the pair. */
 enum {
@@ -102,6 +108,7 @@ enum {
     DEMILL_PAIR_DAMPING = 301,     /**< normal damping law, DEMILL_DAMPING_* */
     DEMILL_PAIR_TANGENTIAL = 302,  /**< tangential law, DEMILL_TANGENTIAL_* */
     DEMILL_PAIR_ROLLING = 303,     /**< rolling resistance law, DEMILL_ROLLING_* */
+    DEMILL_PAIR_COHESION = 304,    /**< cohesion law, DEMILL_COHESION_* */
     /** Restitution in [0, 1]; derived: mean of the two materials'. */
     DEMILL_PAIR_RESTITUTION = 310,
     /** Sliding friction μ >= 0; derived: mean of the two materials'. */
@@ -173,7 +180,8 @@ DEMILL_API demill_status demill_material_get(const demill_world *world, demill_i
  *  @param b     the other material's id (may equal a).
  *  @param key   a DEMILL_PAIR_* key.
  *  @param value the new value: a choice (DEMILL_NORMAL_*, DEMILL_DAMPING_*,
- *               DEMILL_TANGENTIAL_*, DEMILL_ROLLING_*) for a law key, else a
+ *               DEMILL_TANGENTIAL_*, DEMILL_ROLLING_*, DEMILL_COHESION_*)
+ *               for a law key, else a
  *               number in the key's unit.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE or

@@ -79,11 +79,11 @@ enum {
     DEMILL_ENERGY_DISSIPATED_NORMAL = 7,     /**< by normal damping (and by the normal-force clamp) */
     DEMILL_ENERGY_DISSIPATED_TANGENTIAL = 8, /**< by the tangential dashpot and the Coulomb regularisation below the cap */
     DEMILL_ENERGY_DISSIPATED_FRICTION = 9,   /**< by sliding friction (slip at the Coulomb cap) */
-    DEMILL_ENERGY_DISSIPATED_ROLLING = 10,   /**< by rolling resistance */
-    DEMILL_ENERGY_DISSIPATED = 11,           /**< sum of terms 7 to 10 */
-    /** Balance: kinetic + potential + elastic + dissipated - wall work -
-     *  DEMILL_ENERGY_FLOW, with the bodies' terms: + 14 + 15 + 16 + 17 -
-     *  18. It stays constant up to integration error between changes made
+    DEMILL_ENERGY_DISSIPATED_ROLLING = 10,   /**< by rolling friction: the constant torque, or the rolling spring's slip */
+    DEMILL_ENERGY_DISSIPATED = 11,           /**< every dissipation term summed: 7 to 10, 19 to 21 */
+    /** Balance: kinetic + potential + elastic (4, 5, 23) + dissipated (11)
+     *  + work against cohesion (22) - wall work - DEMILL_ENERGY_FLOW, with
+     *  the bodies' terms: + 14 + 15 + 16 + 17 - 18. It stays constant up to integration error between changes made
      *  through the API (adding, removing or writing particles or bodies); an
      *  outlet also takes out the elastic energy of the contacts of the
      *  particles it removes, which it does not count. */
@@ -96,12 +96,21 @@ enum {
     DEMILL_ENERGY_BODY_ELASTIC = 15,    /**< stored in the bodies' springs: Σ 1/2 k (x - rest)² */
     DEMILL_ENERGY_BODY_POTENTIAL = 16,  /**< the bodies' gravitational energy, -Σ m g·x (bodies gravity acts on) */
     DEMILL_ENERGY_BODY_DISSIPATED = 17, /**< by the bodies' dampers */
-    DEMILL_ENERGY_BODY_WORK = 18        /**< done on the bodies by their external forces */
+    DEMILL_ENERGY_BODY_WORK = 18,       /**< done on the bodies by their external forces */
+    DEMILL_ENERGY_DISSIPATED_PLASTIC = 19,         /**< by plastic deformation (the elasto-plastic normal laws) */
+    DEMILL_ENERGY_DISSIPATED_ROLLING_VISCOUS = 20, /**< by the rolling dashpot */
+    DEMILL_ENERGY_DISSIPATED_LOCAL = 21,           /**< by local (non-viscous) damping */
+    /** Work done against the cohesive forces (adhesion, liquid bridges):
+     *  positive while they are pulled apart, negative while they pull the
+     *  particles together. */
+    DEMILL_ENERGY_COHESION = 22,
+    DEMILL_ENERGY_ELASTIC_ROLLING = 23             /**< stored in rolling springs */
 };
 
 /** Reads one energy term of the world. The terms that include the energy
  *  stored in the contacts (DEMILL_ENERGY_ELASTIC_NORMAL,
- *  DEMILL_ENERGY_ELASTIC_TANGENTIAL, DEMILL_ENERGY_TOTAL) bring stale
+ *  DEMILL_ENERGY_ELASTIC_TANGENTIAL, DEMILL_ENERGY_ELASTIC_ROLLING,
+ *  DEMILL_ENERGY_TOTAL) bring stale
  *  neighbour lists up to date first, as demill_contacts_read() does.
  *  @param world      the world.
  *  @param term       a DEMILL_ENERGY_* term.

@@ -59,6 +59,7 @@ static const param_info params[] = {
     {DEMILL_PAIR_DAMPING, "pair.damping", "enum", 0, 2, 0, WHOLE},
     {DEMILL_PAIR_TANGENTIAL, "pair.tangential", "enum", 0, 3, 0, WHOLE},
     {DEMILL_PAIR_ROLLING, "pair.rolling", "enum", 0, 1, 0, WHOLE},
+    {DEMILL_PAIR_COHESION, "pair.cohesion", "enum", 0, 0, 0, WHOLE},
     {DEMILL_PAIR_RESTITUTION, "pair.restitution", "1", 0, 1, 0.5, 0},
     {DEMILL_PAIR_FRICTION, "pair.friction", "1", 0, 1e6, 0.5, 0},
     {DEMILL_PAIR_ROLLING_FRICTION, "pair.rolling_friction", "1", 0, 1e6, 0, 0},

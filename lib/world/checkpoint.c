@@ -659,9 +659,10 @@ static void transfer(io *s, demill_world *w)
     io_f64(s, w->grid.lo, 3);
     io_f64(s, w->grid.hi, 3);
     dm_tally *ty = &w->tally;
-    double *const tally[] = {&ty->diss_normal, &ty->diss_tangential, &ty->diss_friction,
-                             &ty->diss_rolling, &ty->wall_work};
-    for (int k = 0; k < 5; k++)
+    double *const tally[] = {&ty->diss_normal,  &ty->diss_tangential,      &ty->diss_friction,
+                             &ty->diss_rolling, &ty->wall_work,            &ty->diss_plastic,
+                             &ty->diss_rolling_viscous, &ty->work_cohesion, &ty->diss_local};
+    for (int k = 0; k < (s->format < 3 ? 5 : 9); k++)
         io_f64(s, tally[k], 1);
 
     io_section(s, "MATS");
@@ -680,12 +681,15 @@ static void transfer(io *s, demill_world *w)
     io_array(s, &w->pairs, 0, w->npairs, sizeof *w->pairs);
     for (uint32_t k = 0; k < w->npairs && !s->status; k++) {
         dm_pair_user *u = &w->pairs[k];
+        if (s->reading) /* what older formats do not hold: none, and unset */
+            memset(u, 0, sizeof *u);
         io_u32(s, &u->a, 1);
         io_u32(s, &u->b, 1);
-        int *const law[] = {&u->normal, &u->damping, &u->tangential, &u->rolling};
-        for (int l = 0; l < 4; l++)
+        int *const law[] = {&u->normal, &u->damping, &u->tangential, &u->rolling,
+                            &u->cohesion};
+        for (int l = 0; l < (s->format < 3 ? 4 : 5); l++)
             io_int(s, law[l]);
-        io_f64(s, u->value, DM_PK_COUNT);
+        io_f64(s, u->value, s->format < 3 ? DM_PK_COUNT_V2 : DM_PK_COUNT);
         io_u32(s, &u->set, 1);
     }
 
@@ -735,10 +739,29 @@ static void transfer(io *s, demill_world *w)
     }
 
     io_section(s, "CONT");
+    /* the lists of the kernels up to the last that holds pairs (before
+     * format 3, of the fast ones, which were all there were); the others
+     * are empty */
+    uint32_t lists = DM_FAST_KERNELS;
+    if (s->format >= 3) {
+        for (lists = s->reading ? 0 : (uint32_t)w->nkern; lists > DM_FAST_KERNELS &&
+                                                         !w->pp.b[lists - 1].n &&
+                                                         !w->pw.b[lists - 1].n;)
+            lists--;
+        io_count(s, &lists, DM_KERNELS, "contact lists");
+    }
     for (int side = 0; side < 2; side++)
-        for (int k = 0; k < DM_KERNELS; k++)
+        for (int k = 0; k < (int)lists; k++)
             transfer_bucket(s, side ? &w->pw.b[k] : &w->pp.b[k], k, w->dim, w->events,
                             w->nlist_valid);
+    for (int side = 0; side < 2 && s->reading; side++)
+        for (int k = (int)lists; k < DM_KERNELS; k++) { /* empty, in their layout */
+            dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
+            b->kernel = k;
+            b->hs = dm_kernel_hist_size(k, w->dim) + w->events;
+        }
+    if (s->reading) /* every list may hold pairs until the pair table is resolved */
+        w->nkern = (int)lists;
     transfer_meshes(s, w);
     if (s->format >= 3)
         transfer_flows(s, &w->flows);
@@ -827,8 +850,8 @@ static demill_status check_params(demill_world *t)
                            u->b);
         if (u->set >> DM_PK_COUNT)
             return dm_fail(t, DEMILL_ERR_FORMAT, "pair %u overrides unknown keys", k);
-        const int law[] = {u->normal, u->damping, u->tangential, u->rolling};
-        for (int l = 0; l < 4; l++)
+        const int law[] = {u->normal, u->damping, u->tangential, u->rolling, u->cohesion};
+        for (int l = 0; l < 5; l++)
             if (law[l] && (s = check_param(t, DEMILL_PAIR_NORMAL + l, law[l])))
                 return s;
         for (int32_t key = 300; key < 400; key++)

@@ -20,14 +20,14 @@ static demill_status prepare_query(demill_world *w)
 static void add_stored(void *ctx, const dm_contact_eval *c)
 {
     double *e = ctx;
-    e[0] += c->e_normal;
-    e[1] += c->e_tangential;
+    e[DM_E_NORMAL] += c->e_normal;
+    e[DM_E_TANGENTIAL] += c->e_tangential;
+    e[DM_E_ROLLING] += c->e_rolling;
 }
 
-/* The energies of the current state: translational and rotational kinetic,
- * potential and, with stored, the elastic energy of normal and tangential
- * springs (e[3], e[4]; left 0 otherwise); then the bodies' energies, each
- * summed over the bodies (e[5 + DM_BODY_*]). */
+/* The energies of the current state (DM_E_*): kinetic, potential and, with
+ * stored, the elastic energy of the contacts' springs (left 0 otherwise);
+ * then the bodies' energies, each summed over the bodies. */
 demill_status dm_energies(demill_world *w, int stored, double e[DM_ENERGIES])
 {
     const dm_particles *P = &w->p;
@@ -39,7 +39,7 @@ demill_status dm_energies(demill_world *w, int stored, double e[DM_ENERGIES])
             continue;
         dm_body_energies(w, k, b);
         for (int q = 0; q < DM_BODY_ENERGIES; q++)
-            e[5 + q] += b[q];
+            e[DM_E_BODY + q] += b[q];
     }
     for (uint32_t i = 0; i < P->n; i++) {
         for (int c = 0; c < D; c++) {
@@ -50,7 +50,7 @@ demill_status dm_energies(demill_world *w, int stored, double e[DM_ENERGIES])
     }
     demill_status s = DEMILL_OK;
     if (stored && !(s = prepare_query(w)))
-        dm_contacts_visit(w, 0, add_stored, e + 3);
+        dm_contacts_visit(w, 0, add_stored, e);
     return s;
 }
 
@@ -61,36 +61,46 @@ DEMILL_API demill_status demill_world_energy(demill_world *w, int32_t term, doub
         return s;
     if (!value)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "world_energy: value is NULL");
-    if (term < DEMILL_ENERGY_KINETIC_TRANSLATIONAL || term > DEMILL_ENERGY_BODY_WORK)
+    if (term < DEMILL_ENERGY_KINETIC_TRANSLATIONAL || term > DEMILL_ENERGY_ELASTIC_ROLLING)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_energy: %d is not an energy term",
                        (int)term);
     double e[DM_ENERGIES];
     if ((s = dm_energies(w, term == DEMILL_ENERGY_ELASTIC_NORMAL ||
                                 term == DEMILL_ENERGY_ELASTIC_TANGENTIAL ||
+                                term == DEMILL_ENERGY_ELASTIC_ROLLING ||
                                 term == DEMILL_ENERGY_TOTAL,
                          e)))
         return s;
-    const double kt = e[0], kr = e[1], pot = e[2], stored[2] = {e[3], e[4]}, *body = e + 5;
+    const double *body = e + DM_E_BODY;
     const dm_tally *t = &w->tally;
-    double diss = t->diss_normal + t->diss_tangential + t->diss_friction + t->diss_rolling;
+    const double diss = dm_tally_dissipated(t);
     switch (term) {
-    case DEMILL_ENERGY_KINETIC_TRANSLATIONAL: *value = kt; break;
-    case DEMILL_ENERGY_KINETIC_ROTATIONAL: *value = kr; break;
-    case DEMILL_ENERGY_POTENTIAL: *value = pot; break;
-    case DEMILL_ENERGY_ELASTIC_NORMAL: *value = stored[0]; break;
-    case DEMILL_ENERGY_ELASTIC_TANGENTIAL: *value = stored[1]; break;
+    case DEMILL_ENERGY_KINETIC_TRANSLATIONAL: *value = e[DM_E_KT]; break;
+    case DEMILL_ENERGY_KINETIC_ROTATIONAL: *value = e[DM_E_KR]; break;
+    case DEMILL_ENERGY_POTENTIAL: *value = e[DM_E_POT]; break;
+    case DEMILL_ENERGY_ELASTIC_NORMAL: *value = e[DM_E_NORMAL]; break;
+    case DEMILL_ENERGY_ELASTIC_TANGENTIAL: *value = e[DM_E_TANGENTIAL]; break;
+    case DEMILL_ENERGY_ELASTIC_ROLLING: *value = e[DM_E_ROLLING]; break;
     case DEMILL_ENERGY_WALL_WORK: *value = t->wall_work; break;
     case DEMILL_ENERGY_DISSIPATED_NORMAL: *value = t->diss_normal; break;
     case DEMILL_ENERGY_DISSIPATED_TANGENTIAL: *value = t->diss_tangential; break;
     case DEMILL_ENERGY_DISSIPATED_FRICTION: *value = t->diss_friction; break;
     case DEMILL_ENERGY_DISSIPATED_ROLLING: *value = t->diss_rolling; break;
+    case DEMILL_ENERGY_DISSIPATED_PLASTIC: *value = t->diss_plastic; break;
+    case DEMILL_ENERGY_DISSIPATED_ROLLING_VISCOUS: *value = t->diss_rolling_viscous; break;
+    case DEMILL_ENERGY_DISSIPATED_LOCAL: *value = t->diss_local; break;
+    case DEMILL_ENERGY_COHESION: *value = t->work_cohesion; break;
     case DEMILL_ENERGY_DISSIPATED: *value = diss; break;
     case DEMILL_ENERGY_FLOW: *value = w->flows.energy; break;
-    case DEMILL_ENERGY_TOTAL:
-        *value = kt + kr + pot + stored[0] + stored[1] + diss - t->wall_work -
-                 w->flows.energy + body[DM_BODY_KINETIC] + body[DM_BODY_ELASTIC] +
-                 body[DM_BODY_POTENTIAL] + body[DM_BODY_DISSIPATED] - body[DM_BODY_WORK];
+    case DEMILL_ENERGY_TOTAL: {
+        double sum = diss + t->work_cohesion - t->wall_work - w->flows.energy +
+                     body[DM_BODY_KINETIC] + body[DM_BODY_ELASTIC] + body[DM_BODY_POTENTIAL] +
+                     body[DM_BODY_DISSIPATED] - body[DM_BODY_WORK];
+        for (int k = DM_E_KT; k < DM_E_BODY; k++)
+            sum += e[k];
+        *value = sum;
         break;
+    }
     default: *value = body[term - DEMILL_ENERGY_BODY_KINETIC];
     }
     dm_clear_error(w);

@@ -150,7 +150,7 @@ DEMILL_API demill_status demill_pair_set(demill_world *w, demill_id a, demill_id
     if (s)
         return s;
     int pk = pair_key_index(key);
-    bool law = key >= DEMILL_PAIR_NORMAL && key <= DEMILL_PAIR_ROLLING;
+    bool law = key >= DEMILL_PAIR_NORMAL && key <= DEMILL_PAIR_COHESION;
     if (pk < 0 && !law)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "pair_set: %d is not a pair key", (int)key);
     if ((s = dm_check_value(w, key, value)))
@@ -176,6 +176,7 @@ DEMILL_API demill_status demill_pair_set(demill_world *w, demill_id a, demill_id
     case DEMILL_PAIR_DAMPING: u->damping = (int32_t)value; break;
     case DEMILL_PAIR_TANGENTIAL: u->tangential = (int32_t)value; break;
     case DEMILL_PAIR_ROLLING: u->rolling = (int32_t)value; break;
+    case DEMILL_PAIR_COHESION: u->cohesion = (int32_t)value; break;
     default:
         u->value[pk] = value;
         u->set |= 1u << pk;
@@ -212,6 +213,7 @@ DEMILL_API demill_status demill_pair_get(const demill_world *cw, demill_id a, de
     case DEMILL_PAIR_DAMPING: *value = laws.damping; break;
     case DEMILL_PAIR_TANGENTIAL: *value = laws.tangential; break;
     case DEMILL_PAIR_ROLLING: *value = laws.rolling; break;
+    case DEMILL_PAIR_COHESION: *value = laws.cohesion; break;
     default:
         if (pk < 0)
             return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "pair_get: %d is not a pair key",

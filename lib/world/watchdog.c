@@ -52,12 +52,13 @@ static demill_status energies(demill_world *w, dm_watch_energy *e, int *unknown)
     double t[DM_ENERGIES];
     demill_status s = dm_energies(w, 1, t);
     const dm_tally *y = &w->tally;
-    const double *b = t + 5;
-    e->kinetic = t[0] + t[1] + b[DM_BODY_KINETIC];
-    e->potential = t[2] + b[DM_BODY_POTENTIAL];
-    e->elastic = t[3] + t[4] + b[DM_BODY_ELASTIC];
-    e->dissipated = y->diss_normal + y->diss_tangential + y->diss_friction + y->diss_rolling +
-                    b[DM_BODY_DISSIPATED];
+    const double *b = t + DM_E_BODY;
+    e->kinetic = t[DM_E_KT] + t[DM_E_KR] + b[DM_BODY_KINETIC];
+    e->potential = t[DM_E_POT] + b[DM_BODY_POTENTIAL];
+    e->elastic = t[DM_E_NORMAL] + t[DM_E_TANGENTIAL] + t[DM_E_ROLLING] + b[DM_BODY_ELASTIC];
+    /* the work against cohesion, which may be negative, is spent as
+     * dissipation is */
+    e->dissipated = dm_tally_dissipated(y) + y->work_cohesion + b[DM_BODY_DISSIPATED];
     e->work = (w->energy_tracking ? y->wall_work : w->drum.alive ? w->drum.energy_in : 0.0) +
               w->flows.energy + b[DM_BODY_WORK];
     *unknown = 0;
@@ -137,7 +138,7 @@ static int overlap_check(const demill_world *w, verdict *v)
     const int D = w->dim;
     double worst = w->watch_overlap, depth = 0.0;
     uint32_t who = 0, other = DM_FREE;
-    for (int k = 0; k < DM_KERNELS; k++) {
+    for (int k = 0; k < w->nkern; k++) {
         const dm_bucket *b = &w->pp.b[k];
         for (uint32_t p = 0; p < b->n; p++) {
             const uint32_t i = b->i[p], j = b->j[p];
@@ -157,7 +158,7 @@ static int overlap_check(const demill_world *w, verdict *v)
         }
     }
     uint32_t g0 = 0, wall = DM_FREE;
-    for (int k = 0; k < DM_KERNELS; k++) {
+    for (int k = 0; k < w->nkern; k++) {
         const dm_bucket *b = &w->pw.b[k];
         for (uint32_t p = 0; p < b->n; p++) {
             const double ratio = w->wg.delta[g0 + p] / P->r[b->i[p]];

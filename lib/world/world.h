@@ -149,9 +149,12 @@ demill_status dm_check_time_step(demill_world *w);
 demill_status dm_state_copy(demill_world *dst, const demill_world *src);
 demill_status dm_state_restore(demill_world *w, const demill_world *src);
 void dm_state_free(demill_world *s);
-/* The energies of the state (energy.c): e[0..4] the particles' (see there),
- * e[5 + DM_BODY_*] the bodies' summed. */
-#define DM_ENERGIES (5 + DM_BODY_ENERGIES)
+/* The energies of the state (energy.c), by index: the particles' kinetic
+ * (translational, rotational) and potential energy, the elastic energy
+ * stored in the contacts' normal, tangential and rolling springs, then the
+ * bodies' summed (DM_E_BODY + DM_BODY_*). */
+enum { DM_E_KT, DM_E_KR, DM_E_POT, DM_E_NORMAL, DM_E_TANGENTIAL, DM_E_ROLLING, DM_E_BODY };
+#define DM_ENERGIES (DM_E_BODY + DM_BODY_ENERGIES)
 demill_status dm_energies(demill_world *w, int stored, double e[DM_ENERGIES]);
 
 #endif /* DM_WORLD_H */

@@ -11,10 +11,10 @@ from enum import IntEnum, IntFlag
 
 __all__ = ["VERSION_MAJOR", "VERSION_MINOR", "VERSION_PATCH", "VERSION_NUMBER",
            "VERSION_STRING", "ID_NONE", "Status", "Kind", "Integrator", "WorldKey",
-           "MaterialKey", "Normal", "Damping", "Tangential", "Rolling", "PairKey",
-           "ParticleField", "IdField", "AddFlag", "WallField", "Caps", "Harmonic", "BodyAxis",
-           "BodyFlag", "BodyField", "ContactField", "Energy", "DrumKey", "DrumPart",
-           "LifterField", "Sizes", "Fill", "Region", "Spectrum"]
+           "MaterialKey", "Normal", "Damping", "Tangential", "Rolling", "Cohesion",
+           "PairKey", "ParticleField", "IdField", "AddFlag", "WallField", "Caps", "Harmonic",
+           "BodyAxis", "BodyFlag", "BodyField", "ContactField", "Energy", "DrumKey",
+           "DrumPart", "LifterField", "Sizes", "Fill", "Region", "Spectrum"]
 
 VERSION_MAJOR = 0
 VERSION_MINOR = 1
@@ -146,6 +146,12 @@ class Rolling(IntEnum):
     CONSTANT_TORQUE = 1
 
 
+class Cohesion(IntEnum):
+    """Cohesion laws, values of ``PairKey.COHESION`` (``DEMILL_COHESION_*``)."""
+
+    NONE = 0
+
+
 class PairKey(IntEnum):
     """Material pair parameter keys (``DEMILL_PAIR_*``)."""
 
@@ -153,6 +159,7 @@ class PairKey(IntEnum):
     DAMPING = 301
     TANGENTIAL = 302
     ROLLING = 303
+    COHESION = 304
     RESTITUTION = 310
     FRICTION = 311
     ROLLING_FRICTION = 312
@@ -278,6 +285,11 @@ class Energy(IntEnum):
     BODY_POTENTIAL = 16
     BODY_DISSIPATED = 17
     BODY_WORK = 18
+    DISSIPATED_PLASTIC = 19
+    DISSIPATED_ROLLING_VISCOUS = 20
+    DISSIPATED_LOCAL = 21
+    COHESION = 22
+    ELASTIC_ROLLING = 23
 
 
 class DrumKey(IntEnum):
@@ -398,6 +410,7 @@ C_PREFIXES = {
     Damping: "DEMILL_DAMPING_",
     Tangential: "DEMILL_TANGENTIAL_",
     Rolling: "DEMILL_ROLLING_",
+    Cohesion: "DEMILL_COHESION_",
     PairKey: "DEMILL_PAIR_",
     ParticleField: "DEMILL_PARTICLE_",
     IdField: "DEMILL_PARTICLE_",

@@ -14,8 +14,8 @@ from ._core import (Keyed, Param, as_id, doubles, first, output, ptr, read_count
                     vector)
 from ._lib import lib
 from .errors import InvalidValue
-from .constants import (AddFlag, BodyAxis, BodyField, ContactField, Damping, IdField, Kind,
-                        MaterialKey, Normal, PairKey, ParticleField, Rolling, Tangential,
+from .constants import (AddFlag, BodyAxis, BodyField, Cohesion, ContactField, Damping, IdField,
+                        Kind, MaterialKey, Normal, PairKey, ParticleField, Rolling, Tangential,
                         WallField, WorldKey)
 
 
@@ -91,6 +91,7 @@ class Pair(Keyed):
     damping = Param(PairKey.DAMPING, lambda v: Damping(int(v)))
     tangential = Param(PairKey.TANGENTIAL, lambda v: Tangential(int(v)))
     rolling = Param(PairKey.ROLLING, lambda v: Rolling(int(v)))
+    cohesion = Param(PairKey.COHESION, lambda v: Cohesion(int(v)))
     restitution = Param(PairKey.RESTITUTION)
     friction = Param(PairKey.FRICTION)
     rolling_friction = Param(PairKey.ROLLING_FRICTION)

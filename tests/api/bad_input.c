@@ -214,7 +214,8 @@ static void snap_take(scene *sc, snap *s)
     }
 
     /* energies */
-    for (int32_t t = DEMILL_ENERGY_KINETIC_TRANSLATIONAL; t <= DEMILL_ENERGY_BODY_WORK; t++) {
+    for (int32_t t = DEMILL_ENERGY_KINETIC_TRANSLATIONAL; t <= DEMILL_ENERGY_ELASTIC_ROLLING;
+         t++) {
         double v = 0.0;
         st = demill_world_energy(w, t, &v);
         put_d(s, "energy", t, 0, st, v);
@@ -821,7 +822,7 @@ static void bad_pair_set(scene *sc)
                 demill_pair_set(w, a, b, invalid[k].key, invalid[k].v),
                 demill_param_name(invalid[k].key));
         }
-        static const int32_t unknown[] = {0, 100, 200, 299, 304, 305, 309, 320, 399, -1};
+        static const int32_t unknown[] = {0, 100, 200, 299, 305, 309, 339, 390, 399, -1};
         for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
             char num[16];
             snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -2067,7 +2068,7 @@ static void bad_reads(scene *sc)
         ctx(sc, "world_energy term %d into NULL", (int)t);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_world_energy(w, t, NULL), "NULL");
     }
-    static const int32_t unknown_e[] = {0, 19, 100, -1};
+    static const int32_t unknown_e[] = {0, 24, 100, -1};
     for (size_t k = 0; k < sizeof unknown_e / sizeof unknown_e[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown_e[k]);
@@ -2366,7 +2367,7 @@ static void bad_non_whole_choice(scene *sc)
         ctx(sc, "world.integrator = %.9g", values[k]);
         BAD(sc, DEMILL_ERR_INVALID_VALUE,
             demill_world_set(sc->w, DEMILL_WORLD_INTEGRATOR, values[k]), "world.integrator");
-        for (int32_t key = DEMILL_PAIR_NORMAL; key <= DEMILL_PAIR_ROLLING; key++) {
+        for (int32_t key = DEMILL_PAIR_NORMAL; key <= DEMILL_PAIR_COHESION; key++) {
             ctx(sc, "pair law %d = %.9g", (int)key, values[k]);
             BAD(sc, DEMILL_ERR_INVALID_VALUE,
                 demill_pair_set(sc->w, sc->mat[0], sc->mat[1], key, values[k]),

@@ -85,7 +85,7 @@ static int carry_collect(demill_world *w)
     g->nc = 0;
     for (int side = 0; side < 2; side++) {
         const dm_clist *l = side ? &w->pw : &w->pp;
-        for (int k = 0; k < DM_KERNELS; k++) {
+        for (int k = 0; k < w->nkern; k++) {
             const dm_bucket *b = &l->b[k];
             for (uint32_t p = 0; p < b->n; p++) {
                 if (!b->on[p])
@@ -125,7 +125,7 @@ static void carry_restore(demill_world *w)
     const uint32_t n = w->p.n;
     for (int side = 0; side < 2; side++) {
         dm_clist *l = side ? &w->pw : &w->pp;
-        for (int k = 0; k < DM_KERNELS; k++) {
+        for (int k = 0; k < w->nkern; k++) {
             dm_bucket *b = &l->b[k];
             if (!b->n)
                 continue;
@@ -181,7 +181,7 @@ static void pairbuf_push(dm_pairbuf *pb, uint32_t i, uint32_t j, uint32_t t, int
         size_t cap = dm_grown_capacity(pb->cap, (size_t)pb->n + 1);
         void **const arrays[] = {(void **)&pb->i, (void **)&pb->j, (void **)&pb->k,
                                  (void **)&pb->t};
-        const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint8_t),
+        const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint16_t),
                                 sizeof(uint32_t)};
         if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 4, cap)) {
             pb->failed = true;
@@ -192,7 +192,7 @@ static void pairbuf_push(dm_pairbuf *pb, uint32_t i, uint32_t j, uint32_t t, int
     pb->i[pb->n] = i;
     pb->j[pb->n] = j;
     pb->t[pb->n] = t;
-    pb->k[pb->n++] = (uint8_t)k;
+    pb->k[pb->n++] = (uint16_t)k;
     pb->next[k]++;
 }
 

@@ -8,9 +8,10 @@
 #include "physics/state/state.h"
 
 /* ---- kernels (forces.c) ------------------------------------------------------- */
-/* The kernel of a combination of laws, and back; the history doubles and
- * the tangential spring's doubles per contact of a kernel. */
-int dm_kernel_index(dm_laws laws);
+/* The kernel of a combination of laws (generic: an extended kernel even for
+ * laws a fast kernel has), and back; the history doubles and the
+ * tangential spring's doubles per contact of a kernel. */
+int dm_kernel_index(dm_laws laws, bool generic);
 dm_laws dm_kernel_laws(int kernel);
 int dm_kernel_hist_size(int kernel, int dim);
 int dm_kernel_spring_size(int kernel, int dim);
@@ -57,7 +58,7 @@ void dm_wall_loads_record(demill_world *w, const double *vp, const double *wp, d
  * slots), or particle i and wall slot j (wall = 1). */
 typedef struct dm_contact_eval {
     double point[3], normal[3], delta, fn[3], ft[3], mr[3];
-    double e_normal, e_tangential;
+    double e_normal, e_tangential, e_rolling;
     uint32_t i, j;
     int wall;
 } dm_contact_eval;

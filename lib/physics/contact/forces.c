@@ -6,18 +6,39 @@
 #include "base/threads.h"
 #include "physics/contact/kernels.h"
 
-int dm_kernel_index(dm_laws l)
+/* Kernel indices (DM_FAST_KERNELS, DM_KERNELS): the fast kernels' first,
+ * with the normal law outermost, then damping, tangential and rolling; then
+ * the extended kernels', every law in the same order and cohesion last. */
+int dm_kernel_index(dm_laws l, bool generic)
 {
-    return (((l.normal - 1) * 3 + l.damping) * 4 + l.tangential) * 2 + l.rolling;
+    if (!generic && !dm_law_extended(l.normal, l.rolling, l.cohesion))
+        return (((l.normal - 1) * DM_DAMPING_LAWS + l.damping) * DM_TANGENTIAL_LAWS +
+                l.tangential) * 2 + l.rolling;
+    return DM_FAST_KERNELS +
+           ((((l.normal - 1) * DM_DAMPING_LAWS + l.damping) * DM_TANGENTIAL_LAWS + l.tangential) *
+                DM_ROLLING_LAWS + l.rolling) * DM_COHESION_LAWS + l.cohesion;
 }
 
 dm_laws dm_kernel_laws(int kernel)
 {
     dm_laws l;
-    l.rolling = kernel % 2;
-    l.tangential = kernel / 2 % 4;
-    l.damping = kernel / 8 % 3;
-    l.normal = kernel / 24 + 1;
+    if (kernel < DM_FAST_KERNELS) {
+        l.rolling = kernel % 2;
+        l.tangential = kernel / 2 % DM_TANGENTIAL_LAWS;
+        l.damping = kernel / (2 * DM_TANGENTIAL_LAWS) % DM_DAMPING_LAWS;
+        l.normal = kernel / (2 * DM_TANGENTIAL_LAWS * DM_DAMPING_LAWS) + 1;
+        l.cohesion = DEMILL_COHESION_NONE;
+        return l;
+    }
+    int k = kernel - DM_FAST_KERNELS;
+    l.cohesion = k % DM_COHESION_LAWS;
+    k /= DM_COHESION_LAWS;
+    l.rolling = k % DM_ROLLING_LAWS;
+    k /= DM_ROLLING_LAWS;
+    l.tangential = k % DM_TANGENTIAL_LAWS;
+    k /= DM_TANGENTIAL_LAWS;
+    l.damping = k % DM_DAMPING_LAWS;
+    l.normal = k / DM_DAMPING_LAWS + 1;
     return l;
 }
 
@@ -29,7 +50,7 @@ int dm_kernel_spring_size(int kernel, int dim)
 int dm_kernel_hist_size(int kernel, int dim)
 {
     dm_laws l = dm_kernel_laws(kernel);
-    return dm_law_hist_size(l.normal, l.damping, l.tangential, dim);
+    return dm_law_hist_size(l.normal, l.damping, l.tangential, l.rolling, l.cohesion, dim);
 }
 
 /* The forces and torques of particles p0 .. p1-1: gravity, then the
@@ -60,7 +81,7 @@ DM_INLINE void sum_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1
     double *restrict f = P->f, *restrict tq = P->t;
     init_forces(D, w, p0, p1);
     for (int side = 0; side < 2; side++)
-        for (int k = 0; k < DM_KERNELS; k++) {
+        for (int k = 0; k < w->nkern; k++) {
             const dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
             const uint32_t *restrict bi = b->i, *restrict bj = b->j;
             const uint32_t lo = side || p0 < b->span ? (side ? p0 : 0) : p0 - b->span;
@@ -127,7 +148,7 @@ typedef void (*wall_visit)(const int D, demill_world *w, const wall_walk *a,
 DM_INLINE void walk_walls(const int D, demill_world *w, const wall_walk *a, wall_visit fn)
 {
     const dm_results *q = &w->res;
-    for (int k = 0; k < DM_KERNELS; k++) {
+    for (int k = 0; k < w->nkern; k++) {
         const dm_bucket *b = &w->pw.b[k];
         for (uint32_t k0 = 0; k0 < b->n; k0 += DM_CHUNK) {
             const uint32_t *list = q->list + b->base + k0;
@@ -341,14 +362,14 @@ static void contact_record(int dim, dm_laws l, const dm_pairparam *pp, const dm_
                            const double *xa, const double *hist, int forces, dm_contact_eval *e)
 {
     e->delta = q->delta;
-    dm_law_stored(dim, l.normal, l.tangential, pp, q->delta, q->rstar, hist, &e->e_normal,
-                  &e->e_tangential);
+    dm_law_stored(dim, l, pp, q->delta, q->rstar, hist, &e->e_normal, &e->e_tangential,
+                  &e->e_rolling);
     if (!forces)
         return;
     double h[DM_MAX_HIST];
     dm_law_out o;
-    dm_law(dim, l.normal, l.damping, l.tangential, l.rolling, pp, q->n, q->delta, q->vc, q->dc,
-           q->wrel, q->rstar, q->mstar, 0.0, 0.0, 0, hist, h, &o);
+    dm_law(dim, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, pp, q->n, q->delta,
+           q->vc, q->dc, q->wrel, q->rstar, q->mstar, 0.0, 0.0, 0, hist, h, &o);
     memset(e->point, 0, sizeof e->point);
     memset(e->normal, 0, sizeof e->normal);
     memset(e->fn, 0, sizeof e->fn);
@@ -376,7 +397,7 @@ void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void 
     const int D = w->dim;
     const dm_particles *P = &w->p;
     dm_contact_eval e;
-    for (int k = 0; k < DM_KERNELS; k++) {
+    for (int k = 0; k < w->nkern; k++) {
         const dm_bucket *b = &w->pp.b[k];
         dm_laws l = dm_kernel_laws(k);
         for (uint32_t p = 0; p < b->n; p++) {
@@ -387,7 +408,7 @@ void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void 
             dm_kin q = {.delta = P->r[i] + P->r[j] - sqrt(r2),
                         .rstar = P->r[i] * P->r[j] / (P->r[i] + P->r[j])};
             if (forces)
-                dm_pp_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, i, j, d, r2, &q);
+                dm_pp_kin(D, l.tangential != 0, l.rolling != 0, P, P->v, P->w, i, j, d, r2, &q);
             const dm_pairparam *pp = &w->ptab[P->mat[i] * w->nmat_tab + P->mat[j]];
             contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, forces, &e);
             e.i = i;
@@ -397,7 +418,7 @@ void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void 
         }
     }
     uint32_t g0 = 0;
-    for (int k = 0; k < DM_KERNELS; k++) {
+    for (int k = 0; k < w->nkern; k++) {
         const dm_bucket *b = &w->pw.b[k];
         dm_laws l = dm_kernel_laws(k);
         for (uint32_t p = 0; p < b->n; p++) {
@@ -407,8 +428,8 @@ void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void 
                 continue;
             dm_kin q = {.delta = w->wg.delta[g0 + p], .rstar = P->r[i]};
             if (forces)
-                dm_pw_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, &w->wg, g0 + p, i, wall,
-                          &q);
+                dm_pw_kin(D, l.tangential != 0, l.rolling != 0, P, P->v, P->w, &w->wg, g0 + p, i,
+                          wall, &q);
             const dm_pairparam *pp = &w->ptab[P->mat[i] * w->nmat_tab + wall->material];
             contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, forces, &e);
             e.i = i;

@@ -8,6 +8,12 @@
  * each chunk (dm_kernel()), so the loops contain no branch on options and
  * no indirect call. The kinematics loops, which depend on few of the
  * choices, are compiled once for all kernels, in kinematics.c.
+ *
+ * Those are the fast kernels (DM_FAST_KERNELS). Every other combination of
+ * laws (an elasto-plastic normal law, the rolling spring, cohesion) runs
+ * the generic kernel of its dimension (kernels/generic.c): the same passes
+ * and the same dm_law(), with the bucket's laws as run-time values, so that
+ * the laws a scene does not use cost the fast kernels nothing.
  */
 #ifndef DM_KERNELS_H
 #define DM_KERNELS_H
@@ -43,7 +49,7 @@ typedef void (*dm_kernel_fn)(dm_kernel_args *a);
 #define DM_FOR_DL(X, D, NL) X(D, NL, 0) X(D, NL, 1) X(D, NL, 2)
 #define DM_FOR_EACH_SLICE(X, D) DM_FOR_DL(X, D, 1) DM_FOR_DL(X, D, 2)
 #define DM_SLICE_KERNELS 8
-#define DM_SLICES (DM_KERNELS / DM_SLICE_KERNELS)
+#define DM_SLICES (DM_FAST_KERNELS / DM_SLICE_KERNELS)
 
 /* 2D: the z component of a × b, and ω ẑ × n. */
 DM_INLINE void dm_spin_cross_n(const int D, const double *om, const double *n, double *out)
@@ -198,6 +204,12 @@ DM_INLINE double dm_exit_force(const double *hb, double delta_now, double reach,
  * particle afterwards. */
 #define DM_CHUNK 128
 #define DM_LANES 8 /* the law's loop runs over a multiple of this many pairs */
+/* Energy terms of a pair per step: normal viscous, tangential viscous,
+ * sliding friction, rolling friction, then the extended laws' plastic work,
+ * rolling dashpot and work against cohesion (dm_law_out), which the fast
+ * kernels do not touch. */
+#define DM_DISS 7
+#define DM_DISS_FAST 4
 
 typedef struct dm_chunk {
     uint32_t touch[DM_CHUNK];          /* whether each candidate touches */
@@ -206,7 +218,7 @@ typedef struct dm_chunk {
     uint32_t first[DM_CHUNK];          /* 1 if the pair was apart at the last step */
     double f[3][DM_CHUNK];             /* force on b */
     double ta[3][DM_CHUNK], tb[3][DM_CHUNK]; /* torques on a and b (W components) */
-    double diss[4][DM_CHUNK];          /* normal, tangential, friction, rolling */
+    double diss[DM_DISS][DM_CHUNK];    /* dissipation by mechanism (DM_DISS) */
     double h[DM_MAX_HIST][DM_CHUNK];   /* histories, then their new values */
     /* the kinematics of the touching pairs (dm_kin, by component) */
     double n[3][DM_CHUNK], delta[DM_CHUNK], ai[DM_CHUNK], aj[DM_CHUNK];
@@ -280,16 +292,17 @@ DM_INLINE uint32_t dm_chunk_load(const int HSL, const int WALLS, const demill_wo
  * new-contact flag loaded into the chunk; stores the force on b, the torques
  * on a (lever arm ai) and b (aj), the dissipation and the new history. */
 DM_INLINE void dm_chunk_law(const int D, const int NL, const int DL, const int TL, const int RL,
-                            const int HSL, dm_chunk *ch, uint32_t s, const dm_pairparam *pp,
-                            const dm_kin *q, double dt_hist, double reach)
+                            const int CL, const int HSL, dm_chunk *ch, uint32_t s,
+                            const dm_pairparam *pp, const dm_kin *q, double dt_hist,
+                            double reach)
 {
     const int W = D == 3 ? 3 : 1;
     double hin[DM_MAX_HIST], hout[DM_MAX_HIST];
     for (int c = 0; c < HSL; c++)
         hin[c] = ch->h[c][s];
     dm_law_out o;
-    dm_law(D, NL, DL, TL, RL, pp, q->n, q->delta, q->vc, q->dc, q->wrel, q->rstar, q->mstar,
-           dt_hist, reach, (int)ch->first[s], hin, hout, &o);
+    dm_law(D, NL, DL, TL, RL, CL, pp, q->n, q->delta, q->vc, q->dc, q->wrel, q->rstar,
+           q->mstar, dt_hist, reach, (int)ch->first[s], hin, hout, &o);
     double nf[3];
     dm_n_cross(D, q->n, o.ft, nf);
     for (int c = 0; c < D; c++)
@@ -302,6 +315,11 @@ DM_INLINE void dm_chunk_law(const int D, const int NL, const int DL, const int T
     ch->diss[1][s] = o.diss_tangential;
     ch->diss[2][s] = o.diss_friction;
     ch->diss[3][s] = o.diss_rolling;
+    if (dm_law_extended(NL, RL, CL)) {
+        ch->diss[4][s] = o.diss_plastic;
+        ch->diss[5][s] = o.diss_rolling_viscous;
+        ch->diss[6][s] = o.work_cohesion;
+    }
     for (int c = 0; c < HSL; c++)
         ch->h[c][s] = hout[c];
 }
@@ -319,9 +337,9 @@ DM_INLINE void dm_chunk_result(const int D, const dm_chunk *ch, uint32_t s, doub
 }
 
 /* Commits touching pair s of a chunk: its new history, the contact on (for
- * a step), its dissipation into the tally and the event slot. Returns the
- * energy it dissipated over the step. */
-DM_INLINE double dm_chunk_commit(const int HSL, const int EV, const dm_chunk *ch,
+ * a step), its dissipation into the tally and the event slot (XL: with the
+ * extended laws' terms). Returns the energy it dissipated over the step. */
+DM_INLINE double dm_chunk_commit(const int HSL, const int EV, const int XL, const dm_chunk *ch,
                                  uint32_t s, double *h, uint8_t *on, int advance, int tally,
                                  dm_tally *t)
 {
@@ -337,6 +355,12 @@ DM_INLINE double dm_chunk_commit(const int HSL, const int EV, const dm_chunk *ch
         t->diss_tangential += ch->diss[1][s];
         t->diss_friction += ch->diss[2][s];
         t->diss_rolling += ch->diss[3][s];
+        if (XL) {
+            lost += ch->diss[4][s] + ch->diss[5][s];
+            t->diss_plastic += ch->diss[4][s];
+            t->diss_rolling_viscous += ch->diss[5][s];
+            t->work_cohesion += ch->diss[6][s];
+        }
         if (EV)
             h[HSL] += lost;
     }
@@ -387,30 +411,31 @@ extern const dm_kin_fn dm_kins[2][2][2][2];
 /* The laws of a chunk's first `lanes` pairs, from the kinematics gathered
  * into it (the loop that dm_law_fn's kernels run). */
 DM_INLINE void dm_chunk_laws(const int D, const int NL, const int DL, const int TL,
-                             const int RL, dm_chunk *restrict ch, uint32_t lanes,
+                             const int RL, const int CL, dm_chunk *restrict ch, uint32_t lanes,
                              const dm_pairparam *restrict tab, double dt_hist, double reach)
 {
-    const int HSL = dm_law_hist_size(NL, DL, TL, D);
+    const int HSL = dm_law_hist_size(NL, DL, TL, RL, CL, D);
     const uint32_t n = lanes / DM_LANES * DM_LANES; /* = lanes (see dm_kin_fn) */
     for (uint32_t s = 0; s < n; s++) {
         dm_kin q;
-        dm_kin_get(D, RL, ch, s, &q);
-        dm_chunk_law(D, NL, DL, TL, RL, HSL, ch, s, &tab[ch->pp[s]], &q, dt_hist, reach);
+        dm_kin_get(D, RL != 0, ch, s, &q);
+        dm_chunk_law(D, NL, DL, TL, RL, CL, HSL, ch, s, &tab[ch->pp[s]], &q, dt_hist, reach);
     }
 }
 
 /* A combination's chunk_laws, shared by its particle-particle and
- * particle-wall kernels. */
+ * particle-wall kernels; l: the laws, which only the generic kernel reads
+ * (a fast kernel's are compiled in). */
 typedef void (*dm_law_fn)(dm_chunk *ch, uint32_t lanes, const dm_pairparam *tab, double dt_hist,
-                          double reach);
+                          double reach, dm_laws l);
 
 /* Particle-particle chunk. */
 DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
-                           dm_law_fn laws, dm_kernel_args *a)
+                           const int CL, dm_law_fn laws, dm_kernel_args *a)
 {
     const int S = D + 2 * (D == 3 ? 3 : 1);
-    const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
-    const int EXIT = dm_law_exit(NL, DL);
+    const int HSL = dm_law_hist_size(NL, DL, TL, RL, CL, D), HSP = dm_law_tangential_size(TL, D);
+    const int EXIT = dm_law_exit(NL, DL), XL = dm_law_extended(NL, RL, CL);
     const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
     demill_world *w = a->w;
     const dm_particles *P = &w->p;
@@ -432,7 +457,14 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
 
     for (uint32_t k = k0; k < k1; k++) {
         double d[3], r2;
-        ch.touch[k - k0] = (uint32_t)dm_pp_touch(D, P, bi[k], bj[k], d, &r2);
+        uint32_t touch = (uint32_t)dm_pp_touch(D, P, bi[k], bj[k], d, &r2);
+        if (CL != DEMILL_COHESION_NONE) { /* a contact that exists reaches further */
+            const double ri = P->r[bi[k]], rj = P->r[bj[k]], sum = ri + rj;
+            const double far = sum + dm_law_range(CL, &tab[mat[bi[k]] * nm + mat[bj[k]]],
+                                                  ri * rj / sum);
+            touch |= on[k] & (r2 < far * far);
+        }
+        ch.touch[k - k0] = touch;
     }
     uint32_t m = 0, listed = 0;
     uint32_t *restrict list = w->res.list + b->base + k0;
@@ -474,11 +506,12 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
         on[k] = 0;
     }
     const uint32_t lanes = dm_chunk_load(HSL, 0, w, b, &ch, m);
-    dm_kins[D == 3][0][SPIN][RL](a, &ch, lanes);
-    laws(&ch, lanes, tab, dt_hist, reach);
+    const dm_laws l = {NL, DL, TL, RL, CL};
+    dm_kins[D == 3][0][SPIN][RL != 0](a, &ch, lanes);
+    laws(&ch, lanes, tab, dt_hist, reach, l);
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
-        dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
+        dm_chunk_commit(HSL, EV, XL, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
         if (direct) {
             double o[9];
             dm_chunk_result(D, &ch, s, o);
@@ -497,11 +530,11 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
  * then the law. The walls' forces, torques and energies are summed afterwards
  * (forces.c), from out and the geometry's lost. */
 DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
-                           dm_law_fn laws, dm_kernel_args *a)
+                           const int CL, dm_law_fn laws, dm_kernel_args *a)
 {
     const int S = D + 2 * (D == 3 ? 3 : 1);
-    const int HSL = dm_law_hist_size(NL, DL, TL, D), HSP = dm_law_tangential_size(TL, D);
-    const int EXIT = dm_law_exit(NL, DL);
+    const int HSL = dm_law_hist_size(NL, DL, TL, RL, CL, D), HSP = dm_law_tangential_size(TL, D);
+    const int EXIT = dm_law_exit(NL, DL), XL = dm_law_extended(NL, RL, CL);
     const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
     demill_world *w = a->w;
     const dm_bucket *b = a->b;
@@ -525,7 +558,11 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
     uint32_t *restrict list = w->res.list + b->base + k0;
     for (uint32_t k = k0; k < k1; k++) {
         const uint32_t gk = g0 + k;
-        const uint32_t touch = g->delta[gk] > 0.0;
+        uint32_t touch = g->delta[gk] > 0.0;
+        if (CL != DEMILL_COHESION_NONE) /* a contact that exists reaches further */
+            touch |= on[k] & (g->delta[gk] > -dm_law_range(CL, &tab[mat[b->i[k]] * nm +
+                                                                    w->walls[b->j[k]].material],
+                                                           w->p.r[b->i[k]]));
         ch.k[m] = k;
         m += touch;
         if (touch | !on[k] | !advance)
@@ -559,12 +596,13 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
         on[k] = 0;
     }
     const uint32_t lanes = dm_chunk_load(HSL, 1, w, b, &ch, m);
-    dm_kins[D == 3][1][SPIN][RL](a, &ch, lanes);
-    laws(&ch, lanes, tab, dt_hist, reach);
+    const dm_laws l = {NL, DL, TL, RL, CL};
+    dm_kins[D == 3][1][SPIN][RL != 0](a, &ch, lanes);
+    laws(&ch, lanes, tab, dt_hist, reach, l);
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
-        g->lost[g0 + k] =
-            dm_chunk_commit(HSL, EV, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
+        g->lost[g0 + k] = dm_chunk_commit(HSL, EV, XL, &ch, s, hist + (size_t)HS * k, on + k,
+                                          advance, tally, &t);
         dm_chunk_result(D, &ch, s, out + (size_t)S * k);
         if (direct)
             dm_result_add(D, 1, f, tq, b->i[k], 0, out + (size_t)S * k);
@@ -585,17 +623,18 @@ typedef struct dm_kernel_slice {
     DM_VECTOR_CLONES __attribute__((noinline)) static void                                        \
         dm_laws_##D##_##NL##_##DL##_##TL##_##RL(dm_chunk *ch, uint32_t lanes,                     \
                                                 const dm_pairparam *tab, double dt_hist,          \
-                                                double reach)                                     \
+                                                double reach, dm_laws l)                          \
     {                                                                                             \
-        dm_chunk_laws(D, NL, DL, TL, RL, ch, lanes, tab, dt_hist, reach);                         \
+        (void)l;                                                                                  \
+        dm_chunk_laws(D, NL, DL, TL, RL, 0, ch, lanes, tab, dt_hist, reach);                      \
     }                                                                                             \
     DM_VECTOR_CLONES static void dm_pp_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
-        dm_pp_chunk(D, NL, DL, TL, RL, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, a);               \
+        dm_pp_chunk(D, NL, DL, TL, RL, 0, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, a);            \
     }                                                                                             \
     DM_VECTOR_CLONES static void dm_pw_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
-        dm_pw_chunk(D, NL, DL, TL, RL, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, a);               \
+        dm_pw_chunk(D, NL, DL, TL, RL, 0, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, a);            \
     }
 #define DM_PP_ENTRY(D, NL, DL, TL, RL) dm_pp_##D##_##NL##_##DL##_##TL##_##RL,
 #define DM_PW_ENTRY(D, NL, DL, TL, RL) dm_pw_##D##_##NL##_##DL##_##TL##_##RL,
@@ -617,10 +656,16 @@ typedef struct dm_kernel_slice {
 /* Every slice of a dimension, in kernel order (kernels.c). */
 extern const dm_kernel_slice *const dm_kernels2[DM_SLICES], *const dm_kernels3[DM_SLICES];
 
+/* The generic kernels of dimension 2 and 3 (kernels/generic.c), which read
+ * the laws of their bucket's kernel. */
+extern const dm_kernel_fn dm_generic_pp[2], dm_generic_pw[2];
+
 /* The kernel of a chunk of dimension D: a particle-wall one if walls, else
  * a particle-particle one, of the combination kernel (dm_kernel_index()). */
 DM_INLINE dm_kernel_fn dm_kernel(const int D, int walls, int kernel)
 {
+    if (kernel >= DM_FAST_KERNELS)
+        return (walls ? dm_generic_pw : dm_generic_pp)[D == 3];
     const dm_kernel_slice *s = (D == 3 ? dm_kernels3 : dm_kernels2)[kernel / DM_SLICE_KERNELS];
     return (walls ? s->pw : s->pp)[kernel % DM_SLICE_KERNELS];
 }

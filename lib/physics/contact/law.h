@@ -1,5 +1,6 @@
 /* law.h: the contact force law of one contact, composed of a normal law, a
- * damping law, a tangential law and a rolling law (docs/physics.md §2-5).
+ * damping law, a tangential law, a rolling law and a cohesion law
+ * (docs/physics.md §2-5).
  *
  * dm_law() is written once and specialised by the compiler: the kernels call
  * it with compile-time constant law choices and dimension, so a part that is
@@ -28,7 +29,16 @@ typedef struct dm_law_out {
     double mr[3]; /* rolling torque on a (W components) */
     /* energy dissipated over the step, by mechanism (see dm_tally) */
     double diss_normal, diss_tangential, diss_friction, diss_rolling;
+    /* the extended laws' (dm_tally) */
+    double diss_plastic, diss_rolling_viscous, work_cohesion;
 } dm_law_out;
+
+/* The laws that only the generic kernel runs (see DM_FAST_KERNELS). */
+DM_INLINE int dm_law_extended(int normal, int rolling, int cohesion)
+{
+    return normal > DEMILL_NORMAL_HERTZ || rolling > DEMILL_ROLLING_CONSTANT_TORQUE ||
+           cohesion != DEMILL_COHESION_NONE;
+}
 
 DM_INLINE void dm_tally_add(dm_tally *to, const dm_tally *from)
 {
@@ -37,6 +47,10 @@ DM_INLINE void dm_tally_add(dm_tally *to, const dm_tally *from)
     to->diss_friction += from->diss_friction;
     to->diss_rolling += from->diss_rolling;
     to->wall_work += from->wall_work;
+    to->diss_plastic += from->diss_plastic;
+    to->diss_rolling_viscous += from->diss_rolling_viscous;
+    to->work_cohesion += from->work_cohesion;
+    to->diss_local += from->diss_local;
 }
 
 /* History doubles of the tangential spring's displacement (a vector in 3D,
@@ -84,15 +98,65 @@ DM_INLINE int dm_law_exit(int normal, int damping)
     return normal == DEMILL_NORMAL_LINEAR && damping != DEMILL_DAMPING_NONE;
 }
 
-/* History doubles per contact: the tangential law's, then (for laws with
- * the exit correction) the last normal force and overlap. */
-DM_INLINE int dm_law_hist_size(int normal, int damping, int tangential, int dim)
+/* History doubles of the normal law's own state (plastic laws), of the
+ * rolling law (its spring) and of the cohesion law. */
+DM_INLINE int dm_law_normal_size(int normal)
+{
+    (void)normal;
+    return 0;
+}
+
+DM_INLINE int dm_law_rolling_size(int rolling, int dim)
+{
+    (void)rolling, (void)dim;
+    return 0;
+}
+
+DM_INLINE int dm_law_cohesion_size(int cohesion)
+{
+    (void)cohesion;
+    return 0;
+}
+
+/* A contact's history, in this order: the tangential law's, then (for laws
+ * with the exit correction) the last normal force and overlap, then the
+ * normal law's, the rolling law's and the cohesion law's; where each starts,
+ * and the doubles in all. */
+DM_INLINE int dm_law_off_normal(int normal, int damping, int tangential, int dim)
 {
     return dm_law_tangential_size(tangential, dim) + 2 * dm_law_exit(normal, damping);
 }
 
-/* D: dimension; NL, DL, TL, RL: DEMILL_NORMAL_*, DEMILL_DAMPING_*,
- * DEMILL_TANGENTIAL_*, DEMILL_ROLLING_*. vc: relative velocity at the contact
+DM_INLINE int dm_law_off_rolling(int normal, int damping, int tangential, int dim)
+{
+    return dm_law_off_normal(normal, damping, tangential, dim) + dm_law_normal_size(normal);
+}
+
+DM_INLINE int dm_law_off_cohesion(int normal, int damping, int tangential, int rolling,
+                                  int dim)
+{
+    return dm_law_off_rolling(normal, damping, tangential, dim) +
+           dm_law_rolling_size(rolling, dim);
+}
+
+DM_INLINE int dm_law_hist_size(int normal, int damping, int tangential, int rolling,
+                               int cohesion, int dim)
+{
+    return dm_law_off_cohesion(normal, damping, tangential, rolling, dim) +
+           dm_law_cohesion_size(cohesion);
+}
+
+/* How far apart (as a negative overlap) a pair whose contact exists still
+ * interacts (cohesion's reach), 0 for a law without cohesion. */
+DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar)
+{
+    (void)cohesion, (void)pp, (void)rstar;
+    return 0.0;
+}
+
+/* D: dimension; NL, DL, TL, RL, CL: DEMILL_NORMAL_*, DEMILL_DAMPING_*,
+ * DEMILL_TANGENTIAL_*, DEMILL_ROLLING_*, DEMILL_COHESION_* (compile-time
+ * constants in the fast kernels, run-time values in the generic one). vc: relative velocity at the contact
  * point at the end of the step (drives dashpots and friction); dc: the rate
  * of relative displacement over the step (drives the tangential spring).
  * dt_hist: time the history advances by (0 for an evaluation that does not
@@ -110,7 +174,7 @@ DM_INLINE int dm_law_hist_size(int normal, int damping, int tangential, int dim)
  * over contacts vectorise. Values computed for the outcome not taken may be
  * infinite or NaN; they are discarded. */
 DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, const int RL,
-                      const dm_pairparam *pp, const double *n, double delta, const double *vc,
+                      const int CL, const dm_pairparam *pp, const double *n, double delta, const double *vc,
                       const double *dc, const double *wrel, double rstar, double mstar,
                       double dt_hist, double reach, int first, const double *hin,
                       double *hout, dm_law_out *o)
@@ -177,6 +241,8 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
     o->fel = fel;
     o->diss_normal = -(fn - fel) * vnd * dt_hist;
     o->diss_tangential = o->diss_friction = o->diss_rolling = 0.0;
+    o->diss_plastic = o->diss_rolling_viscous = o->work_cohesion = 0.0;
+    (void)CL;
 
     /* tangential law (§4) */
     double vt[3], dt_rate[3], dn = 0.0;
@@ -297,11 +363,14 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
     }
 }
 
-/* Elastic energy stored in a contact: normal spring and tangential spring. */
-DM_INLINE void dm_law_stored(int dim, int NL, int TL, const dm_pairparam *pp, double delta,
+/* Elastic energy stored in a contact of laws l with history hist: normal,
+ * tangential and rolling springs. */
+DM_INLINE void dm_law_stored(int dim, dm_laws l, const dm_pairparam *pp, double delta,
                              double rstar, const double *hist, double *e_normal,
-                             double *e_tangential)
+                             double *e_tangential, double *e_rolling)
 {
+    const int NL = l.normal, TL = l.tangential;
+    *e_rolling = 0.0;
     if (NL == DEMILL_NORMAL_LINEAR)
         *e_normal = 0.5 * pp->kn * delta * delta;
     else

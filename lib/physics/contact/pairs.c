@@ -36,10 +36,10 @@ void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws
     v[DM_PK_COULOMB_REG] = 1;
     v[DM_PK_ROLLING_REG] = 1;
     v[DM_PK_CLAMP] = 1;
-    *laws = (dm_laws){0, 0, 0, 0};
+    *laws = (dm_laws){0, 0, 0, 0, 0};
     if (!u)
         return;
-    *laws = (dm_laws){u->normal, u->damping, u->tangential, u->rolling};
+    *laws = (dm_laws){u->normal, u->damping, u->tangential, u->rolling, u->cohesion};
     for (int k = 0; k < DM_PK_COUNT; k++)
         if (u->set & (1u << k))
             v[k] = u->value[k];
@@ -55,9 +55,9 @@ static void elastic_moduli(const dm_material *ma, const dm_material *mb, double 
                      2 * (2 - mb->poisson) * (1 + mb->poisson) / mb->youngs);
 }
 
-static int laws_kernel(dm_laws laws)
+static int laws_kernel(const demill_world *w, dm_laws laws)
 {
-    return laws.normal == DEMILL_NORMAL_NONE ? -1 : dm_kernel_index(laws);
+    return laws.normal == DEMILL_NORMAL_NONE ? -1 : dm_kernel_index(laws, w->generic_kernels);
 }
 
 int dm_pair_kernel(const demill_world *w, uint32_t a, uint32_t b)
@@ -65,7 +65,7 @@ int dm_pair_kernel(const demill_world *w, uint32_t a, uint32_t b)
     dm_laws laws;
     double v[DM_PK_COUNT];
     dm_pair_values(w, a, b, &laws, v);
-    return laws_kernel(laws);
+    return laws_kernel(w, laws);
 }
 
 static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairparam *pp)
@@ -74,7 +74,7 @@ static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairp
     double v[DM_PK_COUNT], g_star;
     dm_pair_values(w, a, b, &laws, v);
     memset(pp, 0, sizeof *pp);
-    pp->kernel = laws_kernel(laws);
+    pp->kernel = laws_kernel(w, laws);
     pp->clamp = v[DM_PK_CLAMP] != 0;
     pp->kn = v[DM_PK_NORMAL_STIFFNESS];
     elastic_moduli(&w->mats[a], &w->mats[b], &pp->e_star, &g_star);
@@ -121,10 +121,12 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
     if (!tab)
         return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory resolving contact models");
     bool rotation = false, kernels_changed = false;
+    int nkern = 0;
     for (uint32_t a = 0; a < nm; a++)
         for (uint32_t b = 0; b < nm; b++) {
             dm_pairparam *pp = &tab[a * nm + b];
             pair_resolve(w, a, b, pp);
+            nkern = pp->kernel >= nkern ? pp->kernel + 1 : nkern;
             if (pp->kernel >= 0 && w->mat_particles[a] && (w->mat_particles[b] || w->mat_walls[b])) {
                 dm_laws l = dm_kernel_laws(pp->kernel);
                 rotation |= l.tangential != DEMILL_TANGENTIAL_NONE || l.rolling != DEMILL_ROLLING_NONE;
@@ -138,6 +140,7 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
     w->nmat_tab = nm;
     w->ptab_dirty = false;
     w->rotation = rotation;
+    w->nkern = nkern;
     if (kernels_changed || !w->nlist_valid) {
         /* contact lists are grouped by kernel: start them afresh */
         dm_clist_clear(w);

@@ -10,7 +10,7 @@
 static uint32_t count_chunks(const demill_world *w)
 {
     uint32_t c = 0;
-    for (int k = 0; k < DM_KERNELS; k++)
+    for (int k = 0; k < w->nkern; k++)
         c += (w->pp.b[k].n + DM_CHUNK - 1) / DM_CHUNK + (w->pw.b[k].n + DM_CHUNK - 1) / DM_CHUNK;
     return c;
 }
@@ -21,7 +21,7 @@ int dm_results_reserve(demill_world *w)
     dm_results *q = &w->res;
     const int S = w->dim + 2 * dm_wdim(w);
     size_t n = 0;
-    for (int k = 0; k < DM_KERNELS; k++)
+    for (int k = 0; k < w->nkern; k++)
         n += (size_t)w->pp.b[k].n + w->pw.b[k].n;
     q->valid = false;
     if (n > UINT32_MAX)
@@ -57,7 +57,7 @@ void dm_results_layout(demill_world *w)
     for (int side = 0; side < 2; side++) {
         if (side)
             q->npp = id;
-        for (int k = 0; k < DM_KERNELS; k++) {
+        for (int k = 0; k < w->nkern; k++) {
             dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
             b->base = id;
             b->chunk0 = c;

@@ -799,7 +799,7 @@ void dm_wgeom_meshes(demill_world *w, uint32_t begin, uint32_t end, int carry)
 {
     const int D = w->dim;
     uint32_t g0 = 0;
-    for (int k = 0; k < DM_KERNELS; g0 += w->pw.b[k].n, k++) {
+    for (int k = 0; k < w->nkern; g0 += w->pw.b[k].n, k++) {
         dm_bucket *b = &w->pw.b[k];
         uint32_t p = 0, hi = b->n; /* the first candidate of particle begin */
         while (p < hi) {

@@ -556,7 +556,7 @@ int dm_wgeom_reserve(demill_world *w)
 {
     dm_wgeom *g = &w->wg;
     uint32_t total = 0;
-    for (int k = 0; k < DM_KERNELS; k++)
+    for (int k = 0; k < w->nkern; k++)
         total += w->pw.b[k].n;
     if (total <= g->cap)
         return 0;
@@ -643,7 +643,7 @@ void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p
 void dm_wgeom_update(demill_world *w)
 {
     uint32_t g0 = 0;
-    for (int k = 0; k < DM_KERNELS; k++) {
+    for (int k = 0; k < w->nkern; k++) {
         const dm_bucket *b = &w->pw.b[k];
         dm_wgeom_range(w, b, g0, 0, b->n);
         g0 += b->n;

@@ -148,7 +148,7 @@ static void contacts_copy(demill_world *w, int save)
     dm_refine *R = &w->refine;
     size_t h = 0, o = 0;
     for (int side = 0; side < 2; side++)
-        for (int k = 0; k < DM_KERNELS; k++) {
+        for (int k = 0; k < w->nkern; k++) {
             dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
             const size_t nh = (size_t)b->n * (size_t)b->hs;
             if (!b->n)
@@ -188,7 +188,7 @@ static int contacts_save(demill_world *w)
     dm_refine *R = &w->refine;
     size_t nh = 0, no = 0;
     for (int side = 0; side < 2; side++)
-        for (int k = 0; k < DM_KERNELS; k++) {
+        for (int k = 0; k < w->nkern; k++) {
             const dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
             nh += (size_t)b->n * (size_t)b->hs;
             no += b->n;

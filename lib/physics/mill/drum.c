@@ -333,8 +333,7 @@ double dm_drum_power_cm(const demill_world *w, double omega)
 
 static double total_dissipated(const demill_world *w)
 {
-    const dm_tally *t = &w->tally;
-    return t->diss_normal + t->diss_tangential + t->diss_friction + t->diss_rolling;
+    return dm_tally_dissipated(&w->tally);
 }
 
 static void revolution_reset(demill_world *w)

@@ -26,22 +26,40 @@ enum {
     DM_PK_VISCOUS, DM_PK_KT_RATIO, DM_PK_CT_FACTOR, DM_PK_COULOMB_REG, DM_PK_ROLLING_REG,
     DM_PK_CLAMP, DM_PK_COUNT
 };
+/* The keys checkpoints of formats 1 and 2 hold. */
+#define DM_PK_COUNT_V2 10
 
 /* What the user chose for one material pair (a <= b). */
 typedef struct dm_pair_user {
     uint32_t a, b;
-    int32_t normal, damping, tangential, rolling;
+    int32_t normal, damping, tangential, rolling, cohesion;
     double value[DM_PK_COUNT];
     uint32_t set; /* bit mask of DM_PK_* overridden */
 } dm_pair_user;
 
-/* The four laws of a contact model, and the kernel they compile to. */
+/* The five laws of a contact model, and the kernel they compile to. */
 typedef struct dm_laws {
-    int normal, damping, tangential, rolling;
+    int normal, damping, tangential, rolling, cohesion;
 } dm_laws;
 
-#define DM_KERNELS (2 * 3 * 4 * 2)
-#define DM_MAX_HIST 7 /* history doubles per contact, at most (contact/law.h + event slot) */
+/* The number of choices of each law (DEMILL_NORMAL_* ... DEMILL_COHESION_*,
+ * demill/material.h), none included. */
+#define DM_NORMAL_LAWS 6
+#define DM_DAMPING_LAWS 3
+#define DM_TANGENTIAL_LAWS 4
+#define DM_ROLLING_LAWS 3
+#define DM_COHESION_LAWS 3
+/* Kernels: the fast ones, one compiled kernel per combination of the linear
+ * or Hertz normal law, any damping and tangential law, no or constant-torque
+ * rolling resistance and no cohesion (kernel indices 0 .. DM_FAST_KERNELS - 1,
+ * which checkpoints keep); then every combination of every law (the
+ * extended kernels, served by one generic kernel per dimension: see
+ * contact/kernels.h). */
+#define DM_FAST_KERNELS (2 * DM_DAMPING_LAWS * DM_TANGENTIAL_LAWS * 2)
+#define DM_KERNELS                                                                                \
+    (DM_FAST_KERNELS + (DM_NORMAL_LAWS - 1) * DM_DAMPING_LAWS * DM_TANGENTIAL_LAWS *              \
+                           DM_ROLLING_LAWS * DM_COHESION_LAWS)
+#define DM_MAX_HIST 16 /* history doubles per contact, at most (contact/law.h + event slot) */
 /* Resolved constants of one material pair, read by the contact kernels. */
 typedef struct dm_pairparam {
     int kernel;          /* -1: no model */
@@ -248,7 +266,7 @@ typedef struct dm_clist {
  * k is the kernel, plus DM_KERNELS for particle-wall pairs. */
 typedef struct dm_pairbuf {
     uint32_t *i, *j, *t;               /* t: the mesh element of a particle-wall pair */
-    uint8_t *k;
+    uint16_t *k;
     uint32_t n, cap;
     bool failed;                       /* out of memory */
     uint32_t next[2 * DM_KERNELS];     /* count per kernel, then where the next goes */
@@ -283,7 +301,18 @@ typedef struct dm_wgeom {
 /* Energy tallies: dissipation by mechanism and work done by walls. */
 typedef struct dm_tally {
     double diss_normal, diss_tangential, diss_friction, diss_rolling, wall_work;
+    /* the extended laws' (docs/physics.md): plastic work, the rolling
+     * dashpot's, and the work done against cohesive forces */
+    double diss_plastic, diss_rolling_viscous, work_cohesion;
+    double diss_local; /* local damping's, booked by the integrator */
 } dm_tally;
+
+/* The energy a tally's contacts dissipated, every mechanism summed. */
+static inline double dm_tally_dissipated(const dm_tally *t)
+{
+    return t->diss_normal + t->diss_tangential + t->diss_friction + t->diss_rolling +
+           t->diss_plastic + t->diss_rolling_viscous + t->diss_local;
+}
 
 /* A chunk of candidates that one kernel call works through (forces.c). */
 typedef struct dm_chunkref {
@@ -529,6 +558,11 @@ struct demill_world {
     uint32_t nmat_tab;
     bool ptab_dirty;
     bool rotation;           /* some law in use needs rotational DOF */
+    int nkern;               /* 1 + the largest kernel in the pair table: buckets past it
+                                are empty, and loops over buckets stop there */
+    double cohesion_reach;   /* how far past touching a cohesive pair may still
+                                interact: the neighbour search reaches that far more */
+    bool generic_kernels;    /* tests only: every combination runs the generic kernel */
 
     /* particles */
     dm_particles p;
