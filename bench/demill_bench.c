@@ -9,6 +9,9 @@
  *
  * Energy tracking is off, as the peers do not tally energy. --dump-packing
  * writes the initial positions (x y z r per line) for the peers' inputs.
+ * --set NAME=VALUE changes a parameter of the registry (demill_param_name())
+ * of the world, the steel material or the steel-steel pair, to measure what
+ * another contact law costs (e.g. --set pair.normal=3).
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
@@ -62,7 +65,9 @@ static void usage(FILE *f)
           "  --mesh FILE.stl         the drum's shell, caps and lifters from this STL file\n"
           "                          (m), turning with the drum in place of its analytic\n"
           "                          walls (drum3d-mesh: bench/peers/peers.py stl drum3d)\n"
-          "  --dump-packing FILE     write the initial packing (x y z r) and exit\n",
+          "  --dump-packing FILE     write the initial packing (x y z r) and exit\n"
+          "  --set NAME=VALUE        set a world.*, material.* (the steel's) or pair.*\n"
+          "                          (steel-steel) parameter after the scene's (repeatable)\n",
           f);
 }
 
@@ -75,12 +80,44 @@ static void fail(demill_world *w, demill_status s, const char *what)
     }
 }
 
+/* The key of a parameter named in the registry, or -1. */
+static int32_t param_key(const char *name, size_t len)
+{
+    for (int32_t key = 0; key < 1000; key++) {
+        const char *n = demill_param_name(key);
+        if (n && strlen(n) == len && !strncmp(n, name, len))
+            return key;
+    }
+    return -1;
+}
+
+/* Applies one --set NAME=VALUE to the world, the steel or its pair. */
+static void set_param(demill_world *w, demill_id steel, const char *arg)
+{
+    const char *eq = strchr(arg, '=');
+    const int32_t key = eq ? param_key(arg, (size_t)(eq - arg)) : -1;
+    if (key < 0) {
+        fprintf(stderr, "demill_bench: --set %s: not NAME=VALUE with a parameter's name\n", arg);
+        exit(EXIT_FAILURE);
+    }
+    const double v = atof(eq + 1);
+    demill_status s;
+    if (!strncmp(arg, "world.", 6))
+        s = demill_world_set(w, key, v);
+    else if (!strncmp(arg, "material.", 9))
+        s = demill_material_set(w, steel, key, v);
+    else
+        s = demill_pair_set(w, steel, steel, key, v);
+    fail(w, s, arg);
+}
+
 int main(int argc, char **argv)
 {
     const char *scene = "drum3d", *dump = NULL, *mesh = NULL;
     long particles = 0, threads = 1, steps = 10000;
     double settle = 0.3, rotate = 0.3;
-    int energy = 0, watchdog = 1;
+    int energy = 0, watchdog = 1, nsets = 0;
+    const char *sets[64];
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
         if (!strcmp(a, "--help")) {
@@ -93,6 +130,8 @@ int main(int argc, char **argv)
         } else if (!v) {
             fprintf(stderr, "demill_bench: %s needs a value\n", a);
             return EXIT_FAILURE;
+        } else if (!strcmp(a, "--set") && nsets < 64) {
+            sets[nsets++] = argv[++k];
         } else if (!strcmp(a, "--scene")) {
             scene = argv[++k];
         } else if (!strcmp(a, "--mesh")) {
@@ -171,6 +210,8 @@ int main(int argc, char **argv)
         fail(w, demill_wall_load_stl(w, steel, mesh, 1.0, NULL, &wall), "mesh");
         fail(w, demill_drum_attach_wall(w, drum, wall, DEMILL_DRUM_PART_SHELL), "mesh");
     }
+    for (int k = 0; k < nsets; k++)
+        set_param(w, steel, sets[k]);
     fail(w, demill_world_set(w, DEMILL_WORLD_THREADS, (double)threads), "threads");
     fail(w, demill_world_set(w, DEMILL_WORLD_ENERGY_TRACKING, energy), "energy tracking");
     fail(w, demill_world_set(w, DEMILL_WORLD_WATCHDOG, watchdog), "watchdog");
