@@ -1,0 +1,381 @@
+/* plastic.c: the elasto-plastic normal laws (docs/physics.md, "Elasto-plastic
+ * normal laws") against closed forms and independent quadratures.
+ *
+ * The laws' force-overlap relations (lib/physics/contact/plastic.h) drive a
+ * head-on impact of a mass m* integrated at 20,000 steps per contact, so
+ * that the integrator's error is far below the tolerances:
+ * - Thornton (1997): the coefficient of restitution against impact speed,
+ *   his closed form e(v_y/v) for v > v_y, v_y from (1/2) m* v_y² = 2/5 F_y δ_y
+ *   (the elastic work to yield); e = 1 below v_y; the kinetic energy lost
+ *   equals the booked plastic work;
+ * - Walton and Braun (1986): e = √(k1/k2), and the loss equals the loop area
+ *   (1/2) k1 δ_max² (1 - k1/k2) with δ_max = v √(m* / k1);
+ * - the multi-path law of Li, Gao, Zhang and Liu (2018): the elastic limit
+ *   f_y = π³ R*² (1.6 σ_y)³/(6 E*²) and δ_y = (0.8 π σ_y/E*)² R* (their eqs.
+ *   5-7 with Johnson's p_0 = 1.6 σ_y), and the loss per impact equal to the
+ *   loop integral of their eq. 11, here by Simpson's rule over the loading
+ *   and unloading curves (independent of the closed form the law books);
+ * - infinite yield is Hertz bit for bit.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "physics/contact/plastic.h"
+#include "testutil.h"
+
+/* A law as a function of the overlap and the history. */
+typedef void (*law_fn)(const void *ctx, double delta, double dmax_old, double onset_old,
+                       dm_plastic_out *o);
+
+typedef struct thornton_ctx {
+    double e_star, rstar, py;
+} thornton_ctx;
+
+static void thornton_law(const void *ctx, double delta, double dmax_old, double onset_old,
+                         dm_plastic_out *o)
+{
+    (void)onset_old;
+    const thornton_ctx *c = ctx;
+    dm_thornton(c->e_star, c->rstar, c->py, delta, dmax_old, o);
+}
+
+typedef struct wb_ctx {
+    double k1, r;
+} wb_ctx;
+
+static void wb_law(const void *ctx, double delta, double dmax_old, double onset_old,
+                   dm_plastic_out *o)
+{
+    (void)onset_old;
+    const wb_ctx *c = ctx;
+    dm_walton_braun(c->k1, c->r, delta, dmax_old, o);
+}
+
+typedef struct paths_ctx {
+    double e_star, rstar, py;
+    dm_paths_fit fit;
+} paths_ctx;
+
+static void paths_law(const void *ctx, double delta, double dmax_old, double onset_old,
+                      dm_plastic_out *o)
+{
+    const paths_ctx *c = ctx;
+    dm_plastic_paths(c->e_star, c->rstar, c->py, &c->fit, delta, dmax_old, onset_old, o);
+}
+
+/* An impact of mass m at speed v0 on the law, velocity Verlet with step dt
+ * from first touch until the force has let go on the way out. */
+typedef struct impact {
+    double e;      /* rebound speed / v0 */
+    double lost;   /* kinetic energy lost */
+    double booked; /* plastic work the law booked */
+    double dmax;   /* largest overlap */
+} impact;
+
+static impact run_impact(law_fn law, const void *ctx, double m, double v0, double dt)
+{
+    double d = 0.0, v = v0, dmax = 0.0, booked = 0.0;
+    dm_plastic_out o = {0};
+    for (long k = 0; k < 100000000L; k++) {
+        const double f = d > 0.0 ? o.f : 0.0;
+        v -= 0.5 * dt * f / m;
+        d += dt * v;
+        if (d <= 0.0 && v < 0.0)
+            break;
+        law(ctx, d, dmax, o.onset, &o);
+        booked += o.diss;
+        dmax = o.dmax;
+        v -= 0.5 * dt * o.f / m;
+        if (o.f == 0.0 && v < 0.0 && d < dmax)
+            break; /* unloaded past the residual overlap: free flight */
+    }
+    return (impact){-v / v0, 0.5 * m * (v0 * v0 - v * v), booked, dmax};
+}
+
+/* ---- Thornton ---------------------------------------------------------- */
+
+/* A 10 mm sphere of density 2500 on a rigid wall (R* = R, m* = m), E* 1e9 Pa,
+ * limiting pressure 5e6 Pa. */
+static const double th_r = 0.01, th_rho = 2500, th_e = 1e9, th_py = 5e6;
+
+static double th_mass(void)
+{
+    return 4.0 / 3.0 * M_PI * pow(th_r, 3) * th_rho;
+}
+
+/* The yield speed from the elastic work to yield, 2/5 F_y δ_y, with
+ * δ_y = R* (π py/(2E*))² and F_y = π³ py³ R*²/(6 E*²) written out (Thornton
+ * 1997; for a sphere on a wall it is his 1.56 √(py⁵/(E*⁴ ρ))). */
+static double th_vy(void)
+{
+    const double s = M_PI * th_py / (2 * th_e), dy = th_r * s * s;
+    const double fy = pow(M_PI, 3) * pow(th_py, 3) * th_r * th_r / (6 * th_e * th_e);
+    return sqrt(2 * 0.4 * fy * dy / th_mass());
+}
+
+/* Thornton's closed form for v > v_y, x = v_y/v. */
+static double th_e_closed(double x)
+{
+    return sqrt(6 * sqrt(3.0) / 5) * sqrt(1 - x * x / 6) *
+           pow(x / (x + 2 * sqrt(6.0 / 5 - x * x / 5)), 0.25);
+}
+
+/* A step of 1/20,000 of the elastic (Hertz) contact time at speed v,
+ * 2.94324 δ_max/v (Johnson 1985, §11.4), which is longer than the plastic one. */
+static double th_dt(double v)
+{
+    const double m = th_mass();
+    const double dm = pow(15 * m * v * v / (16 * th_e * sqrt(th_r)), 0.4);
+    return 2.94324 * dm / v / 20000;
+}
+
+START_TEST(thornton_restitution)
+{
+    const thornton_ctx c = {th_e, th_r, th_py};
+    const double vy = th_vy(), m = th_mass();
+    ck_assert(vy > 1e-3 && vy < 1e-2);
+    /* below yield: elastic, e = 1 */
+    const double below[] = {0.1, 0.5, 0.99};
+    for (int k = 0; k < 3; k++) {
+        const double v = below[k] * vy;
+        impact o = run_impact(thornton_law, &c, m, v, th_dt(v));
+        DM_ASSERT_REL(o.e, 1.0, 1e-9);
+        ck_assert(o.booked == 0.0);
+    }
+    /* above: e(v) from e = 0.93 (2 v_y) down to 0.21 (1000 v_y) */
+    const double above[] = {1.01, 2, 10, 100, 1000};
+    for (int k = 0; k < 5; k++) {
+        const double v = above[k] * vy;
+        impact o = run_impact(thornton_law, &c, m, v, th_dt(v));
+        DM_ASSERT_REL(o.e, th_e_closed(1 / above[k]), 1e-5);
+        DM_ASSERT_REL(o.booked, o.lost, 1e-5);
+    }
+}
+END_TEST
+
+/* Reloading follows the unloading curve up to δ_max, then the loading line
+ * again: the force at a point of the loading line is the same whether it was
+ * reached directly or after an unload to half δ_max and a reload; the
+ * plastic work is booked once. */
+START_TEST(thornton_reload)
+{
+    const thornton_ctx c = {th_e, th_r, th_py};
+    double dy, fy;
+    dm_plastic_yield(th_e, th_r, th_py, &dy, &fy);
+    dm_plastic_out a, b;
+    dm_thornton(c.e_star, c.rstar, c.py, 20 * dy, 0.0, &a);
+    dm_thornton(c.e_star, c.rstar, c.py, 10 * dy, a.dmax, &b); /* unload */
+    ck_assert(b.diss == 0.0 && b.f < a.f && b.dmax == a.dmax);
+    DM_ASSERT_REL(b.stored, 0.4 * b.f * (10 * dy - a.dres), 1e-12);
+    dm_thornton(c.e_star, c.rstar, c.py, 20 * dy, b.dmax, &b); /* reload to δ_max */
+    DM_ASSERT_REL(b.f, a.f, 1e-12);
+    dm_thornton(c.e_star, c.rstar, c.py, 30 * dy, b.dmax, &b); /* and on */
+    /* F = F_y + π py R* (δ - δ_y) */
+    DM_ASSERT_REL(b.f, fy + M_PI * th_py * th_r * 29 * dy, 1e-12);
+    DM_ASSERT_REL(a.diss + b.diss, dm_thornton_spent(th_e, th_r, th_py, 30 * dy), 1e-12);
+}
+END_TEST
+
+/* ---- Walton and Braun ------------------------------------------------------ */
+
+START_TEST(walton_braun_restitution_and_loop)
+{
+    const double m = 0.01, k1 = 1e5, v = 1.0;
+    const double es[] = {1.0, 0.9, 0.5, 0.1, 0.01, 0.0};
+    for (int k = 0; k < 6; k++) {
+        const wb_ctx c = {k1, es[k] * es[k]};
+        const double tc = M_PI * sqrt(m / k1); /* the loading half period bounds the contact */
+        impact o = run_impact(wb_law, &c, m, v, tc / 20000);
+        const double dmax = v * sqrt(m / k1);
+        /* within 1e-6; at e = 0 the integrator's last half kick at the
+         * turning point remains, about π/20,000 */
+        ck_assert_msg(fabs(o.e - es[k]) <= (es[k] > 0 ? 1e-6 : 2e-4), "e = %.9g, expected %.9g",
+                      o.e, es[k]);
+        const double loop = 0.5 * k1 * dmax * dmax * (1 - es[k] * es[k]);
+        ck_assert_msg(fabs(o.booked - loop) <= 1e-6 * 0.5 * m * v * v, "booked %.9g, loop %.9g",
+                      o.booked, loop);
+        ck_assert_msg(fabs(o.lost - loop) <= 1e-6 * 0.5 * m * v * v, "lost %.9g, loop %.9g",
+                      o.lost, loop);
+    }
+}
+END_TEST
+
+/* ---- the multi-path law ------------------------------------------------------ */
+
+/* Two aluminium spheres of 5 mm (E = 70 GPa, ν = 0.33, ρ = 2700, as in Li
+ * et al. 2018), R* = 2.5 mm, m* half a sphere's mass; σ_y = 100 MPa (their
+ * text gives none); their aluminium fit P(R*) = 54.95 - 2889 R* + 88478 R*²
+ * (eq. 9) with H = 1 (not in the text). */
+static paths_ctx al_ctx(void)
+{
+    const double e = 70e9, nu = 0.33, sy = 100e6;
+    return (paths_ctx){e / (2 * (1 - nu * nu)), 2.5e-3, 1.6 * sy, {54.95, -2889, 88478, 1.0}};
+}
+
+static double al_mass(void)
+{
+    return 0.5 * 4.0 / 3.0 * M_PI * pow(5e-3, 3) * 2700;
+}
+
+/* Their elastic limit (eqs. 5-7): with a fit below Hertz past it (P = 2,
+ * H = 1: f_y (1 + 2u) against Hertz's f_y (1 + u)³), path 1 ends at
+ * (δ_y, f_y) and path 2 starts there. */
+START_TEST(paths_elastic_limit)
+{
+    paths_ctx c = al_ctx();
+    c.fit = (dm_paths_fit){2.0, 0.0, 0.0, 1.0};
+    const double sy = c.py / 1.6;
+    const double dy = pow(0.8 * M_PI * sy / c.e_star, 2) * c.rstar;
+    const double fy = pow(M_PI, 3) * c.rstar * c.rstar * pow(1.6 * sy, 3) / (6 * c.e_star * c.e_star);
+    /* a_y = 0.8 π R σ_y/E (their eq. 7) and a² = R δ */
+    DM_ASSERT_REL(sqrt(c.rstar * dy), 0.8 * M_PI * c.rstar * sy / c.e_star, 1e-12);
+    dm_plastic_out o;
+    dm_plastic_paths(c.e_star, c.rstar, c.py, &c.fit, dy * (1 - 1e-12), 0.0, 0.0, &o);
+    ck_assert(o.diss == 0.0 && o.dres == 0.0); /* path 1 */
+    DM_ASSERT_REL(o.onset, dy, 1e-12);
+    DM_ASSERT_REL(o.f, fy, 1e-9);
+    dm_plastic_paths(c.e_star, c.rstar, c.py, &c.fit, dy * (1 + 1e-6), 0.0, 0.0, &o);
+    ck_assert(o.diss > 0.0 && o.dres > 0.0); /* path 2 */
+    DM_ASSERT_REL(o.f, fy, 1e-6);
+    /* path 2 at a = 2 a_y (δ = 4 δ_y): f_y (1 + P) */
+    dm_plastic_paths(c.e_star, c.rstar, c.py, &c.fit, 4 * dy, 0.0, 0.0, &o);
+    DM_ASSERT_REL(o.f, 3 * fy, 1e-12);
+}
+END_TEST
+
+/* The paper's aluminium fit, P = 54.95 - 2889 R* + 88478 R*² (eq. 9), is
+ * above Hertz past δ_y for H = 1: the loading stays on Hertz up to where
+ * they meet, f_y (1 + P u) = f_y (1 + u)³, u² + 3u + 3 - P = 0,
+ * u_x = (√(4P - 3) - 3)/2 (for P > 3), and the fit goes on from there. */
+START_TEST(paths_onset)
+{
+    const paths_ctx c = al_ctx();
+    double dy, fy;
+    dm_plastic_yield(c.e_star, c.rstar, c.py, &dy, &fy);
+    const double p = 54.95 - 2889 * c.rstar + 88478 * c.rstar * c.rstar;
+    const double ux = (sqrt(4 * p - 3) - 3) / 2, dx = dy * (1 + ux) * (1 + ux);
+    ck_assert(ux > 5 && ux < 6);
+    dm_plastic_out o;
+    dm_plastic_paths(c.e_star, c.rstar, c.py, &c.fit, 1.5 * dy, 0.0, 0.0, &o);
+    DM_ASSERT_REL(o.onset, dx, 1e-12);
+    ck_assert(o.diss == 0.0 && o.dres == 0.0);
+    DM_ASSERT_REL(o.f, dm_hertz_force(c.e_star, c.rstar, 1.5 * dy), 1e-15);
+    dm_plastic_paths(c.e_star, c.rstar, c.py, &c.fit, 1.1 * dx, 0.0, o.onset, &o);
+    ck_assert(o.diss > 0.0 && o.dres > 0.0);
+    DM_ASSERT_REL(o.f, fy * (1 + p * (sqrt(1.1 * dx / dy) - 1)), 1e-12);
+    /* H = 2: u² P = (1 + u)³ - 1 has two roots, and the fit is below Hertz
+     * before the first: the onset is the second, where u³ - (P - 3) u² + 3u
+     * = 0, u = ((P - 3) + √((P - 3)² - 12))/2 */
+    paths_ctx c2 = c;
+    c2.fit.h = 2.0;
+    const double u2 = ((p - 3) + sqrt((p - 3) * (p - 3) - 12)) / 2;
+    dm_plastic_paths(c2.e_star, c2.rstar, c2.py, &c2.fit, 1.5 * dy, 0.0, 0.0, &o);
+    DM_ASSERT_REL(o.onset, dy * (1 + u2) * (1 + u2), 1e-12);
+}
+END_TEST
+
+/* ∫ f over [a, b] by Simpson's rule on n (even) intervals: loading (dmax 0:
+ * each point a new maximum) or unloading from dmax. */
+static double simpson(const paths_ctx *c, double onset, double a, double b, double dmax, int n)
+{
+    const double h = (b - a) / n;
+    double s = 0.0;
+    for (int k = 0; k <= n; k++) {
+        dm_plastic_out o;
+        const double x = a + k * h;
+        paths_law(c, x, dmax > 0 ? dmax : x, onset, &o);
+        s += (k == 0 || k == n ? 1 : k % 2 ? 4 : 2) * o.f;
+    }
+    return s * h / 3;
+}
+
+/* The loss per impact against the loop integral of eq. 11 by quadrature,
+ * for fits above and below Hertz past δ_y, at 1 m/s (e about 0.3-0.8). */
+START_TEST(paths_loop_integral)
+{
+    const dm_paths_fit fits[] = {{54.95, -2889, 88478, 1.0}, /* theirs, with H = 1 */
+                                 {54.95, -2889, 88478, 0.5},
+                                 {2.0, 0.0, 0.0, 1.0},
+                                 {2.0, 0.0, 0.0, 2.0}};
+    for (int k = 0; k < 4; k++) {
+        paths_ctx c = al_ctx();
+        c.fit = fits[k];
+        const double m = al_mass(), v = 1.0;
+        /* 1/20,000 of the elastic contact time bounds the step */
+        const double dm = pow(15 * m * v * v / (16 * c.e_star * sqrt(c.rstar)), 0.4);
+        impact o = run_impact(paths_law, &c, m, v, 2.94324 * dm / v / 20000);
+        dm_plastic_out top;
+        paths_law(&c, o.dmax, o.dmax, 0.0, &top);
+        ck_assert_msg(o.dmax > top.onset && o.e > 0.0 && o.e < 1.0, "fit %d: e = %g", k, o.e);
+        /* the loop OABC: loading from 0 (path 1 to δ_x, path 2 on), less the
+         * unloading curve from δ_max down to δ_r */
+        const double load = simpson(&c, top.onset, 0, top.onset, 0, 2000) +
+                            simpson(&c, top.onset, top.onset, o.dmax, 0, 200000);
+        const double unload = simpson(&c, top.onset, top.dres, o.dmax, o.dmax, 2000);
+        DM_ASSERT_REL(o.lost, load - unload, 1e-6);
+        DM_ASSERT_REL(o.booked, load - unload, 1e-6);
+    }
+}
+END_TEST
+
+/* The plastic work grows with δ_max (no step books a negative loss), for
+ * fits above and below Hertz and exponents across (0, 3). */
+START_TEST(paths_work_grows)
+{
+    const double hs[] = {0.3, 1.0, 2.0, 2.9}, ps[] = {0.5, 3.0, 48.0, 1e4};
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            paths_ctx c = al_ctx();
+            c.fit = (dm_paths_fit){ps[j], 0, 0, hs[i]};
+            double dy, fy, dmax = 0, onset = 0;
+            dm_plastic_yield(c.e_star, c.rstar, c.py, &dy, &fy);
+            for (double d = 0.1 * dy; d < 1e6 * dy; d *= 1.01) {
+                dm_plastic_out o;
+                paths_law(&c, d, dmax, onset, &o);
+                ck_assert_msg(o.diss >= -1e-15 * o.stored, "H %g P %g δ/δ_y %g: %g", hs[i],
+                              ps[j], d / dy, o.diss);
+                ck_assert(o.dres >= 0.0 && o.dres < d);
+                dmax = o.dmax;
+                onset = o.onset;
+            }
+        }
+}
+END_TEST
+
+/* ---- infinite yield ----------------------------------------------------------- */
+
+START_TEST(infinite_yield_is_hertz)
+{
+    const double e = 1e9, r = 0.004;
+    const dm_paths_fit fit = {54.95, -2889, 88478, 1.0};
+    double dmax = 0.0, onset = 0.0;
+    for (int k = 1; k < 200; k++) {
+        /* load, unload, reload, each time a little further */
+        const double d = 1e-6 * (1 + 5 * (1 - cos(M_PI * k / 25)) + k / 50.0);
+        dm_plastic_out a, b;
+        dm_thornton(e, r, INFINITY, d, dmax, &a);
+        dm_plastic_paths(e, r, INFINITY, &fit, d, dmax, onset, &b);
+        onset = b.onset;
+        const double hertz = (4.0 / 3.0) * e * sqrt(r * d) * d;
+        ck_assert_msg(a.f == hertz && b.f == hertz, "%.17g %.17g %.17g", a.f, b.f, hertz);
+        ck_assert(a.diss == 0.0 && b.diss == 0.0 && a.dres == 0.0 && b.dres == 0.0);
+        dmax = a.dmax;
+    }
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("plastic");
+    TCase *tc = tcase_create("laws");
+    tcase_add_test(tc, thornton_restitution);
+    tcase_add_test(tc, thornton_reload);
+    tcase_add_test(tc, walton_braun_restitution_and_loop);
+    tcase_add_test(tc, paths_elastic_limit);
+    tcase_add_test(tc, paths_onset);
+    tcase_add_test(tc, paths_loop_integral);
+    tcase_add_test(tc, paths_work_grows);
+    tcase_add_test(tc, infinite_yield_is_hertz);
+    suite_add_tcase(s, tc);
+    return dm_test_run(s);
+}
