@@ -112,6 +112,7 @@ class MaterialKey(IntEnum):
     RESTITUTION = 204
     FRICTION = 205
     ROLLING_FRICTION = 206
+    YIELD_STRESS = 207
 
 
 class Normal(IntEnum):
@@ -170,6 +171,11 @@ class PairKey(IntEnum):
     COULOMB_REGULARISATION = 317
     ROLLING_REGULARISATION = 318
     CLAMP_NORMAL = 319
+    YIELD_PRESSURE = 320
+    PLASTIC_FIT_C0 = 321
+    PLASTIC_FIT_C1 = 322
+    PLASTIC_FIT_C2 = 323
+    PLASTIC_FIT_EXPONENT = 324
 
 
 class ParticleField(IntEnum):

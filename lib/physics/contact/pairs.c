@@ -36,6 +36,13 @@ void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws
     v[DM_PK_COULOMB_REG] = 1;
     v[DM_PK_ROLLING_REG] = 1;
     v[DM_PK_CLAMP] = 1;
+    /* the weaker material yields first; 0 is no yield */
+    const double sa = ma->yield_stress, sb = mb->yield_stress;
+    v[DM_PK_YIELD_PRESSURE] = 1.6 * (sa == 0.0 ? sb : sb == 0.0 ? sa : fmin(sa, sb));
+    v[DM_PK_FIT_C0] = 54.95;
+    v[DM_PK_FIT_C1] = -2889;
+    v[DM_PK_FIT_C2] = 88478;
+    v[DM_PK_FIT_H] = 1;
     *laws = (dm_laws){0, 0, 0, 0, 0};
     if (!u)
         return;
@@ -89,6 +96,9 @@ static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairp
     pp->mu_r = v[DM_PK_ROLLING_FRICTION];
     pp->coul_reg = v[DM_PK_COULOMB_REG];
     pp->roll_reg = v[DM_PK_ROLLING_REG];
+    pp->py = v[DM_PK_YIELD_PRESSURE] > 0.0 ? v[DM_PK_YIELD_PRESSURE] : INFINITY;
+    for (int k = 0; k < 4; k++)
+        pp->fit[k] = v[DM_PK_FIT_C0 + k];
 }
 
 /* Rebuilds the resolved pair table if anything changed, and (if asked)
