@@ -49,7 +49,24 @@ enum {
     /** Linear spring F = k_n δ (Cundall and Strack 1979; docs/physics.md §2). */
     DEMILL_NORMAL_LINEAR = 1,
     /** Hertz F = 4/3 E* √R* δ^{3/2} (Hertz 1882; docs/physics.md §2). */
-    DEMILL_NORMAL_HERTZ = 2
+    DEMILL_NORMAL_HERTZ = 2,
+    /** Thornton's elastic-perfectly plastic spheres (Thornton 1997): Hertz
+     *  up to the limiting contact pressure DEMILL_PAIR_YIELD_PRESSURE, linear
+     *  beyond, unloading along Hertz's curve of an enlarged radius. With
+     *  DEMILL_DAMPING_NONE or DEMILL_DAMPING_VISCOUS (docs/physics.md,
+     *  Elasto-plastic normal laws). */
+    DEMILL_NORMAL_THORNTON = 3,
+    /** Walton and Braun's linear hysteresis (Walton and Braun 1986): loading
+     *  with the pair's linear stiffness k1 (DEMILL_PAIR_NORMAL_STIFFNESS),
+     *  unloading with k2 = k1/e², e the pair's DEMILL_PAIR_RESTITUTION. With
+     *  DEMILL_DAMPING_NONE or DEMILL_DAMPING_VISCOUS. */
+    DEMILL_NORMAL_WALTON_BRAUN = 4,
+    /** The multi-path elasto-plastic law of Li, Gao, Zhang and Liu (2018):
+     *  Hertz to the yield point, a fitted plastic force beyond
+     *  (DEMILL_PAIR_PLASTIC_FIT_*), unloading along Hertz's curve through
+     *  the residual overlap. With DEMILL_DAMPING_NONE or
+     *  DEMILL_DAMPING_VISCOUS. */
+    DEMILL_NORMAL_PLASTIC_PATHS = 5
 };
 
 /** Normal damping laws, the values of DEMILL_PAIR_DAMPING. */

@@ -56,7 +56,7 @@ static const param_info params[] = {
     {DEMILL_MATERIAL_ROLLING_FRICTION, "material.rolling_friction", "1", 0, 1e6, 0, 0},
     {DEMILL_MATERIAL_YIELD_STRESS, "material.yield_stress", "Pa", 0, 1e30, 0, 0},
 
-    {DEMILL_PAIR_NORMAL, "pair.normal", "enum", 0, 2, 0, WHOLE},
+    {DEMILL_PAIR_NORMAL, "pair.normal", "enum", 0, 5, 0, WHOLE},
     {DEMILL_PAIR_DAMPING, "pair.damping", "enum", 0, 2, 0, WHOLE},
     {DEMILL_PAIR_TANGENTIAL, "pair.tangential", "enum", 0, 3, 0, WHOLE},
     {DEMILL_PAIR_ROLLING, "pair.rolling", "enum", 0, 1, 0, WHOLE},

@@ -121,6 +121,9 @@ class Normal(IntEnum):
     NONE = 0
     LINEAR = 1
     HERTZ = 2
+    THORNTON = 3
+    WALTON_BRAUN = 4
+    PLASTIC_PATHS = 5
 
 
 class Damping(IntEnum):

@@ -784,7 +784,7 @@ static void bad_pair_set(scene *sc)
             int32_t key;
             double v;
         } enums[] = {
-            {DEMILL_PAIR_NORMAL, 3},      {DEMILL_PAIR_NORMAL, 7},     {DEMILL_PAIR_NORMAL, -1},
+            {DEMILL_PAIR_NORMAL, 6},      {DEMILL_PAIR_NORMAL, 7},     {DEMILL_PAIR_NORMAL, -1},
             {DEMILL_PAIR_NORMAL, 100},    {DEMILL_PAIR_DAMPING, 3},    {DEMILL_PAIR_DAMPING, -1},
             {DEMILL_PAIR_TANGENTIAL, 4},  {DEMILL_PAIR_TANGENTIAL, -1},
             {DEMILL_PAIR_ROLLING, 2},     {DEMILL_PAIR_ROLLING, -1},

@@ -6,6 +6,7 @@
 
 #include "base/status.h"
 #include "physics/contact/contact.h"
+#include "physics/contact/plastic.h"
 
 const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b)
 {
@@ -121,6 +122,16 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
                                    a, b,
                                    w->mat_walls[b] && !w->mat_particles[b] ? "particle-wall"
                                                                             : "particle-particle");
+                if (dm_normal_plastic(u->normal) && u->damping == DEMILL_DAMPING_RESTITUTION)
+                    return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                                   "materials %u and %u: the plastic normal law %s dissipates on "
+                                   "its own, and DEMILL_DAMPING_RESTITUTION, derived for an "
+                                   "elastic law, would rebound below the restitution asked for: "
+                                   "use DEMILL_DAMPING_NONE or DEMILL_DAMPING_VISCOUS",
+                                   a, b,
+                                   u->normal == DEMILL_NORMAL_THORNTON       ? "DEMILL_NORMAL_THORNTON"
+                                   : u->normal == DEMILL_NORMAL_WALTON_BRAUN ? "DEMILL_NORMAL_WALTON_BRAUN"
+                                                                             : "DEMILL_NORMAL_PLASTIC_PATHS");
             }
         }
     }

@@ -19,7 +19,7 @@
 
 #include <math.h>
 
-#include "base/base.h"
+#include "physics/state/state.h"
 
 #define DM_PLASTIC_INLINE static inline __attribute__((always_inline))
 
@@ -157,10 +157,11 @@ DM_PLASTIC_INLINE void dm_walton_braun(double k1, double r, double delta, double
     o->onset = 0.0;
     o->dres = dmax * (1.0 - r);
     o->diss = dm_walton_braun_spent(k1, r, dmax) - dm_walton_braun_spent(k1, r, dmax_old);
-    o->stiff = k1 / r; /* k2 */
     /* on the loading line exactly k1 δ; below it k2 (δ - δ_r), -∞ for
      * r = 0 (δ - δ_r < 0) */
-    const double fu = delta >= dmax ? k1 * delta : o->stiff * (delta - o->dres);
+    const double k2 = k1 / r;
+    const double fu = delta >= dmax ? k1 * delta : k2 * (delta - o->dres);
+    o->stiff = r > 0.0 ? k2 : k1; /* r = 0 unloads by a drop, not a spring */
     o->f = fu > 0.0 ? fu : 0.0;
     o->stored = 0.5 * o->f * o->f * r / k1; /* F²/(2 k2) */
 }
@@ -317,6 +318,89 @@ DM_PLASTIC_INLINE void dm_plastic_paths(double e_star, double rstar, double py,
     o->f = delta >= dmax ? fmax : (4.0 / 3.0) * e_star * sq * x;
     o->stiff = 2.0 * e_star * sq;
     o->stored = 0.4 * o->f * x;
+}
+
+/* ---- the laws by choice, for the contact law and the time step ------------- */
+
+/* Whether normal law NL is one of these, and the history doubles it keeps:
+ * δ_max, and the multi-path law's onset δ_x. */
+DM_PLASTIC_INLINE int dm_normal_plastic(int NL)
+{
+    return NL == DEMILL_NORMAL_THORNTON || NL == DEMILL_NORMAL_WALTON_BRAUN ||
+           NL == DEMILL_NORMAL_PLASTIC_PATHS;
+}
+
+/* Whether normal law NL is Hertz's or grows from it (the laws whose
+ * particles' Rayleigh waves bound the time step). */
+DM_PLASTIC_INLINE int dm_normal_hertzian(int NL)
+{
+    return NL == DEMILL_NORMAL_HERTZ || NL == DEMILL_NORMAL_THORNTON ||
+           NL == DEMILL_NORMAL_PLASTIC_PATHS;
+}
+
+DM_PLASTIC_INLINE int dm_plastic_hist_size(int NL)
+{
+    return NL == DEMILL_NORMAL_PLASTIC_PATHS ? 2 : dm_normal_plastic(NL);
+}
+
+/* Plastic law NL of pair pp at overlap delta > 0, from the contact's
+ * history hin (dm_plastic_hist_size(NL) doubles, zeros for a new contact).
+ * Walton and Braun's k1 is the pair's linear stiffness and k1/k2 the square
+ * of its restitution. */
+DM_PLASTIC_INLINE void dm_plastic_law(int NL, const dm_pairparam *pp, double rstar,
+                                      double delta, const double *hin, dm_plastic_out *o)
+{
+    if (NL == DEMILL_NORMAL_THORNTON) {
+        dm_thornton(pp->e_star, rstar, pp->py, delta, hin[0], o);
+    } else if (NL == DEMILL_NORMAL_WALTON_BRAUN) {
+        dm_walton_braun(pp->kn, pp->restitution * pp->restitution, delta, hin[0], o);
+    } else {
+        const dm_paths_fit fit = {pp->fit[0], pp->fit[1], pp->fit[2], pp->fit[3]};
+        dm_plastic_paths(pp->e_star, rstar, pp->py, &fit, delta, hin[0], hin[1], o);
+    }
+}
+
+/* What the time step needs of a head-on impact at speed v > 0 with reduced
+ * mass mstar on plastic law NL: its largest overlap δ_max, the largest
+ * stiffness of the contact, the
+ * unloading curve's slope at δ_max (steeper than any loading slope: the
+ * loading curves are never stiffer than Hertz's, nor Thornton's than
+ * 2 E* a_y), and its duration, twice the shorter of the loading and the
+ * unloading phases, each taken as half an elastic impact on its own curve:
+ * shape δ/v with shape 2.94324 for a Hertzian curve (Johnson 1985, §11.4) and
+ * π for a linear one. δ_max is where the loading work, the plastic work plus
+ * the energy the unloading curve stores, equals ½ m* v², by bisection. */
+DM_PLASTIC_INLINE void dm_plastic_impact(int NL, const dm_pairparam *pp, double rstar,
+                                         double mstar, double v, double *dmax,
+                                         double *stiff, double *contact)
+{
+    const double energy = 0.5 * mstar * v * v;
+    double h[2] = {0.0, 0.0};
+    dm_plastic_out o;
+    dm_plastic_law(NL, pp, rstar, 1e-300, h, &o);
+    h[1] = o.onset; /* the multi-path law's, found once */
+    double lo = 0.0, hi = 1e-12;
+    for (int k = 0; k < 2000; k++) {
+        dm_plastic_law(NL, pp, rstar, hi, h, &o);
+        if (o.diss + o.stored >= energy || hi > 1e30)
+            break;
+        lo = hi;
+        hi *= 2.0;
+    }
+    for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; k++) {
+        const double mid = lo + 0.5 * (hi - lo);
+        dm_plastic_law(NL, pp, rstar, mid, h, &o);
+        if (o.diss + o.stored < energy)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    dm_plastic_law(NL, pp, rstar, hi, h, &o);
+    const double shape = NL == DEMILL_NORMAL_WALTON_BRAUN ? DM_PI : 2.94324;
+    const double rebound = sqrt(2.0 * o.stored / mstar); /* 0: a dead stop (e = 0) */
+    *dmax = hi;
+    *stiff = o.stiff;
+    *contact = shape * fmin(hi / v, (hi - o.dres) / rebound);
 }
 
 #endif /* DM_PLASTIC_H */
