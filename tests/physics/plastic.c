@@ -691,6 +691,59 @@ START_TEST(no_yield_is_hertz)
 }
 END_TEST
 
+/* The extremes of Walton and Braun's e: e = 1 is the linear spring bit for
+ * bit (the pile on both laws, undamped: no dashpot, so that the laws'
+ * entry corrections play no part), and e = 0 stops a head-on impact dead:
+ * what rebounds is the integrator's last half kick at the turning point
+ * (about π/100 of v at 50 steps per loading, π √(m* / k1)), and the whole
+ * impact energy is plastic work, within 0.5 %. */
+START_TEST(walton_braun_extremes)
+{
+    for (int dim = 2; dim <= 3; dim++) {
+        demill_world *worlds[2];
+        double *states[2], dt0 = 0;
+        size_t n[2];
+        for (int k = 0; k < 2; k++) { /* at the linear law's step */
+            demill_id mat;
+            worlds[k] = pile(dim, k ? DEMILL_NORMAL_WALTON_BRAUN : DEMILL_NORMAL_LINEAR, 0, &mat);
+            DM_OK(worlds[k], demill_pair_set(worlds[k], mat, mat, DEMILL_PAIR_RESTITUTION, 1));
+            DM_OK(worlds[k], demill_pair_set(worlds[k], mat, mat, DEMILL_PAIR_DAMPING,
+                                             DEMILL_DAMPING_NONE));
+            if (k)
+                DM_OK(worlds[k], demill_world_set(worlds[k], DEMILL_WORLD_TIME_STEP, dt0));
+            else
+                DM_OK(worlds[k], demill_world_get(worlds[k], DEMILL_WORLD_TIME_STEP, &dt0));
+            DM_OK(worlds[k], demill_world_step(worlds[k], 3000));
+            states[k] = dm_test_state(worlds[k], &n[k]);
+        }
+        ck_assert(n[0] == n[1]);
+        ck_assert(memcmp(states[0], states[1], 6 * n[0] * sizeof *states[0]) == 0);
+        ck_assert(energy(worlds[1], DEMILL_ENERGY_DISSIPATED_PLASTIC) == 0.0);
+        for (int k = 0; k < 2; k++) {
+            free(states[k]);
+            demill_world_destroy(worlds[k]);
+        }
+
+        demill_id mat;
+        demill_world *w = plastic_world(dim, DEMILL_NORMAL_WALTON_BRAUN, 0, 0, &mat);
+        DM_OK(w, demill_pair_set(w, mat, mat, DEMILL_PAIR_RESTITUTION, 0));
+        const double v = 1.0, dt = suggested(w, mat, r_world, v);
+        const double x[6] = {-r_world - 3 * v * dt, 0, 0, r_world, 0, 0}, rr[2] = {r_world, r_world};
+        const double vel[6] = {v, 0, 0, 0, 0, 0};
+        demill_id ids[2];
+        DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+        DM_OK(w, demill_particles_add(w, mat, 2, x, rr, vel, 0, ids));
+        DM_OK(w, demill_world_step(w, 200));
+        const double m = 4.0 / 3.0 * M_PI * pow(r_world, 3) * 2500;
+        const double rel = dm_test_get(w, ids[1], DEMILL_PARTICLE_VELOCITY, 0) -
+                           dm_test_get(w, ids[0], DEMILL_PARTICLE_VELOCITY, 0);
+        ck_assert_msg(fabs(rel) < 0.05 * v, "dim %d: rebound %g m/s", dim, rel);
+        DM_ASSERT_REL(energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC), 0.5 * (m / 2) * v * v, 0.005);
+        demill_world_destroy(w);
+    }
+}
+END_TEST
+
 /* A checkpoint and a snapshot taken in the middle of the pile's plastic
  * contacts carry their histories: the copies step on bitwise (3D). */
 START_TEST(plastic_checkpoint)
@@ -770,6 +823,7 @@ int main(void)
     tcase_add_loop_test(tw, paths_in_a_world, 0, 2);
     tcase_add_test(tw, pile_energy_balance);
     tcase_add_test(tw, no_yield_is_hertz);
+    tcase_add_test(tw, walton_braun_extremes);
     tcase_add_test(tw, plastic_checkpoint);
     tcase_add_test(tw, restitution_damping_refused);
     tcase_add_test(tw, walton_braun_time_step);
