@@ -34,7 +34,12 @@ enum {
     DEMILL_MATERIAL_FRICTION = 205,
     /** Rolling friction coefficient μ_r (dimensionless: the resisting torque
      *  is μ_r R* |F_n|), >= 0. Default 0. */
-    DEMILL_MATERIAL_ROLLING_FRICTION = 206
+    DEMILL_MATERIAL_ROLLING_FRICTION = 206,
+    /** Yield stress σ_y in Pa, in [0, 1e30], for the elasto-plastic normal
+     *  laws (DEMILL_NORMAL_THORNTON, DEMILL_NORMAL_PLASTIC_PATHS): a pair's
+     *  limiting contact pressure DEMILL_PAIR_YIELD_PRESSURE is derived from
+     *  it. 0 (default): the material does not yield. */
+    DEMILL_MATERIAL_YIELD_STRESS = 207
 };
 
 /** Normal force laws, the values of DEMILL_PAIR_NORMAL. */
@@ -44,7 +49,24 @@ enum {
     /** Linear spring F = k_n δ (Cundall and Strack 1979; docs/physics.md §2). */
     DEMILL_NORMAL_LINEAR = 1,
     /** Hertz F = 4/3 E* √R* δ^{3/2} (Hertz 1882; docs/physics.md §2). */
-    DEMILL_NORMAL_HERTZ = 2
+    DEMILL_NORMAL_HERTZ = 2,
+    /** Thornton's elastic-perfectly plastic spheres (Thornton 1997): Hertz
+     *  up to the limiting contact pressure DEMILL_PAIR_YIELD_PRESSURE, linear
+     *  beyond, unloading along Hertz's curve of an enlarged radius. With
+     *  DEMILL_DAMPING_NONE or DEMILL_DAMPING_VISCOUS (docs/physics.md,
+     *  Elasto-plastic normal laws). */
+    DEMILL_NORMAL_THORNTON = 3,
+    /** Walton and Braun's linear hysteresis (Walton and Braun 1986): loading
+     *  with the pair's linear stiffness k1 (DEMILL_PAIR_NORMAL_STIFFNESS),
+     *  unloading with k2 = k1/e², e the pair's DEMILL_PAIR_RESTITUTION. With
+     *  DEMILL_DAMPING_NONE or DEMILL_DAMPING_VISCOUS. */
+    DEMILL_NORMAL_WALTON_BRAUN = 4,
+    /** The multi-path elasto-plastic law of Li, Gao, Zhang and Liu (2018):
+     *  Hertz to the yield point, a fitted plastic force beyond
+     *  (DEMILL_PAIR_PLASTIC_FIT_*), unloading along Hertz's curve through
+     *  the residual overlap. With DEMILL_DAMPING_NONE or
+     *  DEMILL_DAMPING_VISCOUS. */
+    DEMILL_NORMAL_PLASTIC_PATHS = 5
 };
 
 /** Normal damping laws, the values of DEMILL_PAIR_DAMPING. */
@@ -138,7 +160,27 @@ enum {
     /** 1 (default): the normal force never pulls (F_n >= 0). 0: the damped
      *  normal force may become slightly attractive at the end of a contact,
      *  as in LIGGGHTS without limitForce. */
-    DEMILL_PAIR_CLAMP_NORMAL = 319
+    DEMILL_PAIR_CLAMP_NORMAL = 319,
+    /** Limiting contact pressure p_y in Pa, in [0, 1e30], of the
+     *  elasto-plastic laws DEMILL_NORMAL_THORNTON and
+     *  DEMILL_NORMAL_PLASTIC_PATHS: a Hertz contact yields where its peak
+     *  pressure reaches p_y. 0: no yield (Hertz). Derived: 1.6 σ_y of the
+     *  weaker material (DEMILL_MATERIAL_YIELD_STRESS; the onset of yield by
+     *  the von Mises criterion, Johnson 1985), 0 if neither yields. */
+    DEMILL_PAIR_YIELD_PRESSURE = 320,
+    /** DEMILL_NORMAL_PLASTIC_PATHS: the plastic force past the elastic
+     *  limit is f_y P(R*) ((a - a_y)/a_y)^H, P(R*) = c0 + c1 R* + c2 R*²
+     *  (taken as 0 where negative), a = √(R* δ) the contact half-width and
+     *  a_y, f_y the elastic limit's (docs/physics.md). c0, dimensionless;
+     *  default 54.95, the aluminium fit of Li, Gao, Zhang and Liu (2018). */
+    DEMILL_PAIR_PLASTIC_FIT_C0 = 321,
+    /** c1 in 1/m (see DEMILL_PAIR_PLASTIC_FIT_C0); default -2889. */
+    DEMILL_PAIR_PLASTIC_FIT_C1 = 322,
+    /** c2 in 1/m² (see DEMILL_PAIR_PLASTIC_FIT_C0); default 88478. */
+    DEMILL_PAIR_PLASTIC_FIT_C2 = 323,
+    /** The exponent H of DEMILL_NORMAL_PLASTIC_PATHS's plastic force, in
+     *  (0, 3). Default 1 (not given by Li et al. 2018: fit it with P). */
+    DEMILL_PAIR_PLASTIC_FIT_EXPONENT = 324
 };
 
 /** Creates a material with default parameters (see the DEMILL_MATERIAL_*

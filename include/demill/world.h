@@ -208,8 +208,10 @@ DEMILL_API demill_status demill_world_get(const demill_world *world, int32_t key
  *  @param steps the number of steps of DEMILL_WORLD_TIME_STEP to take.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NO_CONTACT_MODEL,
  *          DEMILL_ERR_INVALID_VALUE (also: the world's time is so large that
- *          a time step does not advance it, or the iterative refinement is
- *          chosen in a world with bodies), DEMILL_ERR_OUT_OF_MEMORY,
+ *          a time step does not advance it, the iterative refinement is
+ *          chosen in a world with bodies, or a pair that may touch combines
+ *          an elasto-plastic normal law with DEMILL_DAMPING_RESTITUTION),
+ *          DEMILL_ERR_OUT_OF_MEMORY,
  *          DEMILL_ERR_UNSTABLE or DEMILL_ERR_INTERRUPTED. If memory runs out
  *          in the middle of a run, the world holds the state after the last
  *          completed step. On DEMILL_ERR_UNSTABLE (see DEMILL_WORLD_WATCHDOG)
@@ -320,8 +322,9 @@ DEMILL_API demill_status demill_world_set_progress(demill_world *world, demill_p
  *  @param[out] contact_time receives the shortest contact duration, s (may be
  *                           NULL).
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (suggested), DEMILL_ERR_NOT_FINITE,
- *          DEMILL_ERR_INVALID_VALUE (a negative argument, or a world without
- *          particles), DEMILL_ERR_NO_CONTACT_MODEL, DEMILL_ERR_UNSTABLE (no
+ *          DEMILL_ERR_INVALID_VALUE (a negative argument, a world without
+ *          particles, or an elasto-plastic normal law with
+ *          DEMILL_DAMPING_RESTITUTION), DEMILL_ERR_NO_CONTACT_MODEL, DEMILL_ERR_UNSTABLE (no
  *          time step integrates a pair: restitution 0 with the clamped normal
  *          law) or DEMILL_ERR_OUT_OF_MEMORY. Changes nothing. */
 DEMILL_API demill_status demill_world_suggest_time_step(demill_world *world, double impact_speed,

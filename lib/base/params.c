@@ -54,8 +54,9 @@ static const param_info params[] = {
     {DEMILL_MATERIAL_RESTITUTION, "material.restitution", "1", 0, 1, 0.5, 0},
     {DEMILL_MATERIAL_FRICTION, "material.friction", "1", 0, 1e6, 0.5, 0},
     {DEMILL_MATERIAL_ROLLING_FRICTION, "material.rolling_friction", "1", 0, 1e6, 0, 0},
+    {DEMILL_MATERIAL_YIELD_STRESS, "material.yield_stress", "Pa", 0, 1e30, 0, 0},
 
-    {DEMILL_PAIR_NORMAL, "pair.normal", "enum", 0, 2, 0, WHOLE},
+    {DEMILL_PAIR_NORMAL, "pair.normal", "enum", 0, 5, 0, WHOLE},
     {DEMILL_PAIR_DAMPING, "pair.damping", "enum", 0, 2, 0, WHOLE},
     {DEMILL_PAIR_TANGENTIAL, "pair.tangential", "enum", 0, 3, 0, WHOLE},
     {DEMILL_PAIR_ROLLING, "pair.rolling", "enum", 0, 1, 0, WHOLE},
@@ -71,6 +72,12 @@ static const param_info params[] = {
     {DEMILL_PAIR_COULOMB_REGULARISATION, "pair.coulomb_regularisation", "1", 0, 1e6, 1, OPEN_LO},
     {DEMILL_PAIR_ROLLING_REGULARISATION, "pair.rolling_regularisation", "1", 0, 1e6, 1, OPEN_LO},
     {DEMILL_PAIR_CLAMP_NORMAL, "pair.clamp_normal", "bool", 0, 1, 1, WHOLE},
+    {DEMILL_PAIR_YIELD_PRESSURE, "pair.yield_pressure", "Pa", 0, 1e30, 0, 0},
+    {DEMILL_PAIR_PLASTIC_FIT_C0, "pair.plastic_fit_c0", "1", -1e30, 1e30, 54.95, 0},
+    {DEMILL_PAIR_PLASTIC_FIT_C1, "pair.plastic_fit_c1", "1/m", -1e30, 1e30, -2889, 0},
+    {DEMILL_PAIR_PLASTIC_FIT_C2, "pair.plastic_fit_c2", "1/m^2", -1e30, 1e30, 88478, 0},
+    {DEMILL_PAIR_PLASTIC_FIT_EXPONENT, "pair.plastic_fit_exponent", "1", 0, 3, 1,
+     OPEN_LO | OPEN_HI},
 
     {DEMILL_DRUM_DIAMETER, "drum.diameter", "m", 0, 1e6, 0.3, OPEN_LO},
     {DEMILL_DRUM_LENGTH, "drum.length", "m", 0, 1e6, 0.1, OPEN_LO},

@@ -90,14 +90,16 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 /* ---- the bytes of a state --------------------------------------------------- */
 
 #define CK_MAGIC "DEMILLCK"
-#define CK_FORMAT 3u          /* the format this library writes and the newest it reads;
+#define CK_FORMAT 4u          /* the format this library writes and the newest it reads;
                                  2 adds the impacts on an ore to the drum's spectrum,
                                  3 a material per part of the drum, the walls'
                                  meshes (section MESH), the feeds and outlets (FLOW),
                                  the finite walls, harmonic motion and surface
                                  velocity (WFIN), the bodies (BODY), the drum's
                                  translation (DRMV), the loads the walls record
-                                 (LOAD) */
+                                 (LOAD); 4 the number of fields per material and of
+                                 values per material pair (MATS), and the yield
+                                 stress and plastic laws' keys they hold */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -667,12 +669,29 @@ static void transfer(io *s, demill_world *w)
 
     io_section(s, "MATS");
     io_count(s, &w->nmat, DM_MAX_MATERIALS, "materials");
+    /* how many fields a material has and how many values a pair (format 4
+     * writes them, so that a key appended since still reads an older file:
+     * the fields a file lacks are 0, the pair values unset) */
+    enum { MAT_FIELDS = 8 };
+    uint32_t mfields = MAT_FIELDS, pkeys = DM_PK_COUNT;
+    if (s->format >= 4) {
+        io_count(s, &mfields, MAT_FIELDS, "fields per material");
+        io_count(s, &pkeys, DM_PK_COUNT, "values per material pair");
+    } else {
+        mfields = 7;
+        pkeys = DM_PK_COUNT_V2;
+    }
     for (uint32_t k = 0; k < w->nmat && !s->status; k++) {
         dm_material *m = &w->mats[k];
-        double *const f[] = {&m->density, &m->youngs, &m->poisson, &m->stiffness,
-                             &m->restitution, &m->friction, &m->rolling_friction};
-        for (int q = 0; q < 7; q++)
-            io_f64(s, f[q], 1);
+        double *const f[MAT_FIELDS] = {&m->density,     &m->youngs,   &m->poisson,
+                                       &m->stiffness,   &m->restitution, &m->friction,
+                                       &m->rolling_friction, &m->yield_stress};
+        for (uint32_t q = 0; q < MAT_FIELDS; q++) {
+            if (s->reading)
+                *f[q] = 0.0;
+            if (q < mfields)
+                io_f64(s, f[q], 1);
+        }
     }
     io_count(s, &w->npairs, (uint64_t)w->nmat * (w->nmat + 1) / 2, "material pairs");
     if (s->reading)
@@ -689,8 +708,11 @@ static void transfer(io *s, demill_world *w)
                             &u->cohesion};
         for (int l = 0; l < (s->format < 3 ? 4 : 5); l++)
             io_int(s, law[l]);
-        io_f64(s, u->value, s->format < 3 ? DM_PK_COUNT_V2 : DM_PK_COUNT);
+        io_f64(s, u->value, pkeys);
         io_u32(s, &u->set, 1);
+        if (s->reading && !s->status && (uint64_t)u->set >> pkeys)
+            io_fail(s, DEMILL_ERR_FORMAT, "material pair %u overrides keys beyond its %u values",
+                    k, pkeys);
     }
 
     io_section(s, "PART");

@@ -8,7 +8,7 @@
 
 static const dm_material default_material = {
     .density = 2500, .youngs = 1e8, .poisson = 0.3, .stiffness = 1e5,
-    .restitution = 0.5, .friction = 0.5, .rolling_friction = 0};
+    .restitution = 0.5, .friction = 0.5, .rolling_friction = 0, .yield_stress = 0};
 
 DEMILL_API demill_status demill_material_create(demill_world *w, demill_id *out)
 {
@@ -38,6 +38,7 @@ static double *material_field(dm_material *m, int32_t key)
     case DEMILL_MATERIAL_RESTITUTION: return &m->restitution;
     case DEMILL_MATERIAL_FRICTION: return &m->friction;
     case DEMILL_MATERIAL_ROLLING_FRICTION: return &m->rolling_friction;
+    case DEMILL_MATERIAL_YIELD_STRESS: return &m->yield_stress;
     default: return NULL;
     }
 }
@@ -130,6 +131,11 @@ static int pair_key_index(int32_t key)
     case DEMILL_PAIR_COULOMB_REGULARISATION: return DM_PK_COULOMB_REG;
     case DEMILL_PAIR_ROLLING_REGULARISATION: return DM_PK_ROLLING_REG;
     case DEMILL_PAIR_CLAMP_NORMAL: return DM_PK_CLAMP;
+    case DEMILL_PAIR_YIELD_PRESSURE: return DM_PK_YIELD_PRESSURE;
+    case DEMILL_PAIR_PLASTIC_FIT_C0: return DM_PK_FIT_C0;
+    case DEMILL_PAIR_PLASTIC_FIT_C1: return DM_PK_FIT_C1;
+    case DEMILL_PAIR_PLASTIC_FIT_C2: return DM_PK_FIT_C2;
+    case DEMILL_PAIR_PLASTIC_FIT_EXPONENT: return DM_PK_FIT_H;
     default: return -1;
     }
 }

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "physics/contact/plastic.h"
 #include "world/world.h"
 
 #define DEFAULT_STEPS_PER_CONTACT 50.0
@@ -56,7 +57,13 @@ static pair_needs pair_analysis(const dm_pairparam *pp, const pair_bodies *b, do
      * an elastic impact at v, Johnson 1985, Contact Mechanics §11.4), the
      * impact's duration and √(R* δ_max), which Mindlin's k_t follows */
     double stiff, sq;
-    if (laws.normal == DEMILL_NORMAL_HERTZ) {
+    if (dm_normal_plastic(laws.normal)) {
+        /* the unloading curve's slope at δ_max, and twice the shorter of
+         * the loading and unloading phases (contact/plastic.h) */
+        double delta;
+        dm_plastic_impact(laws.normal, pp, b->rstar, ms, v, &delta, &stiff, &n.contact);
+        sq = sqrt(b->rstar * delta);
+    } else if (laws.normal == DEMILL_NORMAL_HERTZ) {
         const double es = pp->e_star;
         const double delta = pow(15.0 * ms * v * v / (16.0 * es * sqrt(b->rstar)), 0.4);
         n.contact = 2.87 * pow(ms * ms / (b->rstar * es * es * v), 0.2);
@@ -301,7 +308,7 @@ DEMILL_API demill_status demill_world_suggest_time_step(demill_world *w, double 
         bool hertz = false;
         for (uint32_t c = 0; c < w->nmat && w->mat_particles[a]; c++)
             hertz |= (w->mat_particles[c] || w->mat_walls[c]) &&
-                     dm_kernel_laws(w->ptab[a * w->nmat + c].kernel).normal == DEMILL_NORMAL_HERTZ;
+                     dm_normal_hertzian(dm_kernel_laws(w->ptab[a * w->nmat + c].kernel).normal);
         if (hertz)
             b.suggested = fmin(b.suggested, LIMIT_FRACTION * rayleigh_time(&w->mats[a], sm.r[a]));
     }

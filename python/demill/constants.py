@@ -112,6 +112,7 @@ class MaterialKey(IntEnum):
     RESTITUTION = 204
     FRICTION = 205
     ROLLING_FRICTION = 206
+    YIELD_STRESS = 207
 
 
 class Normal(IntEnum):
@@ -120,6 +121,9 @@ class Normal(IntEnum):
     NONE = 0
     LINEAR = 1
     HERTZ = 2
+    THORNTON = 3
+    WALTON_BRAUN = 4
+    PLASTIC_PATHS = 5
 
 
 class Damping(IntEnum):
@@ -170,6 +174,11 @@ class PairKey(IntEnum):
     COULOMB_REGULARISATION = 317
     ROLLING_REGULARISATION = 318
     CLAMP_NORMAL = 319
+    YIELD_PRESSURE = 320
+    PLASTIC_FIT_C0 = 321
+    PLASTIC_FIT_C1 = 322
+    PLASTIC_FIT_C2 = 323
+    PLASTIC_FIT_EXPONENT = 324
 
 
 class ParticleField(IntEnum):

@@ -75,6 +75,7 @@ class Material(Handle, Keyed):
     restitution = Param(MaterialKey.RESTITUTION)
     friction = Param(MaterialKey.FRICTION)
     rolling_friction = Param(MaterialKey.ROLLING_FRICTION)
+    yield_stress = Param(MaterialKey.YIELD_STRESS)
 
     _getter, _setter = "demill_material_get", "demill_material_set"
 
@@ -102,6 +103,11 @@ class Pair(Keyed):
     coulomb_regularisation = Param(PairKey.COULOMB_REGULARISATION)
     rolling_regularisation = Param(PairKey.ROLLING_REGULARISATION)
     clamp_normal = Param(PairKey.CLAMP_NORMAL, bool)
+    yield_pressure = Param(PairKey.YIELD_PRESSURE)
+    plastic_fit_c0 = Param(PairKey.PLASTIC_FIT_C0)
+    plastic_fit_c1 = Param(PairKey.PLASTIC_FIT_C1)
+    plastic_fit_c2 = Param(PairKey.PLASTIC_FIT_C2)
+    plastic_fit_exponent = Param(PairKey.PLASTIC_FIT_EXPONENT)
 
     def __init__(self, world, a, b):
         self.world = world

@@ -732,6 +732,7 @@ static void bad_material_set(scene *sc)
             {DEMILL_MATERIAL_RESTITUTION, -1e-300},  {DEMILL_MATERIAL_RESTITUTION, 1.5},
             {DEMILL_MATERIAL_RESTITUTION, -0.5},     {DEMILL_MATERIAL_RESTITUTION, 1.0000001},
             {DEMILL_MATERIAL_FRICTION, -0.1},        {DEMILL_MATERIAL_ROLLING_FRICTION, -0.1},
+            {DEMILL_MATERIAL_YIELD_STRESS, -1e-300}, {DEMILL_MATERIAL_YIELD_STRESS, 2e30},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "material %d key %d = %g", m, (int)invalid[k].key, invalid[k].v);
@@ -739,7 +740,7 @@ static void bad_material_set(scene *sc)
                 demill_material_set(w, mat, invalid[k].key, invalid[k].v),
                 demill_param_name(invalid[k].key));
         }
-        static const int32_t unknown[] = {0, 100, 199, 207, 250, 300, 310, -1};
+        static const int32_t unknown[] = {0, 100, 199, 250, 299, 300, 310, -1};
         for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
             char num[16];
             snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -767,8 +768,8 @@ END_TEST
 static void bad_pair_set(scene *sc)
 {
     demill_world *w = sc->w;
-    static const int32_t keys[] = {300, 301, 302, 303, 310, 311, 312,
-                                   313, 314, 315, 316, 317, 318, 319};
+    static const int32_t keys[] = {300, 301, 302, 303, 310, 311, 312, 313, 314,
+                                   315, 316, 317, 318, 319, 320, 321, 322, 323, 324};
     const demill_id A = sc->mat[0], B = sc->mat[1];
     const demill_id pairs[4][2] = {{A, B}, {B, A}, {A, A}, {B, B}};
     for (int p = 0; p < 4; p++) {
@@ -783,7 +784,7 @@ static void bad_pair_set(scene *sc)
             int32_t key;
             double v;
         } enums[] = {
-            {DEMILL_PAIR_NORMAL, 3},      {DEMILL_PAIR_NORMAL, 7},     {DEMILL_PAIR_NORMAL, -1},
+            {DEMILL_PAIR_NORMAL, 6},      {DEMILL_PAIR_NORMAL, 7},     {DEMILL_PAIR_NORMAL, -1},
             {DEMILL_PAIR_NORMAL, 100},    {DEMILL_PAIR_DAMPING, 3},    {DEMILL_PAIR_DAMPING, -1},
             {DEMILL_PAIR_TANGENTIAL, 4},  {DEMILL_PAIR_TANGENTIAL, -1},
             {DEMILL_PAIR_ROLLING, 2},     {DEMILL_PAIR_ROLLING, -1},
@@ -815,6 +816,14 @@ static void bad_pair_set(scene *sc)
             {DEMILL_PAIR_CLAMP_NORMAL, 2},
             {DEMILL_PAIR_CLAMP_NORMAL, -1},
             {DEMILL_PAIR_CLAMP_NORMAL, 0.5},
+            {DEMILL_PAIR_YIELD_PRESSURE, -1e-300},
+            {DEMILL_PAIR_YIELD_PRESSURE, 2e30},
+            {DEMILL_PAIR_PLASTIC_FIT_C0, -2e30},
+            {DEMILL_PAIR_PLASTIC_FIT_C1, 2e30},
+            {DEMILL_PAIR_PLASTIC_FIT_C2, -2e30},
+            {DEMILL_PAIR_PLASTIC_FIT_EXPONENT, 0.0},
+            {DEMILL_PAIR_PLASTIC_FIT_EXPONENT, 3.0},
+            {DEMILL_PAIR_PLASTIC_FIT_EXPONENT, -1.0},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "pair %d key %d = %g", p, (int)invalid[k].key, invalid[k].v);

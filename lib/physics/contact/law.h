@@ -18,6 +18,7 @@
 
 #include <math.h>
 
+#include "physics/contact/plastic.h"
 #include "physics/state/state.h"
 
 #define DM_INLINE static inline __attribute__((always_inline))
@@ -102,8 +103,7 @@ DM_INLINE int dm_law_exit(int normal, int damping)
  * rolling law (its spring) and of the cohesion law. */
 DM_INLINE int dm_law_normal_size(int normal)
 {
-    (void)normal;
-    return 0;
+    return dm_plastic_hist_size(normal);
 }
 
 DM_INLINE int dm_law_rolling_size(int rolling, int dim)
@@ -183,10 +183,24 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
     const int advance = dt_hist > 0.0;
 
     /* normal law (§2): elastic force and contact stiffness S = dF/dδ */
-    double fel, stiff, sq = 0.0;
+    double fel, stiff, sq = 0.0, plastic = 0.0;
     if (NL == DEMILL_NORMAL_LINEAR) {
         fel = pp->kn * delta;
         stiff = pp->kn;
+    } else if (dm_normal_plastic(NL)) {
+        /* the elasto-plastic laws (contact/plastic.h): the force on the
+         * current branch, its unloading slope for S, the step's plastic
+         * work; the history δ_max (and the multi-path law's onset) */
+        const int HN = dm_law_off_normal(NL, DL, TL, D);
+        dm_plastic_out po;
+        dm_plastic_law(NL, pp, rstar, delta, hin + HN, &po);
+        fel = po.f;
+        stiff = po.stiff;
+        sq = sqrt(rstar * delta);
+        plastic = advance ? po.diss : 0.0;
+        hout[HN] = advance ? po.dmax : hin[HN];
+        if (NL == DEMILL_NORMAL_PLASTIC_PATHS)
+            hout[HN + 1] = advance ? po.onset : hin[HN + 1];
     } else {
         sq = sqrt(rstar * delta);
         fel = (4.0 / 3.0) * pp->e_star * sq * delta;
@@ -229,7 +243,8 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
          * deceleration), solved for the root that is stable for dec -> 0 */
         const double est = 2.0 * delta / (va + sqrt(va * va + 2.0 * dec * delta));
         const double a = (est < dt_hist ? est : dt_hist) / dt_hist, e = a + reach; /* steps */
-        const double w_d = NL == DEMILL_NORMAL_LINEAR ? e : 0.8 * e * sqrt(sqrt(e / a));
+        const int lin = NL == DEMILL_NORMAL_LINEAR || NL == DEMILL_NORMAL_WALTON_BRAUN;
+        const double w_d = lin ? e : 0.8 * e * sqrt(sqrt(e / a));
         const int young = advance & first & (va > 0.0);
         fn = young ? fel + w_d * (fn - fel) : fn;
     }
@@ -241,7 +256,8 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
     o->fel = fel;
     o->diss_normal = -(fn - fel) * vnd * dt_hist;
     o->diss_tangential = o->diss_friction = o->diss_rolling = 0.0;
-    o->diss_plastic = o->diss_rolling_viscous = o->work_cohesion = 0.0;
+    o->diss_plastic = plastic;
+    o->diss_rolling_viscous = o->work_cohesion = 0.0;
     (void)CL;
 
     /* tangential law (§4) */
@@ -371,10 +387,15 @@ DM_INLINE void dm_law_stored(int dim, dm_laws l, const dm_pairparam *pp, double 
 {
     const int NL = l.normal, TL = l.tangential;
     *e_rolling = 0.0;
-    if (NL == DEMILL_NORMAL_LINEAR)
+    if (NL == DEMILL_NORMAL_LINEAR) {
         *e_normal = 0.5 * pp->kn * delta * delta;
-    else
+    } else if (dm_normal_plastic(NL)) { /* the current unloading curve's */
+        dm_plastic_out po;
+        dm_plastic_law(NL, pp, rstar, delta, hist + dm_law_off_normal(NL, l.damping, TL, dim), &po);
+        *e_normal = po.stored;
+    } else {
         *e_normal = 8.0 / 15.0 * pp->e_star * sqrt(rstar * delta) * delta * delta;
+    }
     *e_tangential = 0.0;
     if (TL == DEMILL_TANGENTIAL_SPRING || TL == DEMILL_TANGENTIAL_MINDLIN) {
         double kt = TL == DEMILL_TANGENTIAL_SPRING ? pp->kt : pp->g8 * sqrt(rstar * delta);

@@ -6,6 +6,7 @@
 
 #include "base/status.h"
 #include "physics/contact/contact.h"
+#include "physics/contact/plastic.h"
 
 const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b)
 {
@@ -36,6 +37,11 @@ void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws
     v[DM_PK_COULOMB_REG] = 1;
     v[DM_PK_ROLLING_REG] = 1;
     v[DM_PK_CLAMP] = 1;
+    /* the weaker material yields first; 0 is no yield */
+    const double sa = ma->yield_stress, sb = mb->yield_stress;
+    v[DM_PK_YIELD_PRESSURE] = 1.6 * (sa == 0.0 ? sb : sb == 0.0 ? sa : fmin(sa, sb));
+    for (int k = 0; k < 4; k++) /* the multi-path fit's defaults (lib/base/params.c) */
+        demill_param_bounds(DEMILL_PAIR_PLASTIC_FIT_C0 + k, NULL, NULL, &v[DM_PK_FIT_C0 + k]);
     *laws = (dm_laws){0, 0, 0, 0, 0};
     if (!u)
         return;
@@ -89,6 +95,9 @@ static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairp
     pp->mu_r = v[DM_PK_ROLLING_FRICTION];
     pp->coul_reg = v[DM_PK_COULOMB_REG];
     pp->roll_reg = v[DM_PK_ROLLING_REG];
+    pp->py = v[DM_PK_YIELD_PRESSURE] > 0.0 ? v[DM_PK_YIELD_PRESSURE] : INFINITY;
+    for (int k = 0; k < 4; k++)
+        pp->fit[k] = v[DM_PK_FIT_C0 + k];
 }
 
 /* Rebuilds the resolved pair table if anything changed, and (if asked)
@@ -111,6 +120,16 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
                                    a, b,
                                    w->mat_walls[b] && !w->mat_particles[b] ? "particle-wall"
                                                                             : "particle-particle");
+                static const char *const plastic[] = {"THORNTON", "WALTON_BRAUN",
+                                                      "PLASTIC_PATHS"};
+                if (dm_normal_plastic(u->normal) && u->damping == DEMILL_DAMPING_RESTITUTION)
+                    return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                                   "materials %u and %u: the plastic normal law DEMILL_NORMAL_%s "
+                                   "dissipates on its own, and DEMILL_DAMPING_RESTITUTION, "
+                                   "derived for an elastic law, would rebound below the "
+                                   "restitution asked for: use DEMILL_DAMPING_NONE or "
+                                   "DEMILL_DAMPING_VISCOUS",
+                                   a, b, plastic[u->normal - DEMILL_NORMAL_THORNTON]);
             }
         }
     }

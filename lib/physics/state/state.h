@@ -18,15 +18,17 @@
 /* ---- materials and pairs (the world's API; resolved by contact/pairs.c) ---- */
 typedef struct dm_material {
     double density, youngs, poisson, stiffness, restitution, friction, rolling_friction;
+    double yield_stress; /* 0: does not yield */
 } dm_material;
 
 /* Derived pair keys the user may override; bit i of dm_pair_user.set. */
 enum {
     DM_PK_RESTITUTION, DM_PK_FRICTION, DM_PK_ROLLING_FRICTION, DM_PK_NORMAL_STIFFNESS,
     DM_PK_VISCOUS, DM_PK_KT_RATIO, DM_PK_CT_FACTOR, DM_PK_COULOMB_REG, DM_PK_ROLLING_REG,
-    DM_PK_CLAMP, DM_PK_COUNT
+    DM_PK_CLAMP, DM_PK_YIELD_PRESSURE, DM_PK_FIT_C0, DM_PK_FIT_C1, DM_PK_FIT_C2, DM_PK_FIT_H,
+    DM_PK_COUNT
 };
-/* The keys checkpoints of formats 1 and 2 hold. */
+/* The keys checkpoints of formats 1 to 3 hold (4 says how many it holds). */
 #define DM_PK_COUNT_V2 10
 
 /* What the user chose for one material pair (a <= b). */
@@ -74,6 +76,8 @@ typedef struct dm_pairparam {
     double mu, mu_r;
     double coul_reg, roll_reg; /* regularisation factors */
     double restitution, xi;
+    double py;           /* limiting contact pressure of the plastic laws (∞: no yield) */
+    double fit[4];       /* the multi-path law's c0, c1, c2 and H (contact/plastic.h) */
 } dm_pairparam;
 
 /* ---- walls (geometry/walls.c) ------------------------------------------- */
