@@ -34,7 +34,16 @@ enum {
     DEMILL_MATERIAL_FRICTION = 205,
     /** Rolling friction coefficient μ_r (dimensionless: the resisting torque
      *  is μ_r R* |F_n|), >= 0. Default 0. */
-    DEMILL_MATERIAL_ROLLING_FRICTION = 206
+    DEMILL_MATERIAL_ROLLING_FRICTION = 206,
+    /** Local (non-viscous) damping coefficient α of the material's
+     *  particles, in [0, 1) (Cundall 1987; docs/physics.md, Local damping):
+     *  each component of a particle's force F and torque M is opposed by
+     *  α |F_c| (α |M_c|) against the sign of its velocity component. For
+     *  quasi-static packing and calibration runs; it damps free flight under
+     *  gravity too. Velocity Verlet and symplectic Euler only: stepping a
+     *  world with the iterative refinement fails while a particle's material
+     *  has it. Default 0 (off). */
+    DEMILL_MATERIAL_LOCAL_DAMPING = 210
 };
 
 /** Normal force laws, the values of DEMILL_PAIR_NORMAL. */

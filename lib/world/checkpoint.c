@@ -90,14 +90,17 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 /* ---- the bytes of a state --------------------------------------------------- */
 
 #define CK_MAGIC "DEMILLCK"
-#define CK_FORMAT 3u          /* the format this library writes and the newest it reads;
+#define CK_FORMAT 4u          /* the format this library writes and the newest it reads;
                                  2 adds the impacts on an ore to the drum's spectrum,
                                  3 a material per part of the drum, the walls'
                                  meshes (section MESH), the feeds and outlets (FLOW),
                                  the finite walls, harmonic motion and surface
                                  velocity (WFIN), the bodies (BODY), the drum's
                                  translation (DRMV), the loads the walls record
-                                 (LOAD) */
+                                 (LOAD); 4 the extended laws (a pair's cohesion
+                                 law and the new keys, the energy terms 19-23,
+                                 the lists of the extended kernels) and the
+                                 materials' local damping */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -662,7 +665,7 @@ static void transfer(io *s, demill_world *w)
     double *const tally[] = {&ty->diss_normal,  &ty->diss_tangential,      &ty->diss_friction,
                              &ty->diss_rolling, &ty->wall_work,            &ty->diss_plastic,
                              &ty->diss_rolling_viscous, &ty->work_cohesion, &ty->diss_local};
-    for (int k = 0; k < (s->format < 3 ? 5 : 9); k++)
+    for (int k = 0; k < (s->format < 4 ? 5 : 9); k++)
         io_f64(s, tally[k], 1);
 
     io_section(s, "MATS");
@@ -673,6 +676,8 @@ static void transfer(io *s, demill_world *w)
                              &m->restitution, &m->friction, &m->rolling_friction};
         for (int q = 0; q < 7; q++)
             io_f64(s, f[q], 1);
+        if (s->format >= 4)
+            io_f64(s, &m->local_damping, 1);
     }
     io_count(s, &w->npairs, (uint64_t)w->nmat * (w->nmat + 1) / 2, "material pairs");
     if (s->reading)
@@ -687,9 +692,9 @@ static void transfer(io *s, demill_world *w)
         io_u32(s, &u->b, 1);
         int *const law[] = {&u->normal, &u->damping, &u->tangential, &u->rolling,
                             &u->cohesion};
-        for (int l = 0; l < (s->format < 3 ? 4 : 5); l++)
+        for (int l = 0; l < (s->format < 4 ? 4 : 5); l++)
             io_int(s, law[l]);
-        io_f64(s, u->value, s->format < 3 ? DM_PK_COUNT_V2 : DM_PK_COUNT);
+        io_f64(s, u->value, s->format < 4 ? DM_PK_COUNT_V2 : DM_PK_COUNT);
         io_u32(s, &u->set, 1);
     }
 
@@ -740,10 +745,10 @@ static void transfer(io *s, demill_world *w)
 
     io_section(s, "CONT");
     /* the lists of the kernels up to the last that holds pairs (before
-     * format 3, of the fast ones, which were all there were); the others
+     * format 4, of the fast ones, which were all there were); the others
      * are empty */
     uint32_t lists = DM_FAST_KERNELS;
-    if (s->format >= 3) {
+    if (s->format >= 4) {
         for (lists = s->reading ? 0 : (uint32_t)w->nkern; lists > DM_FAST_KERNELS &&
                                                          !w->pp.b[lists - 1].n &&
                                                          !w->pw.b[lists - 1].n;)

@@ -714,8 +714,10 @@ static void bad_material_set(scene *sc)
     demill_world *w = sc->w;
     for (int m = 0; m < 2; m++) {
         const demill_id mat = sc->mat[m];
-        for (int32_t key = 200; key <= 206; key++)
+        static const int32_t keys[] = {200, 201, 202, 203, 204, 205, 206, 210};
+        for (size_t q = 0; q < sizeof keys / sizeof keys[0]; q++)
             for (int k = 0; k < 3; k++) {
+                const int32_t key = keys[q];
                 ctx(sc, "material %d key %d = %g", m, (int)key, nonfinite[k]);
                 BAD(sc, DEMILL_ERR_NOT_FINITE, demill_material_set(w, mat, key, nonfinite[k]),
                     demill_param_name(key), NONFINITE);
@@ -732,6 +734,8 @@ static void bad_material_set(scene *sc)
             {DEMILL_MATERIAL_RESTITUTION, -1e-300},  {DEMILL_MATERIAL_RESTITUTION, 1.5},
             {DEMILL_MATERIAL_RESTITUTION, -0.5},     {DEMILL_MATERIAL_RESTITUTION, 1.0000001},
             {DEMILL_MATERIAL_FRICTION, -0.1},        {DEMILL_MATERIAL_ROLLING_FRICTION, -0.1},
+            {DEMILL_MATERIAL_LOCAL_DAMPING, -0.1},   {DEMILL_MATERIAL_LOCAL_DAMPING, 1.0},
+            {DEMILL_MATERIAL_LOCAL_DAMPING, -1e-300},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "material %d key %d = %g", m, (int)invalid[k].key, invalid[k].v);

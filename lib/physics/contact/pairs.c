@@ -135,12 +135,16 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
                 w->ptab[a * w->nmat_tab + b].kernel != pp->kernel)
                 kernels_changed = true;
         }
+    bool local_damping = false;
+    for (uint32_t a = 0; a < nm; a++)
+        local_damping |= w->mat_particles[a] && w->mats[a].local_damping > 0.0;
     free(w->ptab);
     w->ptab = tab;
     w->nmat_tab = nm;
     w->ptab_dirty = false;
     w->rotation = rotation;
     w->nkern = nkern;
+    w->local_damping = local_damping;
     if (kernels_changed || !w->nlist_valid) {
         /* contact lists are grouped by kernel: start them afresh */
         dm_clist_clear(w);

@@ -18,6 +18,7 @@
 /* ---- materials and pairs (the world's API; resolved by contact/pairs.c) ---- */
 typedef struct dm_material {
     double density, youngs, poisson, stiffness, restitution, friction, rolling_friction;
+    double local_damping; /* α of local damping (integrate/integrate.c) */
 } dm_material;
 
 /* Derived pair keys the user may override; bit i of dm_pair_user.set. */
@@ -26,7 +27,7 @@ enum {
     DM_PK_VISCOUS, DM_PK_KT_RATIO, DM_PK_CT_FACTOR, DM_PK_COULOMB_REG, DM_PK_ROLLING_REG,
     DM_PK_CLAMP, DM_PK_COUNT
 };
-/* The keys checkpoints of formats 1 and 2 hold. */
+/* The keys checkpoints of formats 1 to 3 hold. */
 #define DM_PK_COUNT_V2 10
 
 /* What the user chose for one material pair (a <= b). */
@@ -563,6 +564,7 @@ struct demill_world {
     double cohesion_reach;   /* how far past touching a cohesive pair may still
                                 interact: the neighbour search reaches that far more */
     bool generic_kernels;    /* tests only: every combination runs the generic kernel */
+    bool local_damping;      /* some particle's material has local damping */
 
     /* particles */
     dm_particles p;
