@@ -59,7 +59,7 @@ static const param_info params[] = {
     {DEMILL_PAIR_NORMAL, "pair.normal", "enum", 0, 2, 0, WHOLE},
     {DEMILL_PAIR_DAMPING, "pair.damping", "enum", 0, 2, 0, WHOLE},
     {DEMILL_PAIR_TANGENTIAL, "pair.tangential", "enum", 0, 3, 0, WHOLE},
-    {DEMILL_PAIR_ROLLING, "pair.rolling", "enum", 0, 1, 0, WHOLE},
+    {DEMILL_PAIR_ROLLING, "pair.rolling", "enum", 0, 2, 0, WHOLE},
     {DEMILL_PAIR_COHESION, "pair.cohesion", "enum", 0, 0, 0, WHOLE},
     {DEMILL_PAIR_RESTITUTION, "pair.restitution", "1", 0, 1, 0.5, 0},
     {DEMILL_PAIR_FRICTION, "pair.friction", "1", 0, 1e6, 0.5, 0},
@@ -72,6 +72,8 @@ static const param_info params[] = {
     {DEMILL_PAIR_COULOMB_REGULARISATION, "pair.coulomb_regularisation", "1", 0, 1e6, 1, OPEN_LO},
     {DEMILL_PAIR_ROLLING_REGULARISATION, "pair.rolling_regularisation", "1", 0, 1e6, 1, OPEN_LO},
     {DEMILL_PAIR_CLAMP_NORMAL, "pair.clamp_normal", "bool", 0, 1, 1, WHOLE},
+    {DEMILL_PAIR_ROLLING_STIFFNESS, "pair.rolling_stiffness", "N m/rad", 0, 1e30, 0, 0},
+    {DEMILL_PAIR_ROLLING_DAMPING_RATIO, "pair.rolling_damping_ratio", "1", 0, 1e6, 0.3, 0},
 
     {DEMILL_DRUM_DIAMETER, "drum.diameter", "m", 0, 1e6, 0.3, OPEN_LO},
     {DEMILL_DRUM_LENGTH, "drum.length", "m", 0, 1e6, 0.1, OPEN_LO},

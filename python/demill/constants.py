@@ -145,6 +145,7 @@ class Rolling(IntEnum):
 
     NONE = 0
     CONSTANT_TORQUE = 1
+    SPRING = 2
 
 
 class Cohesion(IntEnum):
@@ -171,6 +172,8 @@ class PairKey(IntEnum):
     COULOMB_REGULARISATION = 317
     ROLLING_REGULARISATION = 318
     CLAMP_NORMAL = 319
+    ROLLING_STIFFNESS = 327
+    ROLLING_DAMPING_RATIO = 328
 
 
 class ParticleField(IntEnum):

@@ -103,6 +103,8 @@ class Pair(Keyed):
     coulomb_regularisation = Param(PairKey.COULOMB_REGULARISATION)
     rolling_regularisation = Param(PairKey.ROLLING_REGULARISATION)
     clamp_normal = Param(PairKey.CLAMP_NORMAL, bool)
+    rolling_stiffness = Param(PairKey.ROLLING_STIFFNESS)
+    rolling_damping_ratio = Param(PairKey.ROLLING_DAMPING_RATIO)
 
     def __init__(self, world, a, b):
         self.world = world

@@ -74,6 +74,32 @@ class FreeFall(unittest.TestCase):
             with self.assertRaises(demill.InvalidValue):
                 m.local_damping = 1.0
 
+    def test_rolling_spring_holds_a_ball_on_a_slope(self):
+        """Below its threshold (tan β = 0.05 < μ_r = 0.1) the rolling spring
+        holds a ball still: after settling it moves less than 1e-9 m in 0.2 s;
+        its stiffness reads back as set, and 0 (the default) asks for
+        2.25 k_n μ_r² R*² per contact."""
+        beta = math.atan(0.05)
+        g = (9.81 * math.sin(beta), -9.81 * math.cos(beta), 0)
+        with demill.World(3, gravity=g, time_step=2e-5) as w:
+            m = w.material()
+            pair = w.pair(m, m, normal=Normal.LINEAR, damping=Damping.RESTITUTION,
+                          tangential=Tangential.SPRING, friction=1.0,
+                          rolling=demill.Rolling.SPRING, rolling_friction=0.1)
+            self.assertEqual(pair.rolling_stiffness, 0.0)
+            self.assertEqual(pair.rolling_damping_ratio, 0.3)
+            w.add_plane(m, (0, 0, 0), (0, 1, 0))
+            (pid,) = w.particles.add(m, (0, 0.01, 0), 0.01)
+            w.step(25000)
+            x0 = w.particle(pid).position[0]
+            w.step(10000)
+            self.assertLess(abs(w.particle(pid).position[0] - x0), 1e-9)
+            self.assertGreater(w.energy(Energy.ELASTIC_ROLLING), 0.0)
+            pair.rolling_stiffness = 0.05
+            self.assertEqual(pair.rolling_stiffness, 0.05)
+            with self.assertRaises(demill.InvalidValue):
+                pair.rolling_damping_ratio = -1.0
+
 
 class Collisions(unittest.TestCase):
     def collide(self, w, m, r, v, dt, steps):

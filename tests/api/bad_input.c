@@ -771,8 +771,8 @@ END_TEST
 static void bad_pair_set(scene *sc)
 {
     demill_world *w = sc->w;
-    static const int32_t keys[] = {300, 301, 302, 303, 310, 311, 312,
-                                   313, 314, 315, 316, 317, 318, 319};
+    static const int32_t keys[] = {300, 301, 302, 303, 310, 311, 312, 313,
+                                   314, 315, 316, 317, 318, 319, 327, 328};
     const demill_id A = sc->mat[0], B = sc->mat[1];
     const demill_id pairs[4][2] = {{A, B}, {B, A}, {A, A}, {B, B}};
     for (int p = 0; p < 4; p++) {
@@ -790,7 +790,7 @@ static void bad_pair_set(scene *sc)
             {DEMILL_PAIR_NORMAL, 3},      {DEMILL_PAIR_NORMAL, 7},     {DEMILL_PAIR_NORMAL, -1},
             {DEMILL_PAIR_NORMAL, 100},    {DEMILL_PAIR_DAMPING, 3},    {DEMILL_PAIR_DAMPING, -1},
             {DEMILL_PAIR_TANGENTIAL, 4},  {DEMILL_PAIR_TANGENTIAL, -1},
-            {DEMILL_PAIR_ROLLING, 2},     {DEMILL_PAIR_ROLLING, -1},
+            {DEMILL_PAIR_ROLLING, 3},     {DEMILL_PAIR_ROLLING, -1},
         };
         for (size_t k = 0; k < sizeof enums / sizeof enums[0]; k++) {
             ctx(sc, "pair %d law key %d = %g", p, (int)enums[k].key, enums[k].v);
@@ -819,6 +819,9 @@ static void bad_pair_set(scene *sc)
             {DEMILL_PAIR_CLAMP_NORMAL, 2},
             {DEMILL_PAIR_CLAMP_NORMAL, -1},
             {DEMILL_PAIR_CLAMP_NORMAL, 0.5},
+            {DEMILL_PAIR_ROLLING_STIFFNESS, -1e-300},
+            {DEMILL_PAIR_ROLLING_STIFFNESS, -0.1},
+            {DEMILL_PAIR_ROLLING_DAMPING_RATIO, -0.3},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "pair %d key %d = %g", p, (int)invalid[k].key, invalid[k].v);

@@ -36,6 +36,8 @@ void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws
     v[DM_PK_COULOMB_REG] = 1;
     v[DM_PK_ROLLING_REG] = 1;
     v[DM_PK_CLAMP] = 1;
+    v[DM_PK_ROLLING_STIFFNESS] = 0;
+    v[DM_PK_ROLLING_DAMPING] = 0.3;
     *laws = (dm_laws){0, 0, 0, 0, 0};
     if (!u)
         return;
@@ -89,6 +91,8 @@ static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairp
     pp->mu_r = v[DM_PK_ROLLING_FRICTION];
     pp->coul_reg = v[DM_PK_COULOMB_REG];
     pp->roll_reg = v[DM_PK_ROLLING_REG];
+    pp->kr = v[DM_PK_ROLLING_STIFFNESS];
+    pp->eta_r = v[DM_PK_ROLLING_DAMPING];
 }
 
 /* Rebuilds the resolved pair table if anything changed, and (if asked)

@@ -25,7 +25,7 @@ typedef struct dm_material {
 enum {
     DM_PK_RESTITUTION, DM_PK_FRICTION, DM_PK_ROLLING_FRICTION, DM_PK_NORMAL_STIFFNESS,
     DM_PK_VISCOUS, DM_PK_KT_RATIO, DM_PK_CT_FACTOR, DM_PK_COULOMB_REG, DM_PK_ROLLING_REG,
-    DM_PK_CLAMP, DM_PK_COUNT
+    DM_PK_CLAMP, DM_PK_ROLLING_STIFFNESS, DM_PK_ROLLING_DAMPING, DM_PK_COUNT
 };
 /* The keys checkpoints of formats 1 to 3 hold. */
 #define DM_PK_COUNT_V2 10
@@ -75,6 +75,8 @@ typedef struct dm_pairparam {
     double mu, mu_r;
     double coul_reg, roll_reg; /* regularisation factors */
     double restitution, xi;
+    double kr;           /* rolling spring's stiffness (0: 2.25 S μ_r² R*² per contact) */
+    double eta_r;        /* rolling dashpot's damping ratio */
 } dm_pairparam;
 
 /* ---- walls (geometry/walls.c) ------------------------------------------- */
