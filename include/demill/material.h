@@ -39,7 +39,16 @@ enum {
      *  laws (DEMILL_NORMAL_THORNTON, DEMILL_NORMAL_PLASTIC_PATHS): a pair's
      *  limiting contact pressure DEMILL_PAIR_YIELD_PRESSURE is derived from
      *  it. 0 (default): the material does not yield. */
-    DEMILL_MATERIAL_YIELD_STRESS = 207
+    DEMILL_MATERIAL_YIELD_STRESS = 207,
+    /** Local (non-viscous) damping coefficient α of the material's
+     *  particles, in [0, 1) (Cundall 1987; docs/physics.md, Local damping):
+     *  each component of a particle's force F and torque M is opposed by
+     *  α |F_c| (α |M_c|) against the sign of its velocity component. For
+     *  quasi-static packing and calibration runs; it damps free flight under
+     *  gravity too. Velocity Verlet and symplectic Euler only: stepping a
+     *  world with the iterative refinement fails while a particle's material
+     *  has it. Default 0 (off). */
+    DEMILL_MATERIAL_LOCAL_DAMPING = 210
 };
 
 /** Normal force laws, the values of DEMILL_PAIR_NORMAL. */
@@ -112,7 +121,17 @@ enum {
      *  docs/physics.md §5): M_r = -min(μ_r R* |F_n|, γ_r |ω_rel|)
      *  ω_rel/|ω_rel| with ω_rel = ω_a - ω_b; γ_r from
      *  DEMILL_PAIR_ROLLING_REGULARISATION. */
-    DEMILL_ROLLING_CONSTANT_TORQUE = 1
+    DEMILL_ROLLING_CONSTANT_TORQUE = 1,
+    /** Elastic-plastic spring-dashpot (model type C of Ai, Chen, Rotter and
+     *  Ooi 2011; docs/physics.md, Rolling spring-dashpot): a rolling spring
+     *  k_r on the relative rolling rotation (ω_rel = ω_a - ω_b less its
+     *  twist about the normal), its torque capped at μ_r R* |F_n|, and a
+     *  dashpot c_r = η_r 2 √(I_r k_r) that is off while the spring slips at
+     *  the cap. Unlike the constant torque it holds a ball still on a slope
+     *  below its threshold (tan β < μ_r). k_r defaults to 2.25 k_n μ_r² R*²
+     *  (DEMILL_PAIR_ROLLING_STIFFNESS), η_r to 0.3
+     *  (DEMILL_PAIR_ROLLING_DAMPING_RATIO). Runs the generic kernel. */
+    DEMILL_ROLLING_SPRING = 2
 };
 
 /** Cohesion laws, the values of DEMILL_PAIR_COHESION. */
@@ -180,7 +199,16 @@ enum {
     DEMILL_PAIR_PLASTIC_FIT_C2 = 323,
     /** The exponent H of DEMILL_NORMAL_PLASTIC_PATHS's plastic force, in
      *  (0, 3). Default 1 (not given by Li et al. 2018: fit it with P). */
-    DEMILL_PAIR_PLASTIC_FIT_EXPONENT = 324
+    DEMILL_PAIR_PLASTIC_FIT_EXPONENT = 324,
+    /** Rolling stiffness k_r of DEMILL_ROLLING_SPRING in N m/rad, >= 0.
+     *  Default 0: each contact's k_r = 2.25 k_n μ_r² R*² (Ai et al. 2011),
+     *  k_n its normal stiffness (k_n, or 2 E* √(R* δ) for Hertz). */
+    DEMILL_PAIR_ROLLING_STIFFNESS = 327,
+    /** Damping ratio η_r of the rolling dashpot of DEMILL_ROLLING_SPRING,
+     *  >= 0: c_r = η_r 2 √(I_r k_r), I_r the pair's moment of inertia about
+     *  the contact, [1/(I_a + m_a r_a²) + 1/(I_b + m_b r_b²)]⁻¹ (a wall's
+     *  term 0). Default 0.3; 0: no dashpot. */
+    DEMILL_PAIR_ROLLING_DAMPING_RATIO = 328
 };
 
 /** Creates a material with default parameters (see the DEMILL_MATERIAL_*

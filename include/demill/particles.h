@@ -25,8 +25,8 @@ enum {
     DEMILL_PARTICLE_ANGULAR_VELOCITY = 3, /**< 3 doubles, rad/s; read/write (2D: x = y = 0) */
     DEMILL_PARTICLE_RADIUS = 4,           /**< 1 double, m, > 0; read/write (mass follows) */
     DEMILL_PARTICLE_MASS = 5,             /**< 1 double, kg; read-only */
-    DEMILL_PARTICLE_FORCE = 6,            /**< 3 doubles, N: total force (contacts and gravity) at the last force evaluation; read-only */
-    DEMILL_PARTICLE_TORQUE = 7,           /**< 3 doubles, N m: total torque at the last force evaluation; read-only */
+    DEMILL_PARTICLE_FORCE = 6,            /**< 3 doubles, N: total force (contacts, gravity and local damping, DEMILL_MATERIAL_LOCAL_DAMPING) at the last force evaluation; read-only */
+    DEMILL_PARTICLE_TORQUE = 7,           /**< 3 doubles, N m: total torque (contacts and local damping) at the last force evaluation; read-only */
     DEMILL_PARTICLE_ANGLE = 8,            /**< 1 double, rad: 2D worlds only, rotation angle θ about z; read/write */
     /** 1 double, 0 or 1; read/write. A fixed particle (1) never moves: no
      *  force moves or turns it, gravity included, and its velocity and

@@ -55,11 +55,12 @@ static const param_info params[] = {
     {DEMILL_MATERIAL_FRICTION, "material.friction", "1", 0, 1e6, 0.5, 0},
     {DEMILL_MATERIAL_ROLLING_FRICTION, "material.rolling_friction", "1", 0, 1e6, 0, 0},
     {DEMILL_MATERIAL_YIELD_STRESS, "material.yield_stress", "Pa", 0, 1e30, 0, 0},
+    {DEMILL_MATERIAL_LOCAL_DAMPING, "material.local_damping", "1", 0, 1, 0, OPEN_HI},
 
     {DEMILL_PAIR_NORMAL, "pair.normal", "enum", 0, 5, 0, WHOLE},
     {DEMILL_PAIR_DAMPING, "pair.damping", "enum", 0, 2, 0, WHOLE},
     {DEMILL_PAIR_TANGENTIAL, "pair.tangential", "enum", 0, 3, 0, WHOLE},
-    {DEMILL_PAIR_ROLLING, "pair.rolling", "enum", 0, 1, 0, WHOLE},
+    {DEMILL_PAIR_ROLLING, "pair.rolling", "enum", 0, 2, 0, WHOLE},
     {DEMILL_PAIR_COHESION, "pair.cohesion", "enum", 0, 0, 0, WHOLE},
     {DEMILL_PAIR_RESTITUTION, "pair.restitution", "1", 0, 1, 0.5, 0},
     {DEMILL_PAIR_FRICTION, "pair.friction", "1", 0, 1e6, 0.5, 0},
@@ -78,6 +79,8 @@ static const param_info params[] = {
     {DEMILL_PAIR_PLASTIC_FIT_C2, "pair.plastic_fit_c2", "1/m^2", -1e30, 1e30, 88478, 0},
     {DEMILL_PAIR_PLASTIC_FIT_EXPONENT, "pair.plastic_fit_exponent", "1", 0, 3, 1,
      OPEN_LO | OPEN_HI},
+    {DEMILL_PAIR_ROLLING_STIFFNESS, "pair.rolling_stiffness", "N m/rad", 0, 1e30, 0, 0},
+    {DEMILL_PAIR_ROLLING_DAMPING_RATIO, "pair.rolling_damping_ratio", "1", 0, 1e6, 0.3, 0},
 
     {DEMILL_DRUM_DIAMETER, "drum.diameter", "m", 0, 1e6, 0.3, OPEN_LO},
     {DEMILL_DRUM_LENGTH, "drum.length", "m", 0, 1e6, 0.1, OPEN_LO},

@@ -8,7 +8,8 @@
 
 static const dm_material default_material = {
     .density = 2500, .youngs = 1e8, .poisson = 0.3, .stiffness = 1e5,
-    .restitution = 0.5, .friction = 0.5, .rolling_friction = 0, .yield_stress = 0};
+    .restitution = 0.5, .friction = 0.5, .rolling_friction = 0, .yield_stress = 0,
+    .local_damping = 0};
 
 DEMILL_API demill_status demill_material_create(demill_world *w, demill_id *out)
 {
@@ -39,6 +40,7 @@ static double *material_field(dm_material *m, int32_t key)
     case DEMILL_MATERIAL_FRICTION: return &m->friction;
     case DEMILL_MATERIAL_ROLLING_FRICTION: return &m->rolling_friction;
     case DEMILL_MATERIAL_YIELD_STRESS: return &m->yield_stress;
+    case DEMILL_MATERIAL_LOCAL_DAMPING: return &m->local_damping;
     default: return NULL;
     }
 }
@@ -136,6 +138,8 @@ static int pair_key_index(int32_t key)
     case DEMILL_PAIR_PLASTIC_FIT_C1: return DM_PK_FIT_C1;
     case DEMILL_PAIR_PLASTIC_FIT_C2: return DM_PK_FIT_C2;
     case DEMILL_PAIR_PLASTIC_FIT_EXPONENT: return DM_PK_FIT_H;
+    case DEMILL_PAIR_ROLLING_STIFFNESS: return DM_PK_ROLLING_STIFFNESS;
+    case DEMILL_PAIR_ROLLING_DAMPING_RATIO: return DM_PK_ROLLING_DAMPING;
     default: return -1;
     }
 }

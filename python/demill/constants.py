@@ -113,6 +113,7 @@ class MaterialKey(IntEnum):
     FRICTION = 205
     ROLLING_FRICTION = 206
     YIELD_STRESS = 207
+    LOCAL_DAMPING = 210
 
 
 class Normal(IntEnum):
@@ -148,6 +149,7 @@ class Rolling(IntEnum):
 
     NONE = 0
     CONSTANT_TORQUE = 1
+    SPRING = 2
 
 
 class Cohesion(IntEnum):
@@ -179,6 +181,8 @@ class PairKey(IntEnum):
     PLASTIC_FIT_C1 = 322
     PLASTIC_FIT_C2 = 323
     PLASTIC_FIT_EXPONENT = 324
+    ROLLING_STIFFNESS = 327
+    ROLLING_DAMPING_RATIO = 328
 
 
 class ParticleField(IntEnum):

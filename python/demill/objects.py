@@ -76,6 +76,7 @@ class Material(Handle, Keyed):
     friction = Param(MaterialKey.FRICTION)
     rolling_friction = Param(MaterialKey.ROLLING_FRICTION)
     yield_stress = Param(MaterialKey.YIELD_STRESS)
+    local_damping = Param(MaterialKey.LOCAL_DAMPING)
 
     _getter, _setter = "demill_material_get", "demill_material_set"
 
@@ -108,6 +109,8 @@ class Pair(Keyed):
     plastic_fit_c1 = Param(PairKey.PLASTIC_FIT_C1)
     plastic_fit_c2 = Param(PairKey.PLASTIC_FIT_C2)
     plastic_fit_exponent = Param(PairKey.PLASTIC_FIT_EXPONENT)
+    rolling_stiffness = Param(PairKey.ROLLING_STIFFNESS)
+    rolling_damping_ratio = Param(PairKey.ROLLING_DAMPING_RATIO)
 
     def __init__(self, world, a, b):
         self.world = world

@@ -47,6 +47,59 @@ class FreeFall(unittest.TestCase):
             y = w.particle(pid).position[1]
             self.assertAlmostEqual(y, g * dt * dt * n * (n + 1) / 2, delta=1e-13)
 
+    def test_local_damping_slows_a_fall(self):
+        """Local damping α opposes the weight of a falling ball by α m g: the
+        first half kick, from rest (sign(v) = 0), is undamped, every later
+        one accelerates at (1 - α) g, so velocity Verlet gives
+        y_n = g dt² (n/2 + (1 - α) n(n - 1)/2), v_n = g dt (1/2 + (1 - α)(n - 1/2)).
+        The damping's energy is booked at each of the n evaluations as
+        dt α m |g| |v_k| (v_k the full-step speed g dt (1/2 + (1 - α)(k - 1/2))),
+        α m g² dt² (n/2 + (1 - α) n²/2) in all: the weight's work less the
+        kinetic energy gained, and the half kick the next step applies."""
+        dt, n, g, alpha = 1e-3, 200, -9.81, 0.4
+        with demill.World(3, time_step=dt) as w:
+            m = w.material(local_damping=alpha)
+            self.assertEqual(m.local_damping, alpha)
+            w.pair(m, m, normal=Normal.LINEAR)
+            (pid,) = w.particles.add(m, (0, 0, 0), 0.01)
+            w.step(n)
+            p = w.particle(pid)
+            self.assertAlmostEqual(p.position[1], g * dt * dt * (n / 2 + (1 - alpha) * n * (n - 1) / 2),
+                                   delta=1e-12)
+            self.assertAlmostEqual(p.velocity[1], g * dt * (0.5 + (1 - alpha) * (n - 0.5)), delta=1e-12)
+            booked = alpha * p.mass * g * g * dt * dt * (n / 2 + (1 - alpha) * n * n / 2)
+            self.assertAlmostEqual(w.energy(Energy.DISSIPATED_LOCAL), booked, delta=1e-12 * booked)
+            lost = p.mass * g * p.position[1] - 0.5 * p.mass * p.velocity[1] ** 2
+            self.assertAlmostEqual(booked, lost, delta=1.0 / n * lost)
+            with self.assertRaises(demill.InvalidValue):
+                m.local_damping = 1.0
+
+    def test_rolling_spring_holds_a_ball_on_a_slope(self):
+        """Below its threshold (tan β = 0.05 < μ_r = 0.1) the rolling spring
+        holds a ball still: after settling it moves less than 1e-9 m in 0.2 s;
+        its stiffness reads back as set, and 0 (the default) asks for
+        2.25 k_n μ_r² R*² per contact."""
+        beta = math.atan(0.05)
+        g = (9.81 * math.sin(beta), -9.81 * math.cos(beta), 0)
+        with demill.World(3, gravity=g, time_step=2e-5) as w:
+            m = w.material()
+            pair = w.pair(m, m, normal=Normal.LINEAR, damping=Damping.RESTITUTION,
+                          tangential=Tangential.SPRING, friction=1.0,
+                          rolling=demill.Rolling.SPRING, rolling_friction=0.1)
+            self.assertEqual(pair.rolling_stiffness, 0.0)
+            self.assertEqual(pair.rolling_damping_ratio, 0.3)
+            w.add_plane(m, (0, 0, 0), (0, 1, 0))
+            (pid,) = w.particles.add(m, (0, 0.01, 0), 0.01)
+            w.step(25000)
+            x0 = w.particle(pid).position[0]
+            w.step(10000)
+            self.assertLess(abs(w.particle(pid).position[0] - x0), 1e-9)
+            self.assertGreater(w.energy(Energy.ELASTIC_ROLLING), 0.0)
+            pair.rolling_stiffness = 0.05
+            self.assertEqual(pair.rolling_stiffness, 0.05)
+            with self.assertRaises(demill.InvalidValue):
+                pair.rolling_damping_ratio = -1.0
+
 
 class Collisions(unittest.TestCase):
     def collide(self, w, m, r, v, dt, steps):

@@ -714,8 +714,10 @@ static void bad_material_set(scene *sc)
     demill_world *w = sc->w;
     for (int m = 0; m < 2; m++) {
         const demill_id mat = sc->mat[m];
-        for (int32_t key = 200; key <= 206; key++)
+        static const int32_t keys[] = {200, 201, 202, 203, 204, 205, 206, 210};
+        for (size_t q = 0; q < sizeof keys / sizeof keys[0]; q++)
             for (int k = 0; k < 3; k++) {
+                const int32_t key = keys[q];
                 ctx(sc, "material %d key %d = %g", m, (int)key, nonfinite[k]);
                 BAD(sc, DEMILL_ERR_NOT_FINITE, demill_material_set(w, mat, key, nonfinite[k]),
                     demill_param_name(key), NONFINITE);
@@ -733,6 +735,8 @@ static void bad_material_set(scene *sc)
             {DEMILL_MATERIAL_RESTITUTION, -0.5},     {DEMILL_MATERIAL_RESTITUTION, 1.0000001},
             {DEMILL_MATERIAL_FRICTION, -0.1},        {DEMILL_MATERIAL_ROLLING_FRICTION, -0.1},
             {DEMILL_MATERIAL_YIELD_STRESS, -1e-300}, {DEMILL_MATERIAL_YIELD_STRESS, 2e30},
+            {DEMILL_MATERIAL_LOCAL_DAMPING, -0.1},   {DEMILL_MATERIAL_LOCAL_DAMPING, 1.0},
+            {DEMILL_MATERIAL_LOCAL_DAMPING, -1e-300},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "material %d key %d = %g", m, (int)invalid[k].key, invalid[k].v);
@@ -768,8 +772,8 @@ END_TEST
 static void bad_pair_set(scene *sc)
 {
     demill_world *w = sc->w;
-    static const int32_t keys[] = {300, 301, 302, 303, 310, 311, 312, 313, 314,
-                                   315, 316, 317, 318, 319, 320, 321, 322, 323, 324};
+    static const int32_t keys[] = {300, 301, 302, 303, 310, 311, 312, 313, 314, 315, 316,
+                                   317, 318, 319, 320, 321, 322, 323, 324, 327, 328};
     const demill_id A = sc->mat[0], B = sc->mat[1];
     const demill_id pairs[4][2] = {{A, B}, {B, A}, {A, A}, {B, B}};
     for (int p = 0; p < 4; p++) {
@@ -787,7 +791,7 @@ static void bad_pair_set(scene *sc)
             {DEMILL_PAIR_NORMAL, 6},      {DEMILL_PAIR_NORMAL, 7},     {DEMILL_PAIR_NORMAL, -1},
             {DEMILL_PAIR_NORMAL, 100},    {DEMILL_PAIR_DAMPING, 3},    {DEMILL_PAIR_DAMPING, -1},
             {DEMILL_PAIR_TANGENTIAL, 4},  {DEMILL_PAIR_TANGENTIAL, -1},
-            {DEMILL_PAIR_ROLLING, 2},     {DEMILL_PAIR_ROLLING, -1},
+            {DEMILL_PAIR_ROLLING, 3},     {DEMILL_PAIR_ROLLING, -1},
         };
         for (size_t k = 0; k < sizeof enums / sizeof enums[0]; k++) {
             ctx(sc, "pair %d law key %d = %g", p, (int)enums[k].key, enums[k].v);
@@ -824,6 +828,9 @@ static void bad_pair_set(scene *sc)
             {DEMILL_PAIR_PLASTIC_FIT_EXPONENT, 0.0},
             {DEMILL_PAIR_PLASTIC_FIT_EXPONENT, 3.0},
             {DEMILL_PAIR_PLASTIC_FIT_EXPONENT, -1.0},
+            {DEMILL_PAIR_ROLLING_STIFFNESS, -1e-300},
+            {DEMILL_PAIR_ROLLING_STIFFNESS, -0.1},
+            {DEMILL_PAIR_ROLLING_DAMPING_RATIO, -0.3},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "pair %d key %d = %g", p, (int)invalid[k].key, invalid[k].v);

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "physics/contact/law.h"
 #include "world/world.h"
 #include "testutil.h"
 
@@ -23,7 +24,8 @@ static double urand(void)
 }
 
 /* A world of n particles with radii in [rmin, 10 rmin], centres uniform in a
- * box of edge `edge`, two materials m (with different kernels) and two planes,
+ * box of edge `edge`, two materials m (with different kernels; the pair of the
+ * two with the rolling spring) and two planes,
  * and in 3D a cylinder about the box's z axis, as wide and long as it. */
 static demill_world *random_world(int dim, int n, double edge, demill_id *ids, demill_id *m)
 {
@@ -39,6 +41,7 @@ static demill_world *random_world(int dim, int n, double edge, demill_id *ids, d
         for (int b = a; b < 2; b++)
             DM_OK(w, demill_pair_set(w, m[a], m[b], DEMILL_PAIR_TANGENTIAL,
                                      a == b ? DEMILL_TANGENTIAL_SPRING : DEMILL_TANGENTIAL_MINDLIN));
+    DM_OK(w, demill_pair_set(w, m[0], m[1], DEMILL_PAIR_ROLLING, DEMILL_ROLLING_SPRING));
     double p0[3] = {0, 0, 0}, n0[3] = {0, 1, 0}, p1[3] = {0, 0, 0}, n1[3] = {1, -1, 0};
     DM_OK(w, demill_wall_add_plane(w, m[0], p0, n0, &wall));
     DM_OK(w, demill_wall_add_plane(w, m[1], p1, n1, &wall));
@@ -329,7 +332,11 @@ START_TEST(history_follows_pairs)
         size_t checked = 0;
         for (int k = 0; k < DM_KERNELS; k++) {
             dm_bucket *b = &w->pp.b[k];
-            int spring = dm_kernel_spring_size(k, dim);
+            const dm_laws l = dm_kernel_laws(k);
+            const int spring = dm_law_spring_size(l.tangential, dim);
+            const int r0 = l.rolling == DEMILL_ROLLING_SPRING
+                               ? dm_law_off_rolling(l.normal, l.damping, l.tangential, dim)
+                               : -1;
             for (uint32_t p = 0; p < b->n; p++) {
                 uint32_t hi = P->hid[b->i[p]], hj = P->hid[b->j[p]];
                 pair_key key = {hi < hj ? hi : hj, hi < hj ? hj : hi, k};
@@ -344,8 +351,11 @@ START_TEST(history_follows_pairs)
                     }
                     double same = 1000.0 * hi + hj + 0.25 * c, swapped = 1000.0 * hj + hi + 0.25 * c;
                     /* a pair whose order flipped carries the other mark; its
-                     * 3D spring vector is negated */
-                    double flipped = c < spring && dim == 3 ? -swapped : swapped;
+                     * 3D spring vector is negated, and the rolling spring's
+                     * torque on a (which becomes the torque on b) */
+                    const int turns = (c < spring && dim == 3) ||
+                                      (r0 >= 0 && c >= r0 && c < r0 + (dim == 3 ? 3 : 1));
+                    double flipped = turns ? -swapped : swapped;
                     ck_assert_msg(v == same || v == flipped,
                                   "pair (%u, %u) slot %d carries %g, expected %g or %g", hi, hj, c,
                                   v, same, flipped);

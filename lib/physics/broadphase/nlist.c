@@ -135,7 +135,9 @@ static void carry_restore(demill_world *w)
                 have = g->ck[c] == key;
             if (!have)
                 continue;
-            const int spring = dm_kernel_spring_size(k, w->dim);
+            double flip[DM_MAX_HIST]; /* on each slot when the pair's order flips */
+            for (int d = 0; d < b->hs; d++)
+                flip[d] = dm_kernel_flip(k, w->dim, d);
             uint32_t p = 0;
             for (uint32_t i = 0; i <= n; i++) {
                 g->row[i] = p;
@@ -146,19 +148,18 @@ static void carry_restore(demill_world *w)
                 if (g->ck[c] != key)
                     continue;
                 uint32_t i = g->inv[g->ci[c]], j = side ? g->cj[c] : g->inv[g->cj[c]];
-                double sign = 1.0;
-                if (!side && i > j) {
+                const bool swap = !side && i > j;
+                if (swap) {
                     uint32_t t = i;
                     i = j;
                     j = t;
-                    sign = w->dim == 3 ? -1.0 : 1.0; /* the 3D spring vector turns; the 2D scalar not */
                 }
                 for (uint32_t q = g->row[i]; q < g->row[i + 1]; q++)
                     if (b->j[q] == j && (!side || b->t[q] == g->ct[c])) {
                         b->on[q] = 1;
                         for (int d = 0; d < b->hs; d++)
                             b->hist[(size_t)b->hs * q + d] =
-                                (d < spring ? sign : 1.0) * g->ch[DM_MAX_HIST * (size_t)c + d];
+                                (swap ? flip[d] : 1.0) * g->ch[DM_MAX_HIST * (size_t)c + d];
                         break;
                     }
             }

@@ -9,12 +9,13 @@
 
 /* ---- kernels (forces.c) ------------------------------------------------------- */
 /* The kernel of a combination of laws (generic: an extended kernel even for
- * laws a fast kernel has), and back; the history doubles and the
- * tangential spring's doubles per contact of a kernel. */
+ * laws a fast kernel has), and back; the history doubles per contact of a
+ * kernel, and the factor on history slot `slot` of a particle-particle
+ * contact whose particles trade places in storage order (dm_law_flip()). */
 int dm_kernel_index(dm_laws laws, bool generic);
 dm_laws dm_kernel_laws(int kernel);
 int dm_kernel_hist_size(int kernel, int dim);
-int dm_kernel_spring_size(int kernel, int dim);
+double dm_kernel_flip(int kernel, int dim, int slot);
 
 /* ---- the pair table (pairs.c) ----------------------------------------------------- */
 /* The user's choices for materials a and b, NULL for none. */

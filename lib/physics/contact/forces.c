@@ -42,9 +42,9 @@ dm_laws dm_kernel_laws(int kernel)
     return l;
 }
 
-int dm_kernel_spring_size(int kernel, int dim)
+double dm_kernel_flip(int kernel, int dim, int slot)
 {
-    return dm_law_spring_size(dm_kernel_laws(kernel).tangential, dim);
+    return dm_law_flip(dm_kernel_laws(kernel), dim, slot);
 }
 
 int dm_kernel_hist_size(int kernel, int dim)
@@ -369,7 +369,7 @@ static void contact_record(int dim, dm_laws l, const dm_pairparam *pp, const dm_
     double h[DM_MAX_HIST];
     dm_law_out o;
     dm_law(dim, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, pp, q->n, q->delta,
-           q->vc, q->dc, q->wrel, q->rstar, q->mstar, 0.0, 0.0, 0, hist, h, &o);
+           q->vc, q->dc, q->wrel, q->wd, q->ir, q->rstar, q->mstar, 0.0, 0.0, 0, hist, h, &o);
     memset(e->point, 0, sizeof e->point);
     memset(e->normal, 0, sizeof e->normal);
     memset(e->fn, 0, sizeof e->fn);
@@ -408,7 +408,7 @@ void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void 
             dm_kin q = {.delta = P->r[i] + P->r[j] - sqrt(r2),
                         .rstar = P->r[i] * P->r[j] / (P->r[i] + P->r[j])};
             if (forces)
-                dm_pp_kin(D, l.tangential != 0, l.rolling != 0, P, P->v, P->w, i, j, d, r2, &q);
+                dm_pp_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, i, j, d, r2, &q);
             const dm_pairparam *pp = &w->ptab[P->mat[i] * w->nmat_tab + P->mat[j]];
             contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, forces, &e);
             e.i = i;
@@ -428,8 +428,8 @@ void dm_contacts_visit(demill_world *w, int forces, dm_contact_visitor fn, void 
                 continue;
             dm_kin q = {.delta = w->wg.delta[g0 + p], .rstar = P->r[i]};
             if (forces)
-                dm_pw_kin(D, l.tangential != 0, l.rolling != 0, P, P->v, P->w, &w->wg, g0 + p, i,
-                          wall, &q);
+                dm_pw_kin(D, l.tangential != 0, l.rolling, P, P->v, P->w, &w->wg, g0 + p, i, wall,
+                          &q);
             const dm_pairparam *pp = &w->ptab[P->mat[i] * w->nmat_tab + wall->material];
             contact_record(D, l, pp, &q, P->x + D * i, b->hist + (size_t)b->hs * p, forces, &e);
             e.i = i;

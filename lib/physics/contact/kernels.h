@@ -80,6 +80,7 @@ DM_INLINE void dm_n_cross(const int D, const double *n, const double *f, double 
  * motion at the contact point. */
 typedef struct dm_kin {
     double n[3], delta, ai, aj, vc[3], dc[3], wrel[3], rstar, mstar;
+    double wd[3], ir; /* the rolling spring's: ω_a - ω_b over the step, I_r */
 } dm_kin;
 
 /* Relative velocity of b with respect to a at the contact point, from linear
@@ -115,7 +116,8 @@ DM_INLINE int dm_pp_touch(const int D, const dm_particles *P, uint32_t i, uint32
 
 /* Particle-particle kinematics of a touching pair, from d = x_j - x_i and
  * its square r2. SPIN: include rotation in the contact velocities; ROLL:
- * compute wrel. vp, wp: the velocities the dashpots see. */
+ * the rolling law, whose kinematics are computed (wrel for any, wd and ir
+ * for the rolling spring). vp, wp: the velocities the dashpots see. */
 DM_INLINE void dm_pp_kin(const int D, const int SPIN, const int ROLL, const dm_particles *P,
                          const double *vp, const double *wp, uint32_t i, uint32_t j,
                          const double *d, double r2, dm_kin *k)
@@ -142,6 +144,16 @@ DM_INLINE void dm_pp_kin(const int D, const int SPIN, const int ROLL, const dm_p
     if (ROLL)
         for (int c = 0; c < W; c++)
             k->wrel[c] = wp[W * i + c] - wp[W * j + c];
+    if (ROLL == DEMILL_ROLLING_SPRING) {
+        /* 1/I_r = 1/(I_i + m_i r_i²) + 1/(I_j + m_j r_j²), each term
+         * 1/I / (1 + m r² / I): 0 for a fixed particle */
+        const double *ii = P->iinv, *m = P->m;
+        const double si = ii[i] / (1.0 + m[i] * rad[i] * rad[i] * ii[i]);
+        const double sj = ii[j] / (1.0 + m[j] * rad[j] * rad[j] * ii[j]);
+        for (int c = 0; c < W; c++)
+            k->wd[c] = om[W * i + c] - om[W * j + c];
+        k->ir = si + sj > 0.0 ? 1.0 / (si + sj) : 0.0;
+    }
     k->rstar = rad[i] * rad[j] / sum;
     /* 1/m* = 1/m_i + 1/m_j: against a fixed particle (1/m = 0) the moving
      * one's mass, without a branch */
@@ -173,6 +185,12 @@ DM_INLINE void dm_pw_kin(const int D, const int SPIN, const int ROLL, const dm_p
     if (ROLL)
         for (int c = 0; c < W; c++)
             k->wrel[c] = wp[W * i + c] - wall->omega[D == 3 ? c : 2];
+    if (ROLL == DEMILL_ROLLING_SPRING) { /* I_r = I_i + m_i r_i² (see dm_pp_kin) */
+        const double ii = P->iinv[i], mr2 = P->m[i] * P->r[i] * P->r[i];
+        for (int c = 0; c < W; c++)
+            k->wd[c] = om[W * i + c] - wall->omega[D == 3 ? c : 2];
+        k->ir = ii > 0.0 ? (1.0 + mr2 * ii) / ii : 0.0;
+    }
     k->rstar = P->r[i];
     k->mstar = P->m[i];
 }
@@ -223,9 +241,11 @@ typedef struct dm_chunk {
     /* the kinematics of the touching pairs (dm_kin, by component) */
     double n[3][DM_CHUNK], delta[DM_CHUNK], ai[DM_CHUNK], aj[DM_CHUNK];
     double vc[3][DM_CHUNK], dc[3][DM_CHUNK], wrel[3][DM_CHUNK], rstar[DM_CHUNK], mstar[DM_CHUNK];
+    double wd[3][DM_CHUNK], ir[DM_CHUNK]; /* the rolling spring's */
 } dm_chunk;
 
-/* Pair s's kinematics q into the chunk (ROLL: with wrel), and back. */
+/* Pair s's kinematics q into the chunk (ROLL: the rolling law, with wrel for
+ * any and wd, ir for the rolling spring), and back. */
 DM_INLINE void dm_kin_put(const int D, const int ROLL, dm_chunk *ch, uint32_t s, const dm_kin *q)
 {
     for (int c = 0; c < D; c++) {
@@ -235,6 +255,10 @@ DM_INLINE void dm_kin_put(const int D, const int ROLL, dm_chunk *ch, uint32_t s,
     }
     for (int c = 0; c < (ROLL ? (D == 3 ? 3 : 1) : 0); c++)
         ch->wrel[c][s] = q->wrel[c];
+    for (int c = 0; c < (ROLL == DEMILL_ROLLING_SPRING ? (D == 3 ? 3 : 1) : 0); c++)
+        ch->wd[c][s] = q->wd[c];
+    if (ROLL == DEMILL_ROLLING_SPRING)
+        ch->ir[s] = q->ir;
     ch->delta[s] = q->delta;
     ch->ai[s] = q->ai;
     ch->aj[s] = q->aj;
@@ -253,6 +277,9 @@ DM_INLINE void dm_kin_get(const int D, const int ROLL, const dm_chunk *ch, uint3
         q->wrel[c] = 0.0;
     for (int c = 0; c < (ROLL ? (D == 3 ? 3 : 1) : 0); c++)
         q->wrel[c] = ch->wrel[c][s];
+    for (int c = 0; c < (ROLL == DEMILL_ROLLING_SPRING ? (D == 3 ? 3 : 1) : 0); c++)
+        q->wd[c] = ch->wd[c][s];
+    q->ir = ROLL == DEMILL_ROLLING_SPRING ? ch->ir[s] : 0.0;
     q->delta = ch->delta[s];
     q->ai = ch->ai[s];
     q->aj = ch->aj[s];
@@ -301,8 +328,8 @@ DM_INLINE void dm_chunk_law(const int D, const int NL, const int DL, const int T
     for (int c = 0; c < HSL; c++)
         hin[c] = ch->h[c][s];
     dm_law_out o;
-    dm_law(D, NL, DL, TL, RL, CL, pp, q->n, q->delta, q->vc, q->dc, q->wrel, q->rstar,
-           q->mstar, dt_hist, reach, (int)ch->first[s], hin, hout, &o);
+    dm_law(D, NL, DL, TL, RL, CL, pp, q->n, q->delta, q->vc, q->dc, q->wrel, q->wd, q->ir,
+           q->rstar, q->mstar, dt_hist, reach, (int)ch->first[s], hin, hout, &o);
     double nf[3];
     dm_n_cross(D, q->n, o.ft, nf);
     for (int c = 0; c < D; c++)
@@ -406,7 +433,7 @@ DM_INLINE void dm_result_add(const int D, const int WALLS, double *restrict f, d
  * round it down to one all the same, which tells the compiler so and spares
  * them a remainder loop. */
 typedef void (*dm_kin_fn)(const dm_kernel_args *a, dm_chunk *ch, uint32_t lanes);
-extern const dm_kin_fn dm_kins[2][2][2][2];
+extern const dm_kin_fn dm_kins[2][2][2][DM_ROLLING_LAWS];
 
 /* The laws of a chunk's first `lanes` pairs, from the kinematics gathered
  * into it (the loop that dm_law_fn's kernels run). */
@@ -418,7 +445,7 @@ DM_INLINE void dm_chunk_laws(const int D, const int NL, const int DL, const int 
     const uint32_t n = lanes / DM_LANES * DM_LANES; /* = lanes (see dm_kin_fn) */
     for (uint32_t s = 0; s < n; s++) {
         dm_kin q;
-        dm_kin_get(D, RL != 0, ch, s, &q);
+        dm_kin_get(D, RL, ch, s, &q);
         dm_chunk_law(D, NL, DL, TL, RL, CL, HSL, ch, s, &tab[ch->pp[s]], &q, dt_hist, reach);
     }
 }
@@ -507,7 +534,7 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
     }
     const uint32_t lanes = dm_chunk_load(HSL, 0, w, b, &ch, m);
     const dm_laws l = {NL, DL, TL, RL, CL};
-    dm_kins[D == 3][0][SPIN][RL != 0](a, &ch, lanes);
+    dm_kins[D == 3][0][SPIN][RL](a, &ch, lanes);
     laws(&ch, lanes, tab, dt_hist, reach, l);
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
@@ -597,7 +624,7 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
     }
     const uint32_t lanes = dm_chunk_load(HSL, 1, w, b, &ch, m);
     const dm_laws l = {NL, DL, TL, RL, CL};
-    dm_kins[D == 3][1][SPIN][RL != 0](a, &ch, lanes);
+    dm_kins[D == 3][1][SPIN][RL](a, &ch, lanes);
     laws(&ch, lanes, tab, dt_hist, reach, l);
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];

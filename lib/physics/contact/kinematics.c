@@ -1,6 +1,7 @@
 /* kinematics.c: the contact kernels' kinematics loops (dm_kins, see
- * kernels.h), one per dimension, kind of pair, SPIN and ROLL: the 16 loops
- * that the 192 kernels share, compiled once rather than in every kernel. */
+ * kernels.h), one per dimension, kind of pair, SPIN and rolling law: the 24
+ * loops that the kernels share, compiled once rather than in every kernel
+ * (those of the rolling spring serve the generic kernel only). */
 #include "physics/contact/kernels.h"
 
 /* Particle-particle pairs: the separation again (the narrow phase kept only
@@ -50,11 +51,12 @@ DM_INLINE void pw_kins(const int D, const int SPIN, const int ROLL, const dm_ker
     {                                                                                             \
         pw_kins(D, SPIN, ROLL, a, ch, lanes);                                                     \
     }
-#define KINS_D(D) KINS(D, 0, 0) KINS(D, 0, 1) KINS(D, 1, 0) KINS(D, 1, 1)
+#define KINS_D(D) KINS(D, 0, 0) KINS(D, 0, 1) KINS(D, 0, 2) KINS(D, 1, 0) KINS(D, 1, 1) KINS(D, 1, 2)
 KINS_D(2)
 KINS_D(3)
 
 #define ROW(D, PAIRS)                                                                             \
-    {{PAIRS##_kins_##D##_0_0, PAIRS##_kins_##D##_0_1},                                            \
-     {PAIRS##_kins_##D##_1_0, PAIRS##_kins_##D##_1_1}}
-const dm_kin_fn dm_kins[2][2][2][2] = {{ROW(2, pp), ROW(2, pw)}, {ROW(3, pp), ROW(3, pw)}};
+    {{PAIRS##_kins_##D##_0_0, PAIRS##_kins_##D##_0_1, PAIRS##_kins_##D##_0_2},                    \
+     {PAIRS##_kins_##D##_1_0, PAIRS##_kins_##D##_1_1, PAIRS##_kins_##D##_1_2}}
+const dm_kin_fn dm_kins[2][2][2][DM_ROLLING_LAWS] = {{ROW(2, pp), ROW(2, pw)},
+                                                     {ROW(3, pp), ROW(3, pw)}};

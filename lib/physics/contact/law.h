@@ -106,10 +106,13 @@ DM_INLINE int dm_law_normal_size(int normal)
     return dm_plastic_hist_size(normal);
 }
 
+/* The rolling spring's (DEMILL_ROLLING_SPRING): its torque on a (a vector
+ * in 3D, a scalar in 2D; it changes sign when the pair's order flips), then
+ * its energy at the last step, which k_r (following k_n) may have changed
+ * since, as Mindlin's. */
 DM_INLINE int dm_law_rolling_size(int rolling, int dim)
 {
-    (void)rolling, (void)dim;
-    return 0;
+    return rolling == DEMILL_ROLLING_SPRING ? (dim == 3 ? 3 : 1) + 1 : 0;
 }
 
 DM_INLINE int dm_law_cohesion_size(int cohesion)
@@ -146,6 +149,20 @@ DM_INLINE int dm_law_hist_size(int normal, int damping, int tangential, int roll
            dm_law_cohesion_size(cohesion);
 }
 
+/* The factor on history slot `slot` of a particle-particle contact of laws
+ * l whose two particles trade places in storage order (a becomes b): -1 for
+ * what turns with the pair, the 3D tangential spring (the 2D one is a
+ * scalar along a tangent that turns with n) and the rolling spring's torque
+ * on a; 1 for the rest. */
+DM_INLINE double dm_law_flip(dm_laws l, int dim, int slot)
+{
+    const int r0 = dm_law_off_rolling(l.normal, l.damping, l.tangential, dim);
+    const int spring = slot < dm_law_spring_size(l.tangential, dim) && dim == 3;
+    const int torque = l.rolling == DEMILL_ROLLING_SPRING && slot >= r0 &&
+                       slot < r0 + (dim == 3 ? 3 : 1);
+    return spring || torque ? -1.0 : 1.0;
+}
+
 /* How far apart (as a negative overlap) a pair whose contact exists still
  * interacts (cohesion's reach), 0 for a law without cohesion. */
 DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar)
@@ -159,6 +176,10 @@ DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar
  * constants in the fast kernels, run-time values in the generic one). vc: relative velocity at the contact
  * point at the end of the step (drives dashpots and friction); dc: the rate
  * of relative displacement over the step (drives the tangential spring).
+ * wrel: ω_a - ω_b at the end of the step (the rolling laws' dashpots and
+ * constant torque); wd: ω_a - ω_b over the step (the rolling spring); ir:
+ * the pair's moment of inertia about the contact for rolling (the rolling
+ * dashpot; wd and ir are read only by DEMILL_ROLLING_SPRING).
  * dt_hist: time the history advances by (0 for an evaluation that does not
  * advance time, which leaves the history as it was); the dissipation in o
  * is over the same interval. reach: how far past a force sample its impulse
@@ -175,9 +196,9 @@ DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar
  * infinite or NaN; they are discarded. */
 DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, const int RL,
                       const int CL, const dm_pairparam *pp, const double *n, double delta, const double *vc,
-                      const double *dc, const double *wrel, double rstar, double mstar,
-                      double dt_hist, double reach, int first, const double *hin,
-                      double *hout, dm_law_out *o)
+                      const double *dc, const double *wrel, const double *wd, double ir,
+                      double rstar, double mstar, double dt_hist, double reach, int first,
+                      const double *hin, double *hout, dm_law_out *o)
 {
     const int W = D == 3 ? 3 : 1;
     const int advance = dt_hist > 0.0;
@@ -377,6 +398,51 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
             o->mr[c] = -scale * wrel[c];
         o->diss_rolling = mm * wm * dt_hist;
     }
+    if (RL == DEMILL_ROLLING_SPRING) {
+        /* the elastic-plastic spring-dashpot (type C of Ai et al. 2011): the
+         * spring's torque on a, M_k, accumulates -k_r Δθ_r, Δθ_r the step's
+         * relative rotation without its twist about n; the torque kept from
+         * the last step is turned into the current tangent plane by removing
+         * its normal part (as the tangential spring is). |M_k| is capped at
+         * μ_r R* |F_n|; below the cap the dashpot adds -c_r ω_r, at the cap
+         * (full mobilisation) it is off (Ai et al.'s f = 0). The spring's
+         * loss, its work less the change of its energy |M_k|²/(2 k_r), is
+         * rolling friction (it is the slip at the cap); the dashpot's is the
+         * rolling viscous term. */
+        const int HR = dm_law_off_rolling(NL, DL, TL, D);
+        const double kr = pp->kr > 0.0 ? pp->kr : 2.25 * stiff * pp->mu_r * pp->mu_r * rstar * rstar;
+        const double cr = pp->eta_r * 2.0 * sqrt(ir * kr), half_ikr = kr > 0.0 ? 0.5 / kr : 0.0;
+        double twist = 0.0, twist_p = 0.0, mn = 0.0, mk[3], wt[3], m2 = 0.0;
+        if (D == 3)
+            for (int c = 0; c < 3; c++) {
+                twist += wd[c] * n[c];
+                twist_p += wrel[c] * n[c];
+                mn += hin[HR + c] * n[c];
+            }
+        for (int c = 0; c < W; c++) {
+            const double nc = D == 3 ? n[c] : 0.0;
+            wt[c] = wrel[c] - twist_p * nc;
+            mk[c] = hin[HR + c] - mn * nc - kr * (wd[c] - twist * nc) * dt_hist;
+            m2 += mk[c] * mk[c];
+        }
+        const double mcap = pp->mu_r * rstar * fabs(fn);
+        const int full = m2 > mcap * mcap;
+        const double scale = full ? mcap / sqrt(m2) : 1.0, c_on = full ? 0.0 : cr;
+        double work_k = 0.0, work_d = 0.0, e_new = 0.0;
+        for (int c = 0; c < W; c++) {
+            mk[c] *= scale;
+            const double md = -c_on * wt[c];
+            o->mr[c] = mk[c] + md;
+            work_k -= mk[c] * wt[c] * dt_hist;
+            work_d -= md * wt[c] * dt_hist;
+            e_new += mk[c] * mk[c];
+            hout[HR + c] = advance ? mk[c] : hin[HR + c];
+        }
+        e_new *= half_ikr;
+        hout[HR + W] = advance ? e_new : hin[HR + W];
+        o->diss_rolling = advance ? work_k - (e_new - hin[HR + W]) : 0.0;
+        o->diss_rolling_viscous = work_d;
+    }
 }
 
 /* Elastic energy stored in a contact of laws l with history hist: normal,
@@ -386,7 +452,9 @@ DM_INLINE void dm_law_stored(int dim, dm_laws l, const dm_pairparam *pp, double 
                              double *e_tangential, double *e_rolling)
 {
     const int NL = l.normal, TL = l.tangential;
-    *e_rolling = 0.0;
+    *e_rolling = l.rolling == DEMILL_ROLLING_SPRING
+                     ? hist[dm_law_off_rolling(NL, l.damping, TL, dim) + (dim == 3 ? 3 : 1)]
+                     : 0.0;
     if (NL == DEMILL_NORMAL_LINEAR) {
         *e_normal = 0.5 * pp->kn * delta * delta;
     } else if (dm_normal_plastic(NL)) { /* the current unloading curve's */

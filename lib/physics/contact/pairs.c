@@ -42,6 +42,8 @@ void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws
     v[DM_PK_YIELD_PRESSURE] = 1.6 * (sa == 0.0 ? sb : sb == 0.0 ? sa : fmin(sa, sb));
     for (int k = 0; k < 4; k++) /* the multi-path fit's defaults (lib/base/params.c) */
         demill_param_bounds(DEMILL_PAIR_PLASTIC_FIT_C0 + k, NULL, NULL, &v[DM_PK_FIT_C0 + k]);
+    v[DM_PK_ROLLING_STIFFNESS] = 0;
+    v[DM_PK_ROLLING_DAMPING] = 0.3;
     *laws = (dm_laws){0, 0, 0, 0, 0};
     if (!u)
         return;
@@ -98,6 +100,8 @@ static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairp
     pp->py = v[DM_PK_YIELD_PRESSURE] > 0.0 ? v[DM_PK_YIELD_PRESSURE] : INFINITY;
     for (int k = 0; k < 4; k++)
         pp->fit[k] = v[DM_PK_FIT_C0 + k];
+    pp->kr = v[DM_PK_ROLLING_STIFFNESS];
+    pp->eta_r = v[DM_PK_ROLLING_DAMPING];
 }
 
 /* Rebuilds the resolved pair table if anything changed, and (if asked)
@@ -154,12 +158,16 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
                 w->ptab[a * w->nmat_tab + b].kernel != pp->kernel)
                 kernels_changed = true;
         }
+    bool local_damping = false;
+    for (uint32_t a = 0; a < nm; a++)
+        local_damping |= w->mat_particles[a] && w->mats[a].local_damping > 0.0;
     free(w->ptab);
     w->ptab = tab;
     w->nmat_tab = nm;
     w->ptab_dirty = false;
     w->rotation = rotation;
     w->nkern = nkern;
+    w->local_damping = local_damping;
     if (kernels_changed || !w->nlist_valid) {
         /* contact lists are grouped by kernel: start them afresh */
         dm_clist_clear(w);

@@ -19,6 +19,7 @@
 typedef struct dm_material {
     double density, youngs, poisson, stiffness, restitution, friction, rolling_friction;
     double yield_stress; /* 0: does not yield */
+    double local_damping; /* α of local damping (integrate/integrate.c) */
 } dm_material;
 
 /* Derived pair keys the user may override; bit i of dm_pair_user.set. */
@@ -26,7 +27,7 @@ enum {
     DM_PK_RESTITUTION, DM_PK_FRICTION, DM_PK_ROLLING_FRICTION, DM_PK_NORMAL_STIFFNESS,
     DM_PK_VISCOUS, DM_PK_KT_RATIO, DM_PK_CT_FACTOR, DM_PK_COULOMB_REG, DM_PK_ROLLING_REG,
     DM_PK_CLAMP, DM_PK_YIELD_PRESSURE, DM_PK_FIT_C0, DM_PK_FIT_C1, DM_PK_FIT_C2, DM_PK_FIT_H,
-    DM_PK_COUNT
+    DM_PK_ROLLING_STIFFNESS, DM_PK_ROLLING_DAMPING, DM_PK_COUNT
 };
 /* The keys checkpoints of formats 1 to 3 hold (4 says how many it holds). */
 #define DM_PK_COUNT_V2 10
@@ -78,6 +79,8 @@ typedef struct dm_pairparam {
     double restitution, xi;
     double py;           /* limiting contact pressure of the plastic laws (∞: no yield) */
     double fit[4];       /* the multi-path law's c0, c1, c2 and H (contact/plastic.h) */
+    double kr;           /* rolling spring's stiffness (0: 2.25 S μ_r² R*² per contact) */
+    double eta_r;        /* rolling dashpot's damping ratio */
 } dm_pairparam;
 
 /* ---- walls (geometry/walls.c) ------------------------------------------- */
@@ -567,6 +570,7 @@ struct demill_world {
     double cohesion_reach;   /* how far past touching a cohesive pair may still
                                 interact: the neighbour search reaches that far more */
     bool generic_kernels;    /* tests only: every combination runs the generic kernel */
+    bool local_damping;      /* some particle's material has local damping */
 
     /* particles */
     dm_particles p;
