@@ -34,7 +34,22 @@ enum {
     DEMILL_MATERIAL_FRICTION = 205,
     /** Rolling friction coefficient μ_r (dimensionless: the resisting torque
      *  is μ_r R* |F_n|), >= 0. Default 0. */
-    DEMILL_MATERIAL_ROLLING_FRICTION = 206
+    DEMILL_MATERIAL_ROLLING_FRICTION = 206,
+    /** 1: the material is rigid (infinite Young's modulus and stiffness);
+     *  0 (default): deformable. A pair of a rigid and a deformable material
+     *  takes its elastic constants from the deformable one alone:
+     *  1/E* = (1 - ν²)/E and k_n = k of the deformable material, G* from
+     *  its E and ν (the rigid one's E, ν and k are kept but not used). Its
+     *  density still counts: particles of a rigid material have mass. Two
+     *  rigid materials that may touch (particles of one and particles or a
+     *  wall of the other, or of the same rigid material) have no finite
+     *  stiffness: demill_world_step() and demill_world_suggest_time_step()
+     *  refuse them with DEMILL_ERR_NO_CONTACT_MODEL. (Their pair's derived
+     *  values, never used, are those of two deformable materials, so that
+     *  demill_pair_get() reads finite numbers.) The Rayleigh-time bound of
+     *  demill_world_suggest_time_step() applies to deformable particles
+     *  only. */
+    DEMILL_MATERIAL_RIGID = 212
 };
 
 /** Normal force laws, the values of DEMILL_PAIR_NORMAL. */

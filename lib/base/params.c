@@ -54,6 +54,7 @@ static const param_info params[] = {
     {DEMILL_MATERIAL_RESTITUTION, "material.restitution", "1", 0, 1, 0.5, 0},
     {DEMILL_MATERIAL_FRICTION, "material.friction", "1", 0, 1e6, 0.5, 0},
     {DEMILL_MATERIAL_ROLLING_FRICTION, "material.rolling_friction", "1", 0, 1e6, 0, 0},
+    {DEMILL_MATERIAL_RIGID, "material.rigid", "bool", 0, 1, 0, WHOLE},
 
     {DEMILL_PAIR_NORMAL, "pair.normal", "enum", 0, 2, 0, WHOLE},
     {DEMILL_PAIR_DAMPING, "pair.damping", "enum", 0, 2, 0, WHOLE},

@@ -90,14 +90,14 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 /* ---- the bytes of a state --------------------------------------------------- */
 
 #define CK_MAGIC "DEMILLCK"
-#define CK_FORMAT 3u          /* the format this library writes and the newest it reads;
+#define CK_FORMAT 4u          /* the format this library writes and the newest it reads;
                                  2 adds the impacts on an ore to the drum's spectrum,
                                  3 a material per part of the drum, the walls'
                                  meshes (section MESH), the feeds and outlets (FLOW),
                                  the finite walls, harmonic motion and surface
                                  velocity (WFIN), the bodies (BODY), the drum's
                                  translation (DRMV), the loads the walls record
-                                 (LOAD) */
+                                 (LOAD), 4 whether a material is rigid */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -673,6 +673,10 @@ static void transfer(io *s, demill_world *w)
                              &m->restitution, &m->friction, &m->rolling_friction};
         for (int q = 0; q < 7; q++)
             io_f64(s, f[q], 1);
+        if (s->format >= 4)
+            io_f64(s, &m->rigid, 1);
+        else
+            m->rigid = 0; /* reading: every material was deformable */
     }
     io_count(s, &w->npairs, (uint64_t)w->nmat * (w->nmat + 1) / 2, "material pairs");
     if (s->reading)

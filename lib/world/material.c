@@ -8,7 +8,7 @@
 
 static const dm_material default_material = {
     .density = 2500, .youngs = 1e8, .poisson = 0.3, .stiffness = 1e5,
-    .restitution = 0.5, .friction = 0.5, .rolling_friction = 0};
+    .restitution = 0.5, .friction = 0.5, .rolling_friction = 0, .rigid = 0};
 
 DEMILL_API demill_status demill_material_create(demill_world *w, demill_id *out)
 {
@@ -38,6 +38,7 @@ static double *material_field(dm_material *m, int32_t key)
     case DEMILL_MATERIAL_RESTITUTION: return &m->restitution;
     case DEMILL_MATERIAL_FRICTION: return &m->friction;
     case DEMILL_MATERIAL_ROLLING_FRICTION: return &m->rolling_friction;
+    case DEMILL_MATERIAL_RIGID: return &m->rigid;
     default: return NULL;
     }
 }

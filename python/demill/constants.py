@@ -112,6 +112,7 @@ class MaterialKey(IntEnum):
     RESTITUTION = 204
     FRICTION = 205
     ROLLING_FRICTION = 206
+    RIGID = 212
 
 
 class Normal(IntEnum):

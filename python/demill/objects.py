@@ -75,6 +75,7 @@ class Material(Handle, Keyed):
     restitution = Param(MaterialKey.RESTITUTION)
     friction = Param(MaterialKey.FRICTION)
     rolling_friction = Param(MaterialKey.ROLLING_FRICTION)
+    rigid = Param(MaterialKey.RIGID, bool)
 
     _getter, _setter = "demill_material_get", "demill_material_set"
 

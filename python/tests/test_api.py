@@ -110,6 +110,27 @@ class Errors(unittest.TestCase):
                 w.step()
             self.assertEqual(w.step_count, 0)
 
+    def test_rigid_materials(self):
+        """A rigid wall gives the pair the ball's own stiffness in full (not
+        half, as two equal springs in series would); a rigid ball on it is
+        refused, with the world unchanged."""
+        w, m = linear_world(3)
+        steel = w.material(rigid=True)
+        self.assertIs(steel.rigid, True)
+        w.pair(m, steel, normal=Normal.LINEAR)
+        self.assertEqual(w.pair(m, steel).normal_stiffness, m.stiffness)
+        w.add_plane(steel, (0, 0, 0), (0, 1, 0))
+        w.particles.add(m, [(0, 0.0099, 0)], 0.01)
+        w.step(10)
+        w.particles.add(steel, [(0.1, 0.0099, 0)], 0.01)
+        with self.assertFails(demill.NoContactModel, "both rigid", "deformable"):
+            w.step()
+        self.assertEqual(w.step_count, 10)
+        steel.rigid = False
+        w.pair(steel, steel, normal=Normal.LINEAR)
+        w.step()
+        w.close()
+
     def test_unstable_run_is_reported_and_rolled_back(self):
         """A time step beyond a pair's stability limit is refused before the
         run starts, naming the pair and the limit; a chain of particles

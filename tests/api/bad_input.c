@@ -714,8 +714,10 @@ static void bad_material_set(scene *sc)
     demill_world *w = sc->w;
     for (int m = 0; m < 2; m++) {
         const demill_id mat = sc->mat[m];
-        for (int32_t key = 200; key <= 206; key++)
+        static const int32_t keys[] = {200, 201, 202, 203, 204, 205, 206, 212};
+        for (size_t q = 0; q < sizeof keys / sizeof keys[0]; q++)
             for (int k = 0; k < 3; k++) {
+                const int32_t key = keys[q];
                 ctx(sc, "material %d key %d = %g", m, (int)key, nonfinite[k]);
                 BAD(sc, DEMILL_ERR_NOT_FINITE, demill_material_set(w, mat, key, nonfinite[k]),
                     demill_param_name(key), NONFINITE);
@@ -732,6 +734,8 @@ static void bad_material_set(scene *sc)
             {DEMILL_MATERIAL_RESTITUTION, -1e-300},  {DEMILL_MATERIAL_RESTITUTION, 1.5},
             {DEMILL_MATERIAL_RESTITUTION, -0.5},     {DEMILL_MATERIAL_RESTITUTION, 1.0000001},
             {DEMILL_MATERIAL_FRICTION, -0.1},        {DEMILL_MATERIAL_ROLLING_FRICTION, -0.1},
+            {DEMILL_MATERIAL_RIGID, 0.5},            {DEMILL_MATERIAL_RIGID, 2},
+            {DEMILL_MATERIAL_RIGID, -1},             {DEMILL_MATERIAL_RIGID, 1e-300},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "material %d key %d = %g", m, (int)invalid[k].key, invalid[k].v);
@@ -739,7 +743,7 @@ static void bad_material_set(scene *sc)
                 demill_material_set(w, mat, invalid[k].key, invalid[k].v),
                 demill_param_name(invalid[k].key));
         }
-        static const int32_t unknown[] = {0, 100, 199, 207, 250, 300, 310, -1};
+        static const int32_t unknown[] = {0, 100, 199, 216, 250, 300, 310, -1};
         for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
             char num[16];
             snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -2173,6 +2177,68 @@ START_TEST(no_contact_model_with_wall)
 }
 END_TEST
 
+/* Material A rigid: its particles touch each other and its wall. */
+static void setup_rigid_a(scene *sc)
+{
+    DM_OK(sc->w, demill_material_set(sc->w, sc->mat[0], DEMILL_MATERIAL_RIGID, 1));
+}
+
+static void fix_rigid_a(scene *sc)
+{
+    DM_OK(sc->w, demill_material_set(sc->w, sc->mat[0], DEMILL_MATERIAL_RIGID, 0));
+}
+
+/* A lone particle of a rigid material C, which needs no model with itself,
+ * and a far wall of a rigid material D: C and D may touch. */
+static void setup_rigid_c_d(scene *sc)
+{
+    demill_world *w = sc->w;
+    DM_OK(w, demill_material_create(w, &sc->mat[2]));
+    DM_OK(w, demill_material_create(w, &sc->mat[3]));
+    sc->nmat = 4;
+    const demill_id A = sc->mat[0], B = sc->mat[1], C = sc->mat[2], D = sc->mat[3];
+    add_one(sc, C, 0.3, 0.3, 0.0, RAD);
+    const double p[3] = {-0.5, 0, 0}, n[3] = {1, 0, 0};
+    DM_OK(w, demill_wall_add_plane(w, D, p, n, &sc->wall[sc->nwall]));
+    sc->nwall++;
+    const demill_id soft[2] = {A, B};
+    for (int k = 0; k < 2; k++)
+        for (int q = 2; q < 4; q++)
+            DM_OK(w, demill_pair_set(w, soft[k], sc->mat[q], DEMILL_PAIR_NORMAL,
+                                     DEMILL_NORMAL_LINEAR));
+    DM_OK(w, demill_pair_set(w, C, D, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
+    DM_OK(w, demill_material_set(w, C, DEMILL_MATERIAL_RIGID, 1));
+    DM_OK(w, demill_material_set(w, D, DEMILL_MATERIAL_RIGID, 1));
+}
+
+static void fix_rigid_d(scene *sc)
+{
+    DM_OK(sc->w, demill_material_set(sc->w, sc->mat[3], DEMILL_MATERIAL_RIGID, 0));
+}
+
+/* Stepping, and suggesting a time step, refuse two rigid materials that may
+ * touch, whatever their model. */
+static void bad_rigid_pair(scene *sc)
+{
+    static const uint64_t steps[] = {1, 0, 1000};
+    for (int k = 0; k < 3; k++) {
+        ctx(sc, "world_step(%llu) with two rigid materials", (unsigned long long)steps[k]);
+        BAD(sc, DEMILL_ERR_NO_CONTACT_MODEL, demill_world_step(sc->w, steps[k]), "rigid",
+            "deformable");
+    }
+    double dt;
+    ctx(sc, "world_suggest_time_step with two rigid materials");
+    BAD(sc, DEMILL_ERR_NO_CONTACT_MODEL,
+        demill_world_suggest_time_step(sc->w, 1.0, 0, &dt, NULL, NULL), "rigid", "deformable");
+}
+
+START_TEST(rigid_pairs)
+{
+    both_dims(setup_rigid_a, bad_rigid_pair, fix_rigid_a);
+    both_dims(setup_rigid_c_d, bad_rigid_pair, fix_rigid_d);
+}
+END_TEST
+
 /* ------------------------------------------------------------------------ */
 /* Time-step suggestion                                                       */
 
@@ -2455,6 +2521,7 @@ int main(void)
     tcase_add_test(tc, reads);
     tcase_add_test(tc, no_contact_model);
     tcase_add_test(tc, no_contact_model_with_wall);
+    tcase_add_test(tc, rigid_pairs);
     tcase_add_test(tc, suggest_time_step);
     tcase_add_test(tc, progress_callback);
     tcase_add_test(tc, vtk_output);

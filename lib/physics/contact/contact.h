@@ -22,6 +22,8 @@ const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b);
 /* The effective laws and the value of every DM_PK_* key of pair (a, b). */
 void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws,
                     double v[DM_PK_COUNT]);
+/* A material's compliance (1 - ν²)/E, 0 for a rigid one. */
+double dm_material_compliance(const dm_material *m);
 /* The contact kernel of two materials' model, -1 for none. */
 int dm_pair_kernel(const demill_world *w, uint32_t a, uint32_t b);
 /* Rebuilds the resolved pair table if anything changed, and (if asked)

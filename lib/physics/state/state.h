@@ -18,6 +18,7 @@
 /* ---- materials and pairs (the world's API; resolved by contact/pairs.c) ---- */
 typedef struct dm_material {
     double density, youngs, poisson, stiffness, restitution, friction, rolling_friction;
+    double rigid; /* DEMILL_MATERIAL_RIGID: 1 rigid, 0 deformable */
 } dm_material;
 
 /* Derived pair keys the user may override; bit i of dm_pair_user.set. */
