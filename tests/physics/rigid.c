@@ -24,7 +24,8 @@
  *    bound from a rigid particle (whose stored modulus 1e30 would make that
  *    bound 1e-14 s).
  * Each impact starts half a step from a sample (phase 0.5) at 50 steps per
- * contact, in 2D and 3D; velocity Verlet.
+ * contact, in 2D and 3D, on a plane and on a mesh (a polyline in 2D);
+ * velocity Verlet.
  */
 #include <math.h>
 
@@ -105,6 +106,46 @@ START_TEST(restitution_on_rigid_plane)
 }
 END_TEST
 
+/* The same impact on a rigid mesh (3D: a floor of 4 x 4 squares, each two
+ * triangles, the sphere over a face's inside) or polyline (2D: three
+ * segments): the wall's geometry does not change the pair's constants. */
+START_TEST(hertz_sphere_on_rigid_mesh)
+{
+    const int dim = 2 + _i;
+    demill_id soft, hard, wall, ball;
+    demill_world *w =
+        two_materials(dim, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_NONE, 1.0, &soft, &hard);
+    if (dim == 3) {
+        double v[3 * 25];
+        uint32_t t[6 * 16];
+        dm_test_floor_grid(4, 0.01, -0.02, v, t);
+        DM_OK(w, demill_wall_add_mesh(w, hard, 25, v, 32, t, &wall));
+    } else {
+        const double pts[12] = {-0.02, 0, 0, -0.004, 0, 0, 0.003, 0, 0, 0.02, 0, 0};
+        DM_OK(w, demill_wall_add_polyline(w, hard, 4, pts, 0, &wall));
+    }
+    const double m = 4.0 / 3.0 * M_PI * R * R * R * RHO;
+    const double tc = hertz_time(m, R, E / (1 - NU * NU)), dt = tc / 50, gap = 3.5 * V0 * dt;
+    double x[3] = {0.0023, R + gap, dim == 3 ? 0.0061 : 0.0}, v[3] = {0, -V0, 0};
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+    DM_OK(w, demill_particles_add(w, soft, 1, x, (double[]){R}, v, 0, &ball));
+    double t_in = -1, t_out = -1, prev = -gap;
+    for (int k = 1; k <= 200 && t_out < 0; k++) {
+        DM_OK(w, demill_world_step(w, 1));
+        const double d = R - dm_test_get(w, ball, DEMILL_PARTICLE_POSITION, 1);
+        if (prev <= 0 && d > 0)
+            t_in = k - 1 - prev / (d - prev);
+        if (prev > 0 && d <= 0)
+            t_out = k - 1 + prev / (prev - d);
+        prev = d;
+    }
+    ck_assert_msg(t_in > 0 && t_out > t_in, "the ball did not bounce");
+    DM_ASSERT_REL((t_out - t_in) * dt, tc, 0.01);
+    DM_ASSERT_REL(dm_test_get(w, ball, DEMILL_PARTICLE_VELOCITY, 1), V0, 1e-4);
+    demill_world_destroy(w);
+}
+END_TEST
+
 /* The rigid sphere of rigid_sphere_on_plane, with the impact's bounds. */
 typedef struct rigid_ball {
     demill_world *w;
@@ -175,6 +216,7 @@ int main(void)
     TCase *tc = tcase_create("rigid");
     tcase_add_loop_test(tc, hertz_sphere_on_rigid_plane, 0, 2);
     tcase_add_loop_test(tc, restitution_on_rigid_plane, 0, 2);
+    tcase_add_loop_test(tc, hertz_sphere_on_rigid_mesh, 0, 2);
     tcase_add_loop_test(tc, rigid_sphere_on_plane, 0, 2);
     tcase_add_test(tc, rigid_survives_copies);
     suite_add_tcase(s, tc);
