@@ -97,7 +97,10 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
                                  the finite walls, harmonic motion and surface
                                  velocity (WFIN), the bodies (BODY), the drum's
                                  translation (DRMV), the loads the walls record
-                                 (LOAD), 4 whether a material is rigid */
+                                 (LOAD), 4 the cohesion law of a pair and the
+                                 keys up to cohesion's, the extended kernels'
+                                 contact lists and energy terms, whether a
+                                 material is rigid and its surface energy */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -662,7 +665,7 @@ static void transfer(io *s, demill_world *w)
     double *const tally[] = {&ty->diss_normal,  &ty->diss_tangential,      &ty->diss_friction,
                              &ty->diss_rolling, &ty->wall_work,            &ty->diss_plastic,
                              &ty->diss_rolling_viscous, &ty->work_cohesion, &ty->diss_local};
-    for (int k = 0; k < (s->format < 3 ? 5 : 9); k++)
+    for (int k = 0; k < (s->format < 4 ? 5 : 9); k++)
         io_f64(s, tally[k], 1);
 
     io_section(s, "MATS");
@@ -673,10 +676,13 @@ static void transfer(io *s, demill_world *w)
                              &m->restitution, &m->friction, &m->rolling_friction};
         for (int q = 0; q < 7; q++)
             io_f64(s, f[q], 1);
-        if (s->format >= 4)
-            io_f64(s, &m->rigid, 1);
-        else
-            m->rigid = 0; /* reading: every material was deformable */
+        double *const f4[] = {&m->rigid, &m->surface_energy};
+        for (int q = 0; q < 2; q++) {
+            if (s->format >= 4)
+                io_f64(s, f4[q], 1);
+            else
+                *f4[q] = 0; /* reading: deformable, without surface energy */
+        }
     }
     io_count(s, &w->npairs, (uint64_t)w->nmat * (w->nmat + 1) / 2, "material pairs");
     if (s->reading)
@@ -691,9 +697,9 @@ static void transfer(io *s, demill_world *w)
         io_u32(s, &u->b, 1);
         int *const law[] = {&u->normal, &u->damping, &u->tangential, &u->rolling,
                             &u->cohesion};
-        for (int l = 0; l < (s->format < 3 ? 4 : 5); l++)
+        for (int l = 0; l < (s->format < 4 ? 4 : 5); l++)
             io_int(s, law[l]);
-        io_f64(s, u->value, s->format < 3 ? DM_PK_COUNT_V2 : DM_PK_COUNT);
+        io_f64(s, u->value, s->format < 4 ? DM_PK_COUNT_V2 : DM_PK_COUNT);
         io_u32(s, &u->set, 1);
     }
 
@@ -744,10 +750,10 @@ static void transfer(io *s, demill_world *w)
 
     io_section(s, "CONT");
     /* the lists of the kernels up to the last that holds pairs (before
-     * format 3, of the fast ones, which were all there were); the others
+     * format 4, of the fast ones, which were all there were); the others
      * are empty */
     uint32_t lists = DM_FAST_KERNELS;
-    if (s->format >= 3) {
+    if (s->format >= 4) {
         for (lists = s->reading ? 0 : (uint32_t)w->nkern; lists > DM_FAST_KERNELS &&
                                                          !w->pp.b[lists - 1].n &&
                                                          !w->pw.b[lists - 1].n;)

@@ -8,7 +8,8 @@
 
 static const dm_material default_material = {
     .density = 2500, .youngs = 1e8, .poisson = 0.3, .stiffness = 1e5,
-    .restitution = 0.5, .friction = 0.5, .rolling_friction = 0, .rigid = 0};
+    .restitution = 0.5, .friction = 0.5, .rolling_friction = 0, .rigid = 0,
+    .surface_energy = 0};
 
 DEMILL_API demill_status demill_material_create(demill_world *w, demill_id *out)
 {
@@ -39,6 +40,7 @@ static double *material_field(dm_material *m, int32_t key)
     case DEMILL_MATERIAL_FRICTION: return &m->friction;
     case DEMILL_MATERIAL_ROLLING_FRICTION: return &m->rolling_friction;
     case DEMILL_MATERIAL_RIGID: return &m->rigid;
+    case DEMILL_MATERIAL_SURFACE_ENERGY: return &m->surface_energy;
     default: return NULL;
     }
 }
@@ -131,6 +133,10 @@ static int pair_key_index(int32_t key)
     case DEMILL_PAIR_COULOMB_REGULARISATION: return DM_PK_COULOMB_REG;
     case DEMILL_PAIR_ROLLING_REGULARISATION: return DM_PK_ROLLING_REG;
     case DEMILL_PAIR_CLAMP_NORMAL: return DM_PK_CLAMP;
+    case DEMILL_PAIR_ADHESION_WORK: return DM_PK_ADHESION_WORK;
+    case DEMILL_PAIR_LIQUID_VOLUME: return DM_PK_LIQUID_VOLUME;
+    case DEMILL_PAIR_SURFACE_TENSION: return DM_PK_SURFACE_TENSION;
+    case DEMILL_PAIR_CONTACT_ANGLE: return DM_PK_CONTACT_ANGLE;
     default: return -1;
     }
 }

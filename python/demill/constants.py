@@ -113,6 +113,7 @@ class MaterialKey(IntEnum):
     FRICTION = 205
     ROLLING_FRICTION = 206
     RIGID = 212
+    SURFACE_ENERGY = 213
 
 
 class Normal(IntEnum):
@@ -151,6 +152,8 @@ class Cohesion(IntEnum):
     """Cohesion laws, values of ``PairKey.COHESION`` (``DEMILL_COHESION_*``)."""
 
     NONE = 0
+    JKR = 1
+    CAPILLARY = 2
 
 
 class PairKey(IntEnum):
@@ -171,6 +174,10 @@ class PairKey(IntEnum):
     COULOMB_REGULARISATION = 317
     ROLLING_REGULARISATION = 318
     CLAMP_NORMAL = 319
+    ADHESION_WORK = 331
+    LIQUID_VOLUME = 332
+    SURFACE_TENSION = 333
+    CONTACT_ANGLE = 334
 
 
 class ParticleField(IntEnum):

@@ -76,6 +76,7 @@ class Material(Handle, Keyed):
     friction = Param(MaterialKey.FRICTION)
     rolling_friction = Param(MaterialKey.ROLLING_FRICTION)
     rigid = Param(MaterialKey.RIGID, bool)
+    surface_energy = Param(MaterialKey.SURFACE_ENERGY)
 
     _getter, _setter = "demill_material_get", "demill_material_set"
 
@@ -103,6 +104,10 @@ class Pair(Keyed):
     coulomb_regularisation = Param(PairKey.COULOMB_REGULARISATION)
     rolling_regularisation = Param(PairKey.ROLLING_REGULARISATION)
     clamp_normal = Param(PairKey.CLAMP_NORMAL, bool)
+    adhesion_work = Param(PairKey.ADHESION_WORK)
+    liquid_volume = Param(PairKey.LIQUID_VOLUME)
+    surface_tension = Param(PairKey.SURFACE_TENSION)
+    contact_angle = Param(PairKey.CONTACT_ANGLE)
 
     def __init__(self, world, a, b):
         self.world = world

@@ -131,6 +131,21 @@ class Errors(unittest.TestCase):
         w.step()
         w.close()
 
+    def test_cohesion_keys(self):
+        """The work of adhesion is derived from the surface energies, 2√(γ_a
+        γ_b); the cohesion law comes back as its enum."""
+        w, m = linear_world(3)
+        m.surface_energy = 0.04
+        other = w.material(surface_energy=0.09)
+        self.assertAlmostEqual(w.pair(m, m).adhesion_work, 0.08, places=15)
+        self.assertAlmostEqual(w.pair(m, other).adhesion_work, 0.12, places=15)
+        pair = w.pair(m, other, normal=Normal.HERTZ, cohesion=demill.Cohesion.CAPILLARY,
+                      liquid_volume=2e-12, contact_angle=0.2)
+        self.assertIs(pair.cohesion, demill.Cohesion.CAPILLARY)
+        self.assertEqual((pair.liquid_volume, pair.surface_tension, pair.contact_angle),
+                         (2e-12, 0.072, 0.2))
+        w.close()
+
     def test_unstable_run_is_reported_and_rolled_back(self):
         """A time step beyond a pair's stability limit is refused before the
         run starts, naming the pair and the limit; a chain of particles

@@ -171,13 +171,13 @@ static void snap_take(scene *sc, snap *s)
 
     /* materials and every pair of them */
     for (int m = 0; m < sc->nmat; m++)
-        for (int32_t key = 200; key <= 206; key++) {
+        for (int32_t key = 200; key <= 215; key++) {
             double v = 0.0;
             st = demill_material_get(w, sc->mat[m], key, &v);
             put_d(s, "material", key, (size_t)m, st, v);
         }
-    static const int32_t pair_keys[] = {300, 301, 302, 303, 310, 311, 312,
-                                        313, 314, 315, 316, 317, 318, 319};
+    static const int32_t pair_keys[] = {300, 301, 302, 303, 304, 310, 311, 312, 313, 314,
+                                        315, 316, 317, 318, 319, 331, 332, 333, 334};
     for (int a = 0; a < sc->nmat; a++)
         for (int b = a; b < sc->nmat; b++)
             for (size_t k = 0; k < sizeof pair_keys / sizeof pair_keys[0]; k++) {
@@ -714,7 +714,7 @@ static void bad_material_set(scene *sc)
     demill_world *w = sc->w;
     for (int m = 0; m < 2; m++) {
         const demill_id mat = sc->mat[m];
-        static const int32_t keys[] = {200, 201, 202, 203, 204, 205, 206, 212};
+        static const int32_t keys[] = {200, 201, 202, 203, 204, 205, 206, 212, 213};
         for (size_t q = 0; q < sizeof keys / sizeof keys[0]; q++)
             for (int k = 0; k < 3; k++) {
                 const int32_t key = keys[q];
@@ -736,6 +736,7 @@ static void bad_material_set(scene *sc)
             {DEMILL_MATERIAL_FRICTION, -0.1},        {DEMILL_MATERIAL_ROLLING_FRICTION, -0.1},
             {DEMILL_MATERIAL_RIGID, 0.5},            {DEMILL_MATERIAL_RIGID, 2},
             {DEMILL_MATERIAL_RIGID, -1},             {DEMILL_MATERIAL_RIGID, 1e-300},
+            {DEMILL_MATERIAL_SURFACE_ENERGY, -1e-300}, {DEMILL_MATERIAL_SURFACE_ENERGY, 2e6},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "material %d key %d = %g", m, (int)invalid[k].key, invalid[k].v);
@@ -771,8 +772,8 @@ END_TEST
 static void bad_pair_set(scene *sc)
 {
     demill_world *w = sc->w;
-    static const int32_t keys[] = {300, 301, 302, 303, 310, 311, 312,
-                                   313, 314, 315, 316, 317, 318, 319};
+    static const int32_t keys[] = {300, 301, 302, 303, 304, 310, 311, 312, 313, 314,
+                                   315, 316, 317, 318, 319, 331, 332, 333, 334};
     const demill_id A = sc->mat[0], B = sc->mat[1];
     const demill_id pairs[4][2] = {{A, B}, {B, A}, {A, A}, {B, B}};
     for (int p = 0; p < 4; p++) {
@@ -791,6 +792,7 @@ static void bad_pair_set(scene *sc)
             {DEMILL_PAIR_NORMAL, 100},    {DEMILL_PAIR_DAMPING, 3},    {DEMILL_PAIR_DAMPING, -1},
             {DEMILL_PAIR_TANGENTIAL, 4},  {DEMILL_PAIR_TANGENTIAL, -1},
             {DEMILL_PAIR_ROLLING, 2},     {DEMILL_PAIR_ROLLING, -1},
+            {DEMILL_PAIR_COHESION, 3},    {DEMILL_PAIR_COHESION, -1},
         };
         for (size_t k = 0; k < sizeof enums / sizeof enums[0]; k++) {
             ctx(sc, "pair %d law key %d = %g", p, (int)enums[k].key, enums[k].v);
@@ -819,6 +821,14 @@ static void bad_pair_set(scene *sc)
             {DEMILL_PAIR_CLAMP_NORMAL, 2},
             {DEMILL_PAIR_CLAMP_NORMAL, -1},
             {DEMILL_PAIR_CLAMP_NORMAL, 0.5},
+            {DEMILL_PAIR_ADHESION_WORK, -1e-3},
+            {DEMILL_PAIR_ADHESION_WORK, 2e6},
+            {DEMILL_PAIR_LIQUID_VOLUME, 0.0},
+            {DEMILL_PAIR_LIQUID_VOLUME, -1e-12},
+            {DEMILL_PAIR_LIQUID_VOLUME, 2.0},
+            {DEMILL_PAIR_SURFACE_TENSION, -0.01},
+            {DEMILL_PAIR_CONTACT_ANGLE, -0.1},
+            {DEMILL_PAIR_CONTACT_ANGLE, 1.6},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "pair %d key %d = %g", p, (int)invalid[k].key, invalid[k].v);
@@ -2232,6 +2242,36 @@ static void bad_rigid_pair(scene *sc)
         demill_world_suggest_time_step(sc->w, 1.0, 0, &dt, NULL, NULL), "rigid", "deformable");
 }
 
+/* JKR cohesion on B's linear pair with itself. */
+static void setup_jkr_linear(scene *sc)
+{
+    DM_OK(sc->w, demill_pair_set(sc->w, sc->mat[1], sc->mat[1], DEMILL_PAIR_COHESION,
+                                 DEMILL_COHESION_JKR));
+}
+
+static void fix_jkr_linear(scene *sc)
+{
+    DM_OK(sc->w, demill_pair_set(sc->w, sc->mat[1], sc->mat[1], DEMILL_PAIR_COHESION,
+                                 DEMILL_COHESION_NONE));
+}
+
+/* JKR is a law of Hertz contacts: stepping refuses it with another. */
+static void bad_jkr_linear(scene *sc)
+{
+    ctx(sc, "world_step with JKR on a linear pair");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_world_step(sc->w, 1), "JKR", "HERTZ");
+    double dt;
+    ctx(sc, "world_suggest_time_step with JKR on a linear pair");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_world_suggest_time_step(sc->w, 1.0, 0, &dt, NULL, NULL), "JKR", "HERTZ");
+}
+
+START_TEST(jkr_needs_hertz)
+{
+    both_dims(setup_jkr_linear, bad_jkr_linear, fix_jkr_linear);
+}
+END_TEST
+
 START_TEST(rigid_pairs)
 {
     both_dims(setup_rigid_a, bad_rigid_pair, fix_rigid_a);
@@ -2522,6 +2562,7 @@ int main(void)
     tcase_add_test(tc, no_contact_model);
     tcase_add_test(tc, no_contact_model_with_wall);
     tcase_add_test(tc, rigid_pairs);
+    tcase_add_test(tc, jkr_needs_hertz);
     tcase_add_test(tc, suggest_time_step);
     tcase_add_test(tc, progress_callback);
     tcase_add_test(tc, vtk_output);

@@ -30,6 +30,10 @@ int dm_pair_kernel(const demill_world *w, uint32_t a, uint32_t b);
  * checks that every pair of materials that may touch has a model. Leaves
  * the world unchanged when it fails. */
 demill_status dm_resolve_pairs(demill_world *w, bool require_models);
+/* How far past touching the cohesive pairs that can meet interact, at
+ * most, with particles of radius at most rmax (0 without cohesion): the
+ * neighbour search's extra reach. */
+double dm_cohesion_reach(const demill_world *w, double rmax);
 /* The damping ratio ξ that gives restitution e (restitution.c). */
 double dm_damping_ratio(double e, int clamp);
 

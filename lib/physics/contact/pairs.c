@@ -6,6 +6,7 @@
 
 #include "base/status.h"
 #include "physics/contact/contact.h"
+#include "physics/contact/law.h"
 
 const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b)
 {
@@ -41,6 +42,13 @@ void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws
     v[DM_PK_COULOMB_REG] = 1;
     v[DM_PK_ROLLING_REG] = 1;
     v[DM_PK_CLAMP] = 1;
+    /* the work of adhesion of two surfaces from their surface energies, by
+     * the geometric-mean combining relation (Israelachvili 2011,
+     * Intermolecular and Surface Forces, 3rd ed.): 2γ for one */
+    v[DM_PK_ADHESION_WORK] = 2.0 * sqrt(ma->surface_energy * mb->surface_energy);
+    v[DM_PK_LIQUID_VOLUME] = 1e-12;
+    v[DM_PK_SURFACE_TENSION] = 0.072;
+    v[DM_PK_CONTACT_ANGLE] = 0;
     *laws = (dm_laws){0, 0, 0, 0, 0};
     if (!u)
         return;
@@ -109,6 +117,10 @@ static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairp
     pp->mu_r = v[DM_PK_ROLLING_FRICTION];
     pp->coul_reg = v[DM_PK_COULOMB_REG];
     pp->roll_reg = v[DM_PK_ROLLING_REG];
+    pp->adhesion = v[DM_PK_ADHESION_WORK];
+    pp->liquid_volume = v[DM_PK_LIQUID_VOLUME];
+    pp->surface_tension = v[DM_PK_SURFACE_TENSION];
+    pp->contact_angle = v[DM_PK_CONTACT_ANGLE];
 }
 
 /* Rebuilds the resolved pair table if anything changed, and (if asked)
@@ -142,6 +154,11 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
                     return dm_fail(w, DEMILL_ERR_NO_CONTACT_MODEL,
                                    "no contact model for materials %u and %u (%s): set "
                                    "DEMILL_PAIR_NORMAL with demill_pair_set()",
+                                   a, b, kind);
+                if (u->cohesion == DEMILL_COHESION_JKR && u->normal != DEMILL_NORMAL_HERTZ)
+                    return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                                   "materials %u and %u (%s): JKR cohesion is a law of Hertz "
+                                   "contacts; set DEMILL_PAIR_NORMAL to DEMILL_NORMAL_HERTZ",
                                    a, b, kind);
             }
         }
@@ -179,4 +196,21 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
         w->nlist_valid = false;
     }
     return DEMILL_OK;
+}
+
+double dm_cohesion_reach(const demill_world *w, double rmax)
+{
+    double reach = 0.0;
+    const uint32_t nm = w->nmat_tab;
+    for (uint32_t a = 0; a < nm; a++)
+        for (uint32_t b = 0; b < nm; b++) {
+            const dm_pairparam *pp = &w->ptab[a * nm + b];
+            if (pp->kernel < 0 || !w->mat_particles[a] ||
+                !(w->mat_particles[b] || w->mat_walls[b]))
+                continue;
+            /* JKR's reach grows with R*, which is at most the largest radius */
+            const double r = dm_law_range(dm_kernel_laws(pp->kernel).cohesion, pp, rmax);
+            reach = r > reach ? r : reach;
+        }
+    return reach;
 }

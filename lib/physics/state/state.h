@@ -19,15 +19,19 @@
 typedef struct dm_material {
     double density, youngs, poisson, stiffness, restitution, friction, rolling_friction;
     double rigid; /* DEMILL_MATERIAL_RIGID: 1 rigid, 0 deformable */
+    double surface_energy; /* DEMILL_MATERIAL_SURFACE_ENERGY, J/m² */
 } dm_material;
 
 /* Derived pair keys the user may override; bit i of dm_pair_user.set. */
 enum {
     DM_PK_RESTITUTION, DM_PK_FRICTION, DM_PK_ROLLING_FRICTION, DM_PK_NORMAL_STIFFNESS,
     DM_PK_VISCOUS, DM_PK_KT_RATIO, DM_PK_CT_FACTOR, DM_PK_COULOMB_REG, DM_PK_ROLLING_REG,
-    DM_PK_CLAMP, DM_PK_COUNT
+    DM_PK_CLAMP,
+    /* cohesion's */
+    DM_PK_ADHESION_WORK, DM_PK_LIQUID_VOLUME, DM_PK_SURFACE_TENSION, DM_PK_CONTACT_ANGLE,
+    DM_PK_COUNT
 };
-/* The keys checkpoints of formats 1 and 2 hold. */
+/* The keys checkpoints of formats 1 to 3 hold. */
 #define DM_PK_COUNT_V2 10
 
 /* What the user chose for one material pair (a <= b). */
@@ -75,6 +79,9 @@ typedef struct dm_pairparam {
     double mu, mu_r;
     double coul_reg, roll_reg; /* regularisation factors */
     double restitution, xi;
+    /* cohesion (contact/cohesion.h): JKR's work of adhesion; the liquid
+     * bridge's surface tension, contact angle and volume */
+    double adhesion, surface_tension, contact_angle, liquid_volume;
 } dm_pairparam;
 
 /* ---- walls (geometry/walls.c) ------------------------------------------- */
