@@ -754,9 +754,10 @@ static void transfer(io *s, demill_world *w)
      * are empty */
     uint32_t lists = DM_FAST_KERNELS;
     if (s->format >= 4) {
-        for (lists = s->reading ? 0 : (uint32_t)w->nkern; lists > DM_FAST_KERNELS &&
-                                                         !w->pp.b[lists - 1].n &&
-                                                         !w->pw.b[lists - 1].n;)
+        /* from the lists themselves, not from w->nkern, which a resolve of
+         * the pair table changes without changing the world */
+        for (lists = s->reading ? 0 : DM_KERNELS; lists > DM_FAST_KERNELS &&
+                                                  !w->pp.b[lists - 1].n && !w->pw.b[lists - 1].n;)
             lists--;
         io_count(s, &lists, DM_KERNELS, "contact lists");
     }
