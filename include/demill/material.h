@@ -48,7 +48,26 @@ enum {
      *  gravity too. Velocity Verlet and symplectic Euler only: stepping a
      *  world with the iterative refinement fails while a particle's material
      *  has it. Default 0 (off). */
-    DEMILL_MATERIAL_LOCAL_DAMPING = 210
+    DEMILL_MATERIAL_LOCAL_DAMPING = 210,
+    /** 1: the material is rigid (infinite Young's modulus and stiffness);
+     *  0 (default): deformable. A pair of a rigid and a deformable material
+     *  takes its elastic constants from the deformable one alone:
+     *  1/E* = (1 - ν²)/E and k_n = k of the deformable material, G* from
+     *  its E and ν (the rigid one's E, ν and k are kept but not used). Its
+     *  density still counts: particles of a rigid material have mass. Two
+     *  rigid materials that may touch (particles of one and particles or a
+     *  wall of the other, or of the same rigid material) have no finite
+     *  stiffness: demill_world_step() and demill_world_suggest_time_step()
+     *  refuse them with DEMILL_ERR_NO_CONTACT_MODEL. (Their pair's derived
+     *  values, never used, are those of two deformable materials, so that
+     *  demill_pair_get() reads finite numbers.) The Rayleigh-time bound of
+     *  demill_world_suggest_time_step() applies to deformable particles
+     *  only. */
+    DEMILL_MATERIAL_RIGID = 212,
+    /** Surface energy γ in J/m², in [0, 1e6], from which a pair's work of
+     *  adhesion for JKR cohesion is derived (DEMILL_PAIR_ADHESION_WORK).
+     *  Default 0. */
+    DEMILL_MATERIAL_SURFACE_ENERGY = 213
 };
 
 /** Normal force laws, the values of DEMILL_PAIR_NORMAL. */
@@ -137,7 +156,23 @@ enum {
 /** Cohesion laws, the values of DEMILL_PAIR_COHESION. */
 enum {
     /** No cohesion (default): the pair interacts only while it overlaps. */
-    DEMILL_COHESION_NONE = 0
+    DEMILL_COHESION_NONE = 0,
+    /** JKR adhesion of elastic spheres (Johnson, Kendall and Roberts 1971;
+     *  docs/physics.md, Cohesion), with the Hertz normal law only (stepping
+     *  refuses it with another, DEMILL_ERR_INVALID_VALUE): the force F(a) =
+     *  4E* a³/(3R*) − √(8π w E* a³) of the contact radius a(δ), w from
+     *  DEMILL_PAIR_ADHESION_WORK; the contact forms at δ = 0 and breaks
+     *  when pulled apart to δ_c = −(3/4)(π² w² R* / E*²)^{1/3}; the pull-off
+     *  force is (3/2) π w R*. */
+    DEMILL_COHESION_JKR = 1,
+    /** A liquid bridge (Willett, Adams, Johnson and Seville 2000; Lian,
+     *  Thornton and Adams 1993; docs/physics.md, Cohesion), with any normal
+     *  law: an attraction of 4π R* γ cos θ while the pair overlaps, falling
+     *  off with the gap s as 1/(1 + 2.1 S + 10 S²), S = (s/2)√(2R* / V); the
+     *  bridge forms at contact and breaks at the gap (1 + θ/2) V^{1/3}. γ, θ
+     *  and V from DEMILL_PAIR_SURFACE_TENSION, _CONTACT_ANGLE and
+     *  _LIQUID_VOLUME. */
+    DEMILL_COHESION_CAPILLARY = 2
 };
 
 /** Material pair parameter keys (demill_pair_set(), demill_pair_get()).
@@ -208,7 +243,21 @@ enum {
      *  >= 0: c_r = η_r 2 √(I_r k_r), I_r the pair's moment of inertia about
      *  the contact, [1/(I_a + m_a r_a²) + 1/(I_b + m_b r_b²)]⁻¹ (a wall's
      *  term 0). Default 0.3; 0: no dashpot. */
-    DEMILL_PAIR_ROLLING_DAMPING_RATIO = 328
+    DEMILL_PAIR_ROLLING_DAMPING_RATIO = 328,
+    /** Work of adhesion w in J/m² of JKR cohesion (DEMILL_COHESION_JKR), in
+     *  [0, 1e6]: the pull-off force is (3/2) π w R*. Derived: 2 √(γ_a γ_b)
+     *  from the materials' DEMILL_MATERIAL_SURFACE_ENERGY (2γ for two of
+     *  the same material). */
+    DEMILL_PAIR_ADHESION_WORK = 331,
+    /** Liquid volume V in m³ of each bridge of DEMILL_COHESION_CAPILLARY, in
+     *  (0, 1]. Default 1e-12 (a cube of 100 µm). */
+    DEMILL_PAIR_LIQUID_VOLUME = 332,
+    /** Surface tension γ in N/m of the bridges' liquid, in [0, 1e6].
+     *  Default 0.072 (water at 25 °C). */
+    DEMILL_PAIR_SURFACE_TENSION = 333,
+    /** Contact angle θ in rad of the bridges' liquid on the solids, in
+     *  [0, π/2]. Default 0 (wetting). */
+    DEMILL_PAIR_CONTACT_ANGLE = 334
 };
 
 /** Creates a material with default parameters (see the DEMILL_MATERIAL_*

@@ -674,7 +674,7 @@ static void transfer(io *s, demill_world *w)
     /* how many fields a material has and how many values a pair (format 4
      * writes them, so that a key appended since still reads an older file:
      * the fields a file lacks are 0, the pair values unset) */
-    enum { MAT_FIELDS = 9 };
+    enum { MAT_FIELDS = 11 };
     uint32_t mfields = MAT_FIELDS, pkeys = DM_PK_COUNT;
     if (s->format >= 4) {
         io_count(s, &mfields, MAT_FIELDS, "fields per material");
@@ -688,7 +688,7 @@ static void transfer(io *s, demill_world *w)
         double *const f[MAT_FIELDS] = {&m->density,     &m->youngs,   &m->poisson,
                                        &m->stiffness,   &m->restitution, &m->friction,
                                        &m->rolling_friction, &m->yield_stress,
-                                       &m->local_damping};
+                                       &m->local_damping, &m->rigid, &m->surface_energy};
         for (uint32_t q = 0; q < MAT_FIELDS; q++) {
             if (s->reading)
                 *f[q] = 0.0;
@@ -769,9 +769,10 @@ static void transfer(io *s, demill_world *w)
      * are empty */
     uint32_t lists = DM_FAST_KERNELS;
     if (s->format >= 4) {
-        for (lists = s->reading ? 0 : (uint32_t)w->nkern; lists > DM_FAST_KERNELS &&
-                                                         !w->pp.b[lists - 1].n &&
-                                                         !w->pw.b[lists - 1].n;)
+        /* from the lists themselves, not from w->nkern, which a resolve of
+         * the pair table changes without changing the world */
+        for (lists = s->reading ? 0 : DM_KERNELS; lists > DM_FAST_KERNELS &&
+                                                  !w->pp.b[lists - 1].n && !w->pw.b[lists - 1].n;)
             lists--;
         io_count(s, &lists, DM_KERNELS, "contact lists");
     }

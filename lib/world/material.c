@@ -9,7 +9,7 @@
 static const dm_material default_material = {
     .density = 2500, .youngs = 1e8, .poisson = 0.3, .stiffness = 1e5,
     .restitution = 0.5, .friction = 0.5, .rolling_friction = 0, .yield_stress = 0,
-    .local_damping = 0};
+    .local_damping = 0, .rigid = 0, .surface_energy = 0};
 
 DEMILL_API demill_status demill_material_create(demill_world *w, demill_id *out)
 {
@@ -41,6 +41,8 @@ static double *material_field(dm_material *m, int32_t key)
     case DEMILL_MATERIAL_ROLLING_FRICTION: return &m->rolling_friction;
     case DEMILL_MATERIAL_YIELD_STRESS: return &m->yield_stress;
     case DEMILL_MATERIAL_LOCAL_DAMPING: return &m->local_damping;
+    case DEMILL_MATERIAL_RIGID: return &m->rigid;
+    case DEMILL_MATERIAL_SURFACE_ENERGY: return &m->surface_energy;
     default: return NULL;
     }
 }
@@ -140,6 +142,10 @@ static int pair_key_index(int32_t key)
     case DEMILL_PAIR_PLASTIC_FIT_EXPONENT: return DM_PK_FIT_H;
     case DEMILL_PAIR_ROLLING_STIFFNESS: return DM_PK_ROLLING_STIFFNESS;
     case DEMILL_PAIR_ROLLING_DAMPING_RATIO: return DM_PK_ROLLING_DAMPING;
+    case DEMILL_PAIR_ADHESION_WORK: return DM_PK_ADHESION_WORK;
+    case DEMILL_PAIR_LIQUID_VOLUME: return DM_PK_LIQUID_VOLUME;
+    case DEMILL_PAIR_SURFACE_TENSION: return DM_PK_SURFACE_TENSION;
+    case DEMILL_PAIR_CONTACT_ANGLE: return DM_PK_CONTACT_ANGLE;
     default: return -1;
     }
 }

@@ -1,6 +1,6 @@
 /* timestep.c: the time step a scene needs (docs/physics.md §8): contact
  * durations and stability limits of the material pairs that can meet, and
- * the Rayleigh time of Hertz materials; and the check, when stepping starts,
+ * the Rayleigh time of deformable Hertz materials; and the check, when stepping starts,
  * that the time step is within every pair's stability limit. */
 #include <math.h>
 #include <stdio.h>
@@ -184,7 +184,8 @@ static pair_bodies bodies(const smallest *sm, uint32_t a, uint32_t c, int wall)
 
 /* Calls fn for every pair of materials that can meet: each pair of
  * particle materials that have particles, and each particle material with
- * each material of a wall; only_now: leaving out a material's pair with
+ * each material of a wall, but not two rigid ones (dm_resolve_pairs() has
+ * made sure that they cannot touch); only_now: leaving out a material's pair with
  * itself while it has a single particle. Returns the first nonzero result
  * of fn. */
 typedef int (*pair_fn)(demill_world *w, void *ctx, uint32_t a, uint32_t c, int wall,
@@ -200,7 +201,8 @@ static int each_pair(demill_world *w, const smallest *sm, double v, int only_now
         for (uint32_t c = 0; c < nm; c++)
             for (int wall = 0; wall < 2; wall++) {
                 if (!(wall ? w->mat_walls[c] : w->mat_particles[c]) ||
-                    (only_now && !wall && c == a && w->mat_particles[a] < 2))
+                    (only_now && !wall && c == a && w->mat_particles[a] < 2) ||
+                    (w->mats[a].rigid != 0 && w->mats[c].rigid != 0))
                     continue;
                 const pair_bodies b = bodies(sm, a, c, wall);
                 const pair_needs n = pair_analysis(&w->ptab[a * nm + c], &b, v);
@@ -309,7 +311,7 @@ DEMILL_API demill_status demill_world_suggest_time_step(demill_world *w, double 
         for (uint32_t c = 0; c < w->nmat && w->mat_particles[a]; c++)
             hertz |= (w->mat_particles[c] || w->mat_walls[c]) &&
                      dm_normal_hertzian(dm_kernel_laws(w->ptab[a * w->nmat + c].kernel).normal);
-        if (hertz)
+        if (hertz && w->mats[a].rigid == 0) /* a rigid particle carries no elastic wave */
             b.suggested = fmin(b.suggested, LIMIT_FRACTION * rayleigh_time(&w->mats[a], sm.r[a]));
     }
     *suggested = b.suggested;

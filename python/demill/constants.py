@@ -113,7 +113,9 @@ class MaterialKey(IntEnum):
     FRICTION = 205
     ROLLING_FRICTION = 206
     YIELD_STRESS = 207
-    LOCAL_DAMPING = 210
+    LOCAL_DAMPING = 210,
+    RIGID = 212
+    SURFACE_ENERGY = 213
 
 
 class Normal(IntEnum):
@@ -156,6 +158,8 @@ class Cohesion(IntEnum):
     """Cohesion laws, values of ``PairKey.COHESION`` (``DEMILL_COHESION_*``)."""
 
     NONE = 0
+    JKR = 1
+    CAPILLARY = 2
 
 
 class PairKey(IntEnum):
@@ -182,7 +186,11 @@ class PairKey(IntEnum):
     PLASTIC_FIT_C2 = 323
     PLASTIC_FIT_EXPONENT = 324
     ROLLING_STIFFNESS = 327
-    ROLLING_DAMPING_RATIO = 328
+    ROLLING_DAMPING_RATIO = 328,
+    ADHESION_WORK = 331
+    LIQUID_VOLUME = 332
+    SURFACE_TENSION = 333
+    CONTACT_ANGLE = 334
 
 
 class ParticleField(IntEnum):

@@ -77,6 +77,8 @@ class Material(Handle, Keyed):
     rolling_friction = Param(MaterialKey.ROLLING_FRICTION)
     yield_stress = Param(MaterialKey.YIELD_STRESS)
     local_damping = Param(MaterialKey.LOCAL_DAMPING)
+    rigid = Param(MaterialKey.RIGID, bool)
+    surface_energy = Param(MaterialKey.SURFACE_ENERGY)
 
     _getter, _setter = "demill_material_get", "demill_material_set"
 
@@ -111,6 +113,10 @@ class Pair(Keyed):
     plastic_fit_exponent = Param(PairKey.PLASTIC_FIT_EXPONENT)
     rolling_stiffness = Param(PairKey.ROLLING_STIFFNESS)
     rolling_damping_ratio = Param(PairKey.ROLLING_DAMPING_RATIO)
+    adhesion_work = Param(PairKey.ADHESION_WORK)
+    liquid_volume = Param(PairKey.LIQUID_VOLUME)
+    surface_tension = Param(PairKey.SURFACE_TENSION)
+    contact_angle = Param(PairKey.CONTACT_ANGLE)
 
     def __init__(self, world, a, b):
         self.world = world

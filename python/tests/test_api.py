@@ -110,6 +110,42 @@ class Errors(unittest.TestCase):
                 w.step()
             self.assertEqual(w.step_count, 0)
 
+    def test_rigid_materials(self):
+        """A rigid wall gives the pair the ball's own stiffness in full (not
+        half, as two equal springs in series would); a rigid ball on it is
+        refused, with the world unchanged."""
+        w, m = linear_world(3)
+        steel = w.material(rigid=True)
+        self.assertIs(steel.rigid, True)
+        w.pair(m, steel, normal=Normal.LINEAR)
+        self.assertEqual(w.pair(m, steel).normal_stiffness, m.stiffness)
+        w.add_plane(steel, (0, 0, 0), (0, 1, 0))
+        w.particles.add(m, [(0, 0.0099, 0)], 0.01)
+        w.step(10)
+        w.particles.add(steel, [(0.1, 0.0099, 0)], 0.01)
+        with self.assertFails(demill.NoContactModel, "both rigid", "deformable"):
+            w.step()
+        self.assertEqual(w.step_count, 10)
+        steel.rigid = False
+        w.pair(steel, steel, normal=Normal.LINEAR)
+        w.step()
+        w.close()
+
+    def test_cohesion_keys(self):
+        """The work of adhesion is derived from the surface energies, 2√(γ_a
+        γ_b); the cohesion law comes back as its enum."""
+        w, m = linear_world(3)
+        m.surface_energy = 0.04
+        other = w.material(surface_energy=0.09)
+        self.assertAlmostEqual(w.pair(m, m).adhesion_work, 0.08, places=15)
+        self.assertAlmostEqual(w.pair(m, other).adhesion_work, 0.12, places=15)
+        pair = w.pair(m, other, normal=Normal.HERTZ, cohesion=demill.Cohesion.CAPILLARY,
+                      liquid_volume=2e-12, contact_angle=0.2)
+        self.assertIs(pair.cohesion, demill.Cohesion.CAPILLARY)
+        self.assertEqual((pair.liquid_volume, pair.surface_tension, pair.contact_angle),
+                         (2e-12, 0.072, 0.2))
+        w.close()
+
     def test_unstable_run_is_reported_and_rolled_back(self):
         """A time step beyond a pair's stability limit is refused before the
         run starts, naming the pair and the limit; a chain of particles

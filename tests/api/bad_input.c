@@ -171,13 +171,13 @@ static void snap_take(scene *sc, snap *s)
 
     /* materials and every pair of them */
     for (int m = 0; m < sc->nmat; m++)
-        for (int32_t key = 200; key <= 206; key++) {
+        for (int32_t key = 200; key <= 215; key++) {
             double v = 0.0;
             st = demill_material_get(w, sc->mat[m], key, &v);
             put_d(s, "material", key, (size_t)m, st, v);
         }
-    static const int32_t pair_keys[] = {300, 301, 302, 303, 310, 311, 312,
-                                        313, 314, 315, 316, 317, 318, 319};
+    static const int32_t pair_keys[] = {300, 301, 302, 303, 304, 310, 311, 312, 313, 314,
+                                        315, 316, 317, 318, 319, 331, 332, 333, 334};
     for (int a = 0; a < sc->nmat; a++)
         for (int b = a; b < sc->nmat; b++)
             for (size_t k = 0; k < sizeof pair_keys / sizeof pair_keys[0]; k++) {
@@ -714,7 +714,7 @@ static void bad_material_set(scene *sc)
     demill_world *w = sc->w;
     for (int m = 0; m < 2; m++) {
         const demill_id mat = sc->mat[m];
-        static const int32_t keys[] = {200, 201, 202, 203, 204, 205, 206, 210};
+        static const int32_t keys[] = {200, 201, 202, 203, 204, 205, 206, 210, 212, 213};
         for (size_t q = 0; q < sizeof keys / sizeof keys[0]; q++)
             for (int k = 0; k < 3; k++) {
                 const int32_t key = keys[q];
@@ -737,6 +737,9 @@ static void bad_material_set(scene *sc)
             {DEMILL_MATERIAL_YIELD_STRESS, -1e-300}, {DEMILL_MATERIAL_YIELD_STRESS, 2e30},
             {DEMILL_MATERIAL_LOCAL_DAMPING, -0.1},   {DEMILL_MATERIAL_LOCAL_DAMPING, 1.0},
             {DEMILL_MATERIAL_LOCAL_DAMPING, -1e-300},
+            {DEMILL_MATERIAL_RIGID, 0.5},            {DEMILL_MATERIAL_RIGID, 2},
+            {DEMILL_MATERIAL_RIGID, -1},             {DEMILL_MATERIAL_RIGID, 1e-300},
+            {DEMILL_MATERIAL_SURFACE_ENERGY, -1e-300}, {DEMILL_MATERIAL_SURFACE_ENERGY, 2e6},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "material %d key %d = %g", m, (int)invalid[k].key, invalid[k].v);
@@ -744,7 +747,7 @@ static void bad_material_set(scene *sc)
                 demill_material_set(w, mat, invalid[k].key, invalid[k].v),
                 demill_param_name(invalid[k].key));
         }
-        static const int32_t unknown[] = {0, 100, 199, 250, 299, 300, 310, -1};
+        static const int32_t unknown[] = {0, 100, 199, 216, 250, 299, 300, 310, -1};
         for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
             char num[16];
             snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -772,8 +775,8 @@ END_TEST
 static void bad_pair_set(scene *sc)
 {
     demill_world *w = sc->w;
-    static const int32_t keys[] = {300, 301, 302, 303, 310, 311, 312, 313, 314, 315, 316,
-                                   317, 318, 319, 320, 321, 322, 323, 324, 327, 328};
+    static const int32_t keys[] = {300, 301, 302, 303, 304, 310, 311, 312, 313, 314, 315, 316, 317,
+                                   318, 319, 320, 321, 322, 323, 324, 327, 328, 331, 332, 333, 334};
     const demill_id A = sc->mat[0], B = sc->mat[1];
     const demill_id pairs[4][2] = {{A, B}, {B, A}, {A, A}, {B, B}};
     for (int p = 0; p < 4; p++) {
@@ -792,6 +795,7 @@ static void bad_pair_set(scene *sc)
             {DEMILL_PAIR_NORMAL, 100},    {DEMILL_PAIR_DAMPING, 3},    {DEMILL_PAIR_DAMPING, -1},
             {DEMILL_PAIR_TANGENTIAL, 4},  {DEMILL_PAIR_TANGENTIAL, -1},
             {DEMILL_PAIR_ROLLING, 3},     {DEMILL_PAIR_ROLLING, -1},
+            {DEMILL_PAIR_COHESION, 3},    {DEMILL_PAIR_COHESION, -1},
         };
         for (size_t k = 0; k < sizeof enums / sizeof enums[0]; k++) {
             ctx(sc, "pair %d law key %d = %g", p, (int)enums[k].key, enums[k].v);
@@ -831,6 +835,14 @@ static void bad_pair_set(scene *sc)
             {DEMILL_PAIR_ROLLING_STIFFNESS, -1e-300},
             {DEMILL_PAIR_ROLLING_STIFFNESS, -0.1},
             {DEMILL_PAIR_ROLLING_DAMPING_RATIO, -0.3},
+            {DEMILL_PAIR_ADHESION_WORK, -1e-3},
+            {DEMILL_PAIR_ADHESION_WORK, 2e6},
+            {DEMILL_PAIR_LIQUID_VOLUME, 0.0},
+            {DEMILL_PAIR_LIQUID_VOLUME, -1e-12},
+            {DEMILL_PAIR_LIQUID_VOLUME, 2.0},
+            {DEMILL_PAIR_SURFACE_TENSION, -0.01},
+            {DEMILL_PAIR_CONTACT_ANGLE, -0.1},
+            {DEMILL_PAIR_CONTACT_ANGLE, 1.6},
         };
         for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
             ctx(sc, "pair %d key %d = %g", p, (int)invalid[k].key, invalid[k].v);
@@ -2189,6 +2201,98 @@ START_TEST(no_contact_model_with_wall)
 }
 END_TEST
 
+/* Material A rigid: its particles touch each other and its wall. */
+static void setup_rigid_a(scene *sc)
+{
+    DM_OK(sc->w, demill_material_set(sc->w, sc->mat[0], DEMILL_MATERIAL_RIGID, 1));
+}
+
+static void fix_rigid_a(scene *sc)
+{
+    DM_OK(sc->w, demill_material_set(sc->w, sc->mat[0], DEMILL_MATERIAL_RIGID, 0));
+}
+
+/* A lone particle of a rigid material C, which needs no model with itself,
+ * and a far wall of a rigid material D: C and D may touch. */
+static void setup_rigid_c_d(scene *sc)
+{
+    demill_world *w = sc->w;
+    DM_OK(w, demill_material_create(w, &sc->mat[2]));
+    DM_OK(w, demill_material_create(w, &sc->mat[3]));
+    sc->nmat = 4;
+    const demill_id A = sc->mat[0], B = sc->mat[1], C = sc->mat[2], D = sc->mat[3];
+    add_one(sc, C, 0.3, 0.3, 0.0, RAD);
+    const double p[3] = {-0.5, 0, 0}, n[3] = {1, 0, 0};
+    DM_OK(w, demill_wall_add_plane(w, D, p, n, &sc->wall[sc->nwall]));
+    sc->nwall++;
+    const demill_id soft[2] = {A, B};
+    for (int k = 0; k < 2; k++)
+        for (int q = 2; q < 4; q++)
+            DM_OK(w, demill_pair_set(w, soft[k], sc->mat[q], DEMILL_PAIR_NORMAL,
+                                     DEMILL_NORMAL_LINEAR));
+    DM_OK(w, demill_pair_set(w, C, D, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_LINEAR));
+    DM_OK(w, demill_material_set(w, C, DEMILL_MATERIAL_RIGID, 1));
+    DM_OK(w, demill_material_set(w, D, DEMILL_MATERIAL_RIGID, 1));
+}
+
+static void fix_rigid_d(scene *sc)
+{
+    DM_OK(sc->w, demill_material_set(sc->w, sc->mat[3], DEMILL_MATERIAL_RIGID, 0));
+}
+
+/* Stepping, and suggesting a time step, refuse two rigid materials that may
+ * touch, whatever their model. */
+static void bad_rigid_pair(scene *sc)
+{
+    static const uint64_t steps[] = {1, 0, 1000};
+    for (int k = 0; k < 3; k++) {
+        ctx(sc, "world_step(%llu) with two rigid materials", (unsigned long long)steps[k]);
+        BAD(sc, DEMILL_ERR_NO_CONTACT_MODEL, demill_world_step(sc->w, steps[k]), "rigid",
+            "deformable");
+    }
+    double dt;
+    ctx(sc, "world_suggest_time_step with two rigid materials");
+    BAD(sc, DEMILL_ERR_NO_CONTACT_MODEL,
+        demill_world_suggest_time_step(sc->w, 1.0, 0, &dt, NULL, NULL), "rigid", "deformable");
+}
+
+/* JKR cohesion on B's linear pair with itself. */
+static void setup_jkr_linear(scene *sc)
+{
+    DM_OK(sc->w, demill_pair_set(sc->w, sc->mat[1], sc->mat[1], DEMILL_PAIR_COHESION,
+                                 DEMILL_COHESION_JKR));
+}
+
+static void fix_jkr_linear(scene *sc)
+{
+    DM_OK(sc->w, demill_pair_set(sc->w, sc->mat[1], sc->mat[1], DEMILL_PAIR_COHESION,
+                                 DEMILL_COHESION_NONE));
+}
+
+/* JKR is a law of Hertz contacts: stepping refuses it with another. */
+static void bad_jkr_linear(scene *sc)
+{
+    ctx(sc, "world_step with JKR on a linear pair");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_world_step(sc->w, 1), "JKR", "HERTZ");
+    double dt;
+    ctx(sc, "world_suggest_time_step with JKR on a linear pair");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_world_suggest_time_step(sc->w, 1.0, 0, &dt, NULL, NULL), "JKR", "HERTZ");
+}
+
+START_TEST(jkr_needs_hertz)
+{
+    both_dims(setup_jkr_linear, bad_jkr_linear, fix_jkr_linear);
+}
+END_TEST
+
+START_TEST(rigid_pairs)
+{
+    both_dims(setup_rigid_a, bad_rigid_pair, fix_rigid_a);
+    both_dims(setup_rigid_c_d, bad_rigid_pair, fix_rigid_d);
+}
+END_TEST
+
 /* ------------------------------------------------------------------------ */
 /* Time-step suggestion                                                       */
 
@@ -2471,6 +2575,8 @@ int main(void)
     tcase_add_test(tc, reads);
     tcase_add_test(tc, no_contact_model);
     tcase_add_test(tc, no_contact_model_with_wall);
+    tcase_add_test(tc, rigid_pairs);
+    tcase_add_test(tc, jkr_needs_hertz);
     tcase_add_test(tc, suggest_time_step);
     tcase_add_test(tc, progress_callback);
     tcase_add_test(tc, vtk_output);

@@ -20,7 +20,7 @@
  * demill_drum_spectrum() reads the same 48 counters, the drum records no
  * impacts (format 1 has none: DEMILL_ERR_INVALID_VALUE), 500 more steps run
  * and leave every counter at least what it was (counters only count up),
- * and the world saves and reloads in today's format, 3. */
+ * and the world saves and reloads in today's format, 4. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

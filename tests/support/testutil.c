@@ -123,11 +123,17 @@ demill_world *dm_test_chain(int n, double fraction, demill_id *ids)
 dm_collision dm_test_bounce(demill_world *w, demill_id mat, double r, double v0, double dt,
                             double phase)
 {
+    return dm_test_bounce_on(w, mat, mat, r, v0, dt, phase);
+}
+
+dm_collision dm_test_bounce_on(demill_world *w, demill_id mat, demill_id wall_mat, double r,
+                               double v0, double dt, double phase)
+{
     const double gap = (3.0 + phase) * v0 * dt;
     double x[3] = {r + gap, 0, 0}, v[3] = {-v0, 0, 0}, origin[3] = {0, 0, 0}, n[3] = {1, 0, 0};
     demill_id ids[1], plane;
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
-    DM_OK(w, demill_wall_add_plane(w, mat, origin, n, &plane));
+    DM_OK(w, demill_wall_add_plane(w, wall_mat, origin, n, &plane));
     DM_OK(w, demill_particles_add(w, mat, 1, x, &r, v, 0, ids));
     const dm_collision o = measure(w, ids, 1, r, v0, dt, gap);
     DM_OK(w, demill_particles_remove(w, 1, ids));

@@ -98,6 +98,9 @@ demill_world *dm_test_chain(int n, double fraction, demill_id *ids);
  * returns. The sphere and the plane are removed afterwards. */
 dm_collision dm_test_bounce(demill_world *w, demill_id mat, double r, double v0, double dt,
                             double phase);
+/* The same with a plane of material wall_mat. */
+dm_collision dm_test_bounce_on(demill_world *w, demill_id mat, demill_id wall_mat, double r,
+                               double v0, double dt, double phase);
 
 /* A sphere of material mat and radius r moving at v0 along x hits a fixed
  * sphere of the same size and material head-on, from a gap that closes

@@ -203,7 +203,7 @@ static void scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t
     const int D = w->dim;
     const dm_particles *P = &w->p;
     const double *x = P->x, *r = P->r, *xi = P->x + D * i;
-    const double ri = r[i] + w->skin;
+    const double ri = r[i] + w->skin + w->cohesion_reach;
     const dm_pairparam *row = w->ptab + P->mat[i] * w->nmat_tab;
     const bool fixed = dm_particle_fixed(P, i);
     uint32_t near[SCAN_BLOCK];
@@ -306,7 +306,7 @@ static void search_range(demill_world *w, void *arg, int t, uint32_t begin, uint
     const dm_particles *P = &w->p;
     const dm_pairparam *tab = w->ptab;
     const uint32_t nm = w->nmat_tab;
-    const double skin = w->skin;
+    const double skin = w->skin + w->cohesion_reach;
     for (uint32_t i = start[c0], i1 = start[cell]; i < i1; i++)
         for (uint32_t k = 0; k < w->nwalls && !dm_particle_fixed(P, i); k++) {
             const dm_wall *wall = &w->walls[k];
@@ -414,7 +414,10 @@ demill_status dm_nlist_build(demill_world *w)
             rmax = P->r[i];
     }
     w->skin = w->skin_fraction * rmax;
-    double h = 2.0 * rmax + w->skin;
+    /* a cohesive contact that exists reaches past touching: its pairs are
+     * listed that much further apart */
+    w->cohesion_reach = dm_cohesion_reach(w, rmax);
+    double h = 2.0 * rmax + w->skin + w->cohesion_reach;
     if (!(h > 0.0))
         h = 1.0;
     /* counted in doubles, so that particles spread over any finite distance

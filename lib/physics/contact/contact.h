@@ -23,12 +23,18 @@ const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b);
 /* The effective laws and the value of every DM_PK_* key of pair (a, b). */
 void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws,
                     double v[DM_PK_COUNT]);
+/* A material's compliance (1 - ν²)/E, 0 for a rigid one. */
+double dm_material_compliance(const dm_material *m);
 /* The contact kernel of two materials' model, -1 for none. */
 int dm_pair_kernel(const demill_world *w, uint32_t a, uint32_t b);
 /* Rebuilds the resolved pair table if anything changed, and (if asked)
  * checks that every pair of materials that may touch has a model. Leaves
  * the world unchanged when it fails. */
 demill_status dm_resolve_pairs(demill_world *w, bool require_models);
+/* How far past touching the cohesive pairs that can meet interact, at
+ * most, with particles of radius at most rmax (0 without cohesion): the
+ * neighbour search's extra reach. */
+double dm_cohesion_reach(const demill_world *w, double rmax);
 /* The damping ratio ξ that gives restitution e (restitution.c). */
 double dm_damping_ratio(double e, int clamp);
 

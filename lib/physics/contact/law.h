@@ -7,7 +7,8 @@
  * switched off costs nothing. Queries call it with run-time choices.
  *
  * Conventions: body a and body b (a particle or a wall), unit normal n from a
- * to b, overlap delta > 0, relative velocity of b with respect to a at the
+ * to b, overlap delta > 0 (or, for a cohesive contact that exists, above
+ * -dm_law_range()), relative velocity of b with respect to a at the
  * contact point vc, relative angular velocity wrel = ω_a - ω_b. The law
  * returns the normal force magnitude fn on b along n, the tangential force
  * ft on b and the rolling torque mr on a; a receives -(fn n + ft) and b
@@ -19,6 +20,7 @@
 #include <math.h>
 
 #include "physics/contact/plastic.h"
+#include "physics/contact/cohesion.h"
 #include "physics/state/state.h"
 
 #define DM_INLINE static inline __attribute__((always_inline))
@@ -164,10 +166,18 @@ DM_INLINE double dm_law_flip(dm_laws l, int dim, int slot)
 }
 
 /* How far apart (as a negative overlap) a pair whose contact exists still
- * interacts (cohesion's reach), 0 for a law without cohesion. */
+ * interacts (cohesion's reach), 0 for a law without cohesion: the JKR neck
+ * breaks at δ_c, the liquid bridge at its rupture distance (cohesion.h).
+ * Whether the contact exists is the pair's `on` flag: set when it touches
+ * (δ > 0), kept while it is within this range, carried over neighbour
+ * rebuilds, refinement iterates and checkpoints, so that cohesion needs no
+ * history of its own. */
 DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar)
 {
-    (void)cohesion, (void)pp, (void)rstar;
+    if (cohesion == DEMILL_COHESION_JKR)
+        return dm_jkr_reach(rstar, pp->e_star, pp->adhesion);
+    if (cohesion == DEMILL_COHESION_CAPILLARY)
+        return dm_capillary_reach(pp->contact_angle, pp->liquid_volume);
     return 0.0;
 }
 
@@ -195,18 +205,24 @@ DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar
  * over contacts vectorise. Values computed for the outcome not taken may be
  * infinite or NaN; they are discarded. */
 DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, const int RL,
-                      const int CL, const dm_pairparam *pp, const double *n, double delta, const double *vc,
+                      const int CL, const dm_pairparam *pp, const double *n, double delta,
+                      const double *vc,
                       const double *dc, const double *wrel, const double *wd, double ir,
                       double rstar, double mstar, double dt_hist, double reach, int first,
                       const double *hin, double *hout, dm_law_out *o)
 {
     const int W = D == 3 ? 3 : 1;
     const int advance = dt_hist > 0.0;
+    /* cohesion (docs/physics.md, Cohesion): a contact that exists may be
+     * apart, δ < 0; the solids' laws see the overlap δ⁺ = max(δ, 0), and a
+     * liquid bridge across a gap touches nothing solid */
+    const double dsol = CL != DEMILL_COHESION_NONE && delta < 0.0 ? 0.0 : delta;
+    const int solid = CL != DEMILL_COHESION_CAPILLARY || delta > 0.0;
 
     /* normal law (§2): elastic force and contact stiffness S = dF/dδ */
     double fel, stiff, sq = 0.0, plastic = 0.0;
     if (NL == DEMILL_NORMAL_LINEAR) {
-        fel = pp->kn * delta;
+        fel = pp->kn * dsol;
         stiff = pp->kn;
     } else if (dm_normal_plastic(NL)) {
         /* the elasto-plastic laws (contact/plastic.h): the force on the
@@ -214,19 +230,35 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
          * work; the history δ_max (and the multi-path law's onset) */
         const int HN = dm_law_off_normal(NL, DL, TL, D);
         dm_plastic_out po;
-        dm_plastic_law(NL, pp, rstar, delta, hin + HN, &po);
+        dm_plastic_law(NL, pp, rstar, dsol, hin + HN, &po);
         fel = po.f;
         stiff = po.stiff;
-        sq = sqrt(rstar * delta);
+        sq = sqrt(rstar * dsol);
         plastic = advance ? po.diss : 0.0;
         hout[HN] = advance ? po.dmax : hin[HN];
         if (NL == DEMILL_NORMAL_PLASTIC_PATHS)
             hout[HN + 1] = advance ? po.onset : hin[HN + 1];
     } else {
-        sq = sqrt(rstar * delta);
-        fel = (4.0 / 3.0) * pp->e_star * sq * delta;
+        sq = sqrt(rstar * dsol);
+        fel = (4.0 / 3.0) * pp->e_star * sq * dsol;
         stiff = 2.0 * pp->e_star * sq;
     }
+    /* the cohesive force: JKR's force of the contact radius a(δ) less the
+     * Hertz force of δ⁺ (whose energy is stored as Hertz's), the contact's
+     * stiffness then 2E* a and Mindlin's √(R* δ) its radius a (Thornton and
+     * Yin 1991); or the bridge's attraction at the gap */
+    double fcoh = 0.0;
+    if (CL == DEMILL_COHESION_JKR) {
+        const double a = dm_jkr_radius(delta, rstar, pp->e_star, pp->adhesion);
+        double fh, fad;
+        dm_jkr_force(a, rstar, pp->e_star, pp->adhesion, &fh, &fad);
+        fcoh = fh + fad - fel;
+        sq = a;
+        stiff = 2.0 * pp->e_star * a;
+    }
+    if (CL == DEMILL_COHESION_CAPILLARY)
+        fcoh = dm_capillary_force(dsol - delta, rstar, pp->surface_tension, pp->contact_angle,
+                                  pp->liquid_volume);
     double vn = 0.0;
     for (int c = 0; c < D; c++)
         vn += vc[c] * n[c];
@@ -239,6 +271,8 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
         root_ms = sqrt(mstar * stiff);
         cn = pp->dcoef * root_ms;
     }
+    if (CL == DEMILL_COHESION_CAPILLARY)
+        cn = solid ? cn : 0.0;
     const int HT = dm_law_tangential_size(TL, D); /* exit slots: last force, overlap */
     double vnd = vn; /* the normal velocity the dashpot sees */
     if (dm_law_exit(NL, DL)) {
@@ -271,15 +305,22 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
     }
     if (dm_law_exit(NL, DL)) {
         hout[HT] = advance ? fn_now : hin[HT];
-        hout[HT + 1] = advance ? delta : hin[HT + 1];
+        hout[HT + 1] = advance ? dsol : hin[HT + 1];
     }
-    o->fn = fn;
+    /* the cohesive force joins after the clamp, which keeps the dashpot from
+     * pulling but not the cohesion; the work done against it is booked
+     * apart. Friction and rolling resistance are capped by the solids'
+     * load: the contact force, or for JKR its sum with twice the pull-off
+     * force (Thornton and Yin 1991), positive while the neck holds. */
+    const double load =
+        CL == DEMILL_COHESION_JKR ? fn + fcoh + 2.0 * dm_jkr_pull_off(rstar, pp->adhesion) : fn;
+    o->fn = CL != DEMILL_COHESION_NONE ? fn + fcoh : fn;
     o->fel = fel;
     o->diss_normal = -(fn - fel) * vnd * dt_hist;
     o->diss_tangential = o->diss_friction = o->diss_rolling = 0.0;
     o->diss_plastic = plastic;
-    o->diss_rolling_viscous = o->work_cohesion = 0.0;
-    (void)CL;
+    o->diss_rolling_viscous = 0.0;
+    o->work_cohesion = -fcoh * vn * dt_hist;
 
     /* tangential law (§4) */
     double vt[3], dt_rate[3], dn = 0.0;
@@ -290,7 +331,7 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
     }
     for (int c = 0; c < D; c++)
         dt_rate[c] = dc[c] - dn * n[c];
-    const double cap = pp->mu * fabs(fn);
+    const double cap = pp->mu * fabs(load);
     if (TL == DEMILL_TANGENTIAL_COULOMB) {
         double vt2 = 0.0;
         for (int c = 0; c < D; c++)
@@ -361,6 +402,8 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
         for (int c = 0; c < NS; c++) {
             ftr[c] *= scale;
             xi[c] = slip ? -ftr[c] * ikt : xi[c];
+            if (CL == DEMILL_COHESION_CAPILLARY) /* across a gap the spring lets go */
+                xi[c] = solid ? xi[c] : 0.0;
             work -= ftr[c] * vtl[c] * dt_hist;
             e_new += xi[c] * xi[c];
             hout[c] = advance ? xi[c] : hin[c];
@@ -392,7 +435,7 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
             w2 += wrel[c] * wrel[c];
         const double wm = sqrt(w2);
         const double mr = pp->roll_reg * rstar * rstar * sqrt(mstar * stiff) * wm;
-        const double mcap = pp->mu_r * rstar * fabs(fn);
+        const double mcap = pp->mu_r * rstar * fabs(load);
         const double mm = mr > mcap ? mcap : mr, scale = w2 > 0.0 ? mm / wm : 0.0;
         for (int c = 0; c < W; c++)
             o->mr[c] = -scale * wrel[c];

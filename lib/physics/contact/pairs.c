@@ -6,7 +6,7 @@
 
 #include "base/status.h"
 #include "physics/contact/contact.h"
-#include "physics/contact/plastic.h"
+#include "physics/contact/law.h"
 
 const dm_pair_user *dm_pair_find(const demill_world *w, uint32_t a, uint32_t b)
 {
@@ -30,7 +30,12 @@ void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws
     v[DM_PK_RESTITUTION] = 0.5 * (ma->restitution + mb->restitution);
     v[DM_PK_FRICTION] = 0.5 * (ma->friction + mb->friction);
     v[DM_PK_ROLLING_FRICTION] = 0.5 * (ma->rolling_friction + mb->rolling_friction);
-    v[DM_PK_NORMAL_STIFFNESS] = ma->stiffness * mb->stiffness / (ma->stiffness + mb->stiffness);
+    /* in series; a rigid material's k is infinite, so the other's remains
+     * (two rigid ones, which may not touch, as if deformable: see series()) */
+    v[DM_PK_NORMAL_STIFFNESS] = ma->rigid == mb->rigid
+                                    ? ma->stiffness * mb->stiffness / (ma->stiffness + mb->stiffness)
+                                : ma->rigid ? mb->stiffness
+                                            : ma->stiffness;
     v[DM_PK_VISCOUS] = 0;
     v[DM_PK_KT_RATIO] = 2.0 / 7.0;
     v[DM_PK_CT_FACTOR] = 1;
@@ -44,6 +49,13 @@ void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws
         demill_param_bounds(DEMILL_PAIR_PLASTIC_FIT_C0 + k, NULL, NULL, &v[DM_PK_FIT_C0 + k]);
     v[DM_PK_ROLLING_STIFFNESS] = 0;
     v[DM_PK_ROLLING_DAMPING] = 0.3;
+    /* the work of adhesion of two surfaces from their surface energies, by
+     * the geometric-mean combining relation (Israelachvili 2011,
+     * Intermolecular and Surface Forces, 3rd ed.): 2γ for one */
+    v[DM_PK_ADHESION_WORK] = 2.0 * sqrt(ma->surface_energy * mb->surface_energy);
+    v[DM_PK_LIQUID_VOLUME] = 1e-12;
+    v[DM_PK_SURFACE_TENSION] = 0.072;
+    v[DM_PK_CONTACT_ANGLE] = 0;
     *laws = (dm_laws){0, 0, 0, 0, 0};
     if (!u)
         return;
@@ -53,14 +65,29 @@ void dm_pair_values(const demill_world *w, uint32_t a, uint32_t b, dm_laws *laws
             v[k] = u->value[k];
 }
 
-/* E* and G* (docs/physics.md, notation). */
+double dm_material_compliance(const dm_material *m)
+{
+    return m->rigid != 0 ? 0.0 : (1 - m->poisson * m->poisson) / m->youngs;
+}
+
+/* The sum of two materials' compliances ca, cb (rigid: 0) in series. Two
+ * rigid materials, which may not touch (dm_resolve_pairs() refuses them),
+ * are summed as if deformable (ca, cb then the deformable values), so that
+ * their pair's values stay finite and unused. */
+static double series(const dm_material *ma, const dm_material *mb, double ca, double cb)
+{
+    const bool ra = ma->rigid != 0, rb = mb->rigid != 0;
+    return ra == rb ? ca + cb : ra ? cb : ca;
+}
+
+/* E* and G* (docs/physics.md, notation), a rigid material's compliance 0. */
 static void elastic_moduli(const dm_material *ma, const dm_material *mb, double *e_star,
                            double *g_star)
 {
-    *e_star = 1.0 / ((1 - ma->poisson * ma->poisson) / ma->youngs +
-                     (1 - mb->poisson * mb->poisson) / mb->youngs);
-    *g_star = 1.0 / (2 * (2 - ma->poisson) * (1 + ma->poisson) / ma->youngs +
-                     2 * (2 - mb->poisson) * (1 + mb->poisson) / mb->youngs);
+    *e_star = 1.0 / series(ma, mb, (1 - ma->poisson * ma->poisson) / ma->youngs,
+                           (1 - mb->poisson * mb->poisson) / mb->youngs);
+    *g_star = 1.0 / series(ma, mb, 2 * (2 - ma->poisson) * (1 + ma->poisson) / ma->youngs,
+                           2 * (2 - mb->poisson) * (1 + mb->poisson) / mb->youngs);
 }
 
 static int laws_kernel(const demill_world *w, dm_laws laws)
@@ -102,6 +129,10 @@ static void pair_resolve(const demill_world *w, uint32_t a, uint32_t b, dm_pairp
         pp->fit[k] = v[DM_PK_FIT_C0 + k];
     pp->kr = v[DM_PK_ROLLING_STIFFNESS];
     pp->eta_r = v[DM_PK_ROLLING_DAMPING];
+    pp->adhesion = v[DM_PK_ADHESION_WORK];
+    pp->liquid_volume = v[DM_PK_LIQUID_VOLUME];
+    pp->surface_tension = v[DM_PK_SURFACE_TENSION];
+    pp->contact_angle = v[DM_PK_CONTACT_ANGLE];
 }
 
 /* Rebuilds the resolved pair table if anything changed, and (if asked)
@@ -116,14 +147,26 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
             for (uint32_t b = 0; b < w->nmat; b++) {
                 if (!w->mat_particles[b] && !w->mat_walls[b])
                     continue;
+                const char *kind =
+                    w->mat_walls[b] && !w->mat_particles[b] ? "particle-wall" : "particle-particle";
+                if (w->mats[a].rigid != 0 && w->mats[b].rigid != 0) {
+                    /* no finite stiffness: refused if they can touch, and
+                     * needs no model if they cannot (a lone particle of a
+                     * rigid material without walls of it) */
+                    if (w->mat_walls[b] || w->mat_particles[b] > (b == a))
+                        return dm_fail(w, DEMILL_ERR_NO_CONTACT_MODEL,
+                                       "materials %u and %u (%s) are both rigid "
+                                       "(DEMILL_MATERIAL_RIGID): their contact has no finite "
+                                       "stiffness; make one of them deformable",
+                                       a, b, kind);
+                    continue;
+                }
                 const dm_pair_user *u = dm_pair_find(w, a, b);
                 if (!u || u->normal == DEMILL_NORMAL_NONE)
                     return dm_fail(w, DEMILL_ERR_NO_CONTACT_MODEL,
                                    "no contact model for materials %u and %u (%s): set "
                                    "DEMILL_PAIR_NORMAL with demill_pair_set()",
-                                   a, b,
-                                   w->mat_walls[b] && !w->mat_particles[b] ? "particle-wall"
-                                                                            : "particle-particle");
+                                   a, b, kind);
                 static const char *const plastic[] = {"THORNTON", "WALTON_BRAUN",
                                                       "PLASTIC_PATHS"};
                 if (dm_normal_plastic(u->normal) && u->damping == DEMILL_DAMPING_RESTITUTION)
@@ -134,6 +177,11 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
                                    "restitution asked for: use DEMILL_DAMPING_NONE or "
                                    "DEMILL_DAMPING_VISCOUS",
                                    a, b, plastic[u->normal - DEMILL_NORMAL_THORNTON]);
+                if (u->cohesion == DEMILL_COHESION_JKR && u->normal != DEMILL_NORMAL_HERTZ)
+                    return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                                   "materials %u and %u (%s): JKR cohesion is a law of Hertz "
+                                   "contacts; set DEMILL_PAIR_NORMAL to DEMILL_NORMAL_HERTZ",
+                                   a, b, kind);
             }
         }
     }
@@ -174,4 +222,21 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
         w->nlist_valid = false;
     }
     return DEMILL_OK;
+}
+
+double dm_cohesion_reach(const demill_world *w, double rmax)
+{
+    double reach = 0.0;
+    const uint32_t nm = w->nmat_tab;
+    for (uint32_t a = 0; a < nm; a++)
+        for (uint32_t b = 0; b < nm; b++) {
+            const dm_pairparam *pp = &w->ptab[a * nm + b];
+            if (pp->kernel < 0 || !w->mat_particles[a] ||
+                !(w->mat_particles[b] || w->mat_walls[b]))
+                continue;
+            /* JKR's reach grows with R*, which is at most the largest radius */
+            const double r = dm_law_range(dm_kernel_laws(pp->kernel).cohesion, pp, rmax);
+            reach = r > reach ? r : reach;
+        }
+    return reach;
 }

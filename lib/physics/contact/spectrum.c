@@ -54,14 +54,6 @@ static void ore_impact(demill_world *w, uint32_t i, double energy)
     __atomic_fetch_add(count, 1, __ATOMIC_RELAXED); /* contacts end on every thread */
 }
 
-/* The compliance (1 - ν²)/E of a material, by which the energy a collision
- * dissipates is shared between its two bodies. */
-static double compliance(const demill_world *w, uint32_t mat)
-{
-    const dm_material *m = &w->mats[mat];
-    return (1.0 - m->poisson * m->poisson) / m->youngs;
-}
-
 void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall, double energy)
 {
     const dm_spectrum *sp = &w->drum.spectrum;
@@ -89,7 +81,10 @@ void dm_spectrum_record(demill_world *w, uint32_t i, uint32_t j, int wall, doubl
     const uint32_t ore = sp->ore - 1, mi = w->p.mat[i], mj = wl ? wl->material : w->p.mat[j];
     if (mi != ore && (wl || mj != ore))
         return;
-    const double ci = compliance(w, mi), cj = compliance(w, mj);
+    /* the energy is shared between the two bodies by their compliances (a
+     * rigid one takes none) */
+    const double ci = dm_material_compliance(&w->mats[mi]),
+                 cj = dm_material_compliance(&w->mats[mj]);
     if (mi == ore)
         ore_impact(w, i, energy * ci / (ci + cj));
     if (!wl && mj == ore)

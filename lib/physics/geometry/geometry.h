@@ -6,6 +6,14 @@
 
 #include "physics/state/state.h"
 
+/* The distance a wall's face (a finite wall's, a mesh's element) reports
+ * where another face owns the closest point (a cap beyond its rim, the
+ * cylinder's rim over a cap, the element that holds a mesh contact): far
+ * beyond any particle's reach, cohesion's included, and small enough that
+ * the contact point and the wall velocity there, which are computed from
+ * it, keep their precision (dm_wgeom_range). */
+#define DM_FACE_ELSEWHERE 1e6
+
 /* A free wall slot (cleared), growing the array if needed; DM_FREE when out
  * of memory. */
 uint32_t dm_wall_slot_alloc(demill_world *w);

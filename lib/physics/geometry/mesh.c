@@ -826,14 +826,20 @@ void dm_wgeom_meshes(demill_world *w, uint32_t begin, uint32_t end, int carry)
                 const double *nt = m->nrm + 3 * (size_t)b->t[p];
                 const double h = plane_distance(m, b->t[p], V);
                 int valid = 0;
-                if (fabs(h) >= r) {
+                if (fabs(h) >= r + w->cohesion_reach) {
                     d = fabs(h);
                     for (int c = 0; c < 3; c++)
                         nm[c] = h >= 0.0 ? -nt[c] : nt[c];
                 } else {
                     valid = element_contact(m, b->t[p], V, &d, nm);
                 }
-                const double delta = r - d, stored = valid || delta <= 0.0 ? delta : 0.0;
+                /* an element that is not the contact: none, and for a
+                 * cohesive pair, which may interact apart, far apart */
+                const double delta = r - d,
+                             stored = valid ? delta
+                                      : delta > 0.0 ? 0.0
+                                      : w->cohesion_reach > 0.0 ? -DM_FACE_ELSEWHERE
+                                                                : delta;
                 if (!(stored > 0.0) && !b->on[p]) {
                     /* apart, and apart before: the forces read only its overlap */
                     w->wg.delta[g0 + p] = stored;

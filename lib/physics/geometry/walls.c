@@ -253,13 +253,6 @@ void dm_walls_advance(demill_world *w, double time)
     }
 }
 
-/* The distance a finite wall's face reports where another face owns the
- * closest point (a cap beyond its rim, the cylinder's rim over a cap): far
- * beyond any particle's reach, and small enough that the contact point and
- * the wall velocity there, which are computed from it, keep their precision
- * (dm_wgeom_range). */
-#define DM_FACE_ELSEWHERE 1e6
-
 /* x in a free wall's reference frame, relative to its point: rot^T (x - c)
  * - (p0 - c0). For a wall that has not turned, with its point as its
  * centre, x - p as a plane computes it, bit for bit. */

@@ -20,6 +20,8 @@ typedef struct dm_material {
     double density, youngs, poisson, stiffness, restitution, friction, rolling_friction;
     double yield_stress; /* 0: does not yield */
     double local_damping; /* α of local damping (integrate/integrate.c) */
+    double rigid; /* DEMILL_MATERIAL_RIGID: 1 rigid, 0 deformable */
+    double surface_energy; /* DEMILL_MATERIAL_SURFACE_ENERGY, J/m² */
 } dm_material;
 
 /* Derived pair keys the user may override; bit i of dm_pair_user.set. */
@@ -27,7 +29,10 @@ enum {
     DM_PK_RESTITUTION, DM_PK_FRICTION, DM_PK_ROLLING_FRICTION, DM_PK_NORMAL_STIFFNESS,
     DM_PK_VISCOUS, DM_PK_KT_RATIO, DM_PK_CT_FACTOR, DM_PK_COULOMB_REG, DM_PK_ROLLING_REG,
     DM_PK_CLAMP, DM_PK_YIELD_PRESSURE, DM_PK_FIT_C0, DM_PK_FIT_C1, DM_PK_FIT_C2, DM_PK_FIT_H,
-    DM_PK_ROLLING_STIFFNESS, DM_PK_ROLLING_DAMPING, DM_PK_COUNT
+    DM_PK_ROLLING_STIFFNESS, DM_PK_ROLLING_DAMPING,
+    /* cohesion's */
+    DM_PK_ADHESION_WORK, DM_PK_LIQUID_VOLUME, DM_PK_SURFACE_TENSION, DM_PK_CONTACT_ANGLE,
+    DM_PK_COUNT
 };
 /* The keys checkpoints of formats 1 to 3 hold (4 says how many it holds). */
 #define DM_PK_COUNT_V2 10
@@ -81,6 +86,9 @@ typedef struct dm_pairparam {
     double fit[4];       /* the multi-path law's c0, c1, c2 and H (contact/plastic.h) */
     double kr;           /* rolling spring's stiffness (0: 2.25 S μ_r² R*² per contact) */
     double eta_r;        /* rolling dashpot's damping ratio */
+    /* cohesion (contact/cohesion.h): JKR's work of adhesion; the liquid
+     * bridge's surface tension, contact angle and volume */
+    double adhesion, surface_tension, contact_angle, liquid_volume;
 } dm_pairparam;
 
 /* ---- walls (geometry/walls.c) ------------------------------------------- */
