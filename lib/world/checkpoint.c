@@ -97,9 +97,10 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
                                  the finite walls, harmonic motion and surface
                                  velocity (WFIN), the bodies (BODY), the drum's
                                  translation (DRMV), the loads the walls record
-                                 (LOAD); 4 the number of fields per material and of
-                                 values per material pair (MATS), and the yield
-                                 stress and plastic laws' keys they hold */
+                                 (LOAD); 4 the extended laws' dissipation terms
+                                 (WRLD), the cohesion law, the number of fields
+                                 per material and of values per material pair
+                                 (MATS), and the number of contact lists (CONT) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -664,7 +665,7 @@ static void transfer(io *s, demill_world *w)
     double *const tally[] = {&ty->diss_normal,  &ty->diss_tangential,      &ty->diss_friction,
                              &ty->diss_rolling, &ty->wall_work,            &ty->diss_plastic,
                              &ty->diss_rolling_viscous, &ty->work_cohesion, &ty->diss_local};
-    for (int k = 0; k < (s->format < 3 ? 5 : 9); k++)
+    for (int k = 0; k < (s->format < 4 ? 5 : 9); k++)
         io_f64(s, tally[k], 1);
 
     io_section(s, "MATS");
@@ -706,7 +707,7 @@ static void transfer(io *s, demill_world *w)
         io_u32(s, &u->b, 1);
         int *const law[] = {&u->normal, &u->damping, &u->tangential, &u->rolling,
                             &u->cohesion};
-        for (int l = 0; l < (s->format < 3 ? 4 : 5); l++)
+        for (int l = 0; l < (s->format < 4 ? 4 : 5); l++)
             io_int(s, law[l]);
         io_f64(s, u->value, pkeys);
         io_u32(s, &u->set, 1);
@@ -762,10 +763,10 @@ static void transfer(io *s, demill_world *w)
 
     io_section(s, "CONT");
     /* the lists of the kernels up to the last that holds pairs (before
-     * format 3, of the fast ones, which were all there were); the others
+     * format 4, of the fast ones, which were all there were); the others
      * are empty */
     uint32_t lists = DM_FAST_KERNELS;
-    if (s->format >= 3) {
+    if (s->format >= 4) {
         for (lists = s->reading ? 0 : (uint32_t)w->nkern; lists > DM_FAST_KERNELS &&
                                                          !w->pp.b[lists - 1].n &&
                                                          !w->pw.b[lists - 1].n;)
