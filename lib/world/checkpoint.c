@@ -97,11 +97,10 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
                                  the finite walls, harmonic motion and surface
                                  velocity (WFIN), the bodies (BODY), the drum's
                                  translation (DRMV), the loads the walls record
-                                 (LOAD); 4 the extended laws (a pair's cohesion
-                                 law, the energy terms 19-23, the lists of the
-                                 extended kernels) and the number of fields per
-                                 material and of values per material pair
-                                 (MATS), with the keys they added */
+                                 (LOAD); 4 the extended laws' dissipation terms
+                                 (WRLD), the cohesion law, the number of fields
+                                 per material and of values per material pair
+                                 (MATS), and the number of contact lists (CONT) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 

@@ -227,7 +227,8 @@ DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, con
     } else if (dm_normal_plastic(NL)) {
         /* the elasto-plastic laws (contact/plastic.h): the force on the
          * current branch, its unloading slope for S, the step's plastic
-         * work; the history δ_max (and the multi-path law's onset) */
+         * work; the history δ_max (and the multi-path law's onset). They
+         * branch on the contact's state: only the generic kernel runs them */
         const int HN = dm_law_off_normal(NL, DL, TL, D);
         dm_plastic_out po;
         dm_plastic_law(NL, pp, rstar, dsol, hin + HN, &po);
