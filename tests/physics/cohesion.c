@@ -482,6 +482,51 @@ START_TEST(bond_survives_rebuilds_and_copies)
 }
 END_TEST
 
+/* A bridge's volume raised eightfold while it holds a sphere across a gap
+ * to a mesh (3D, over the shared edge): its reach doubles, the lists are
+ * built again at the next step (the mesh resolves its elements as far as
+ * the reach), and the bridge holds, with the force of the new volume, to
+ * its new rupture distance, beyond the old one. */
+START_TEST(longer_reach_mid_bond)
+{
+    impact c = capillary_case(3, 2);
+    demill_id ids[1];
+    int n, raised = 0, beyond = 0;
+    demill_world *w = impact_world(&c, ids, &n);
+    int bond = 0;
+    for (int k = 0; k < 100000; k++) {
+        double nb0, nb1, delta, f;
+        DM_OK(w, demill_world_get(w, DEMILL_WORLD_NEIGHBOUR_REBUILDS, &nb0));
+        DM_OK(w, demill_world_step(w, 1));
+        DM_OK(w, demill_world_get(w, DEMILL_WORLD_NEIGHBOUR_REBUILDS, &nb1));
+        if (raised == 1) {
+            ck_assert_msg(nb1 == nb0 + 1, "no rebuild after the reach grew");
+            raised = 2;
+        }
+        sample(&c, w, ids, n, &delta, &f);
+        const double reach = bond_reach(&c);
+        bond = delta > 0 || (bond && delta > -reach);
+        const double want = bond ? bond_force(&c, delta) : 0.0;
+        ck_assert_msg(fabs(f - want) <= 1e-9 * fabs(bond_force(&c, 0.0)),
+                      "step %d, overlap %.9g m: force %.12g N, expected %.12g N", k, delta, f,
+                      want);
+        beyond |= raised && bond && delta < -0.6 * reach; /* beyond the old reach */
+        if (!raised && bond && delta < -0.5 * reach) {
+            demill_id mats[2]; /* the ball's and the plate's, in order of creation */
+            size_t nm;
+            DM_OK(w, demill_world_ids(w, DEMILL_KIND_MATERIAL, mats, 2, &nm));
+            c.volume *= 8;
+            DM_OK(w, demill_pair_set(w, mats[0], mats[1], DEMILL_PAIR_LIQUID_VOLUME, c.volume));
+            raised = 1;
+        }
+        if (!bond && delta < -reach)
+            break;
+    }
+    ck_assert(raised == 2 && beyond);
+    demill_world_destroy(w);
+}
+END_TEST
+
 /* A pile of 27 spheres (3D; 9 discs' worth of spheres in 2D) dropped on a
  * plane with every law on: Hertz, restitution damping (e = 0.5), Mindlin
  * friction (μ = 0.5), constant-torque rolling resistance (μ_r = 0.05) and
@@ -558,6 +603,7 @@ int main(void)
     tcase_add_loop_test(ti, capillary_impact, 0, 8);
     tcase_add_loop_test(ti, impacts_other_integrators, 0, 2);
     tcase_add_loop_test(ti, bond_survives_rebuilds_and_copies, 0, 4);
+    tcase_add_test(ti, longer_reach_mid_bond);
     tcase_add_loop_test(ti, pile_balance, 0, 4);
     suite_add_tcase(s, ti);
     return dm_test_run(s);
