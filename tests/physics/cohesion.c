@@ -482,6 +482,114 @@ START_TEST(bond_survives_rebuilds_and_copies)
 }
 END_TEST
 
+/* A bridge's volume raised eightfold while it holds a sphere across a gap
+ * to a mesh (3D, over the shared edge): its reach doubles, the lists are
+ * built again at the next step (the mesh resolves its elements as far as
+ * the reach), and the bridge holds, with the force of the new volume, to
+ * its new rupture distance, beyond the old one. */
+START_TEST(longer_reach_mid_bond)
+{
+    impact c = capillary_case(3, 2);
+    demill_id ids[1];
+    int n, raised = 0, beyond = 0;
+    demill_world *w = impact_world(&c, ids, &n);
+    int bond = 0;
+    for (int k = 0; k < 100000; k++) {
+        double nb0, nb1, delta, f;
+        DM_OK(w, demill_world_get(w, DEMILL_WORLD_NEIGHBOUR_REBUILDS, &nb0));
+        DM_OK(w, demill_world_step(w, 1));
+        DM_OK(w, demill_world_get(w, DEMILL_WORLD_NEIGHBOUR_REBUILDS, &nb1));
+        if (raised == 1) {
+            ck_assert_msg(nb1 == nb0 + 1, "no rebuild after the reach grew");
+            raised = 2;
+        }
+        sample(&c, w, ids, n, &delta, &f);
+        const double reach = bond_reach(&c);
+        bond = delta > 0 || (bond && delta > -reach);
+        const double want = bond ? bond_force(&c, delta) : 0.0;
+        ck_assert_msg(fabs(f - want) <= 1e-9 * fabs(bond_force(&c, 0.0)),
+                      "step %d, overlap %.9g m: force %.12g N, expected %.12g N", k, delta, f,
+                      want);
+        beyond |= raised && bond && delta < -0.6 * reach; /* beyond the old reach */
+        if (!raised && bond && delta < -0.5 * reach) {
+            demill_id mats[2]; /* the ball's and the plate's, in order of creation */
+            size_t nm;
+            DM_OK(w, demill_world_ids(w, DEMILL_KIND_MATERIAL, mats, 2, &nm));
+            c.volume *= 8;
+            DM_OK(w, demill_pair_set(w, mats[0], mats[1], DEMILL_PAIR_LIQUID_VOLUME, c.volume));
+            raised = 1;
+        }
+        if (!bond && delta < -reach)
+            break;
+    }
+    ck_assert(raised == 2 && beyond);
+    demill_world_destroy(w);
+}
+END_TEST
+
+/* A pile of 27 spheres (3D; 9 discs' worth of spheres in 2D) dropped on a
+ * plane with every law on: Hertz, restitution damping (e = 0.5), Mindlin
+ * friction (μ = 0.5), constant-torque rolling resistance (μ_r = 0.05) and
+ * cohesion, for 0.1 s: the balance DEMILL_ENERGY_TOTAL stays within 1e-3 of
+ * the energy that went through (every dissipation term and the work
+ * against cohesion, in magnitude), and every term is finite. */
+START_TEST(pile_balance)
+{
+    const int dim = 2 + _i / 2, law = _i % 2 ? DEMILL_COHESION_CAPILLARY : DEMILL_COHESION_JKR;
+    demill_world *w;
+    ck_assert_int_eq(demill_world_create(dim, &w), DEMILL_OK);
+    demill_id m;
+    DM_OK(w, demill_material_create(w, &m));
+    DM_OK(w, demill_material_set(w, m, DEMILL_MATERIAL_DENSITY, RHO));
+    DM_OK(w, demill_material_set(w, m, DEMILL_MATERIAL_YOUNGS_MODULUS, E));
+    DM_OK(w, demill_material_set(w, m, DEMILL_MATERIAL_SURFACE_ENERGY, 0.05));
+    const int laws[][2] = {{DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ},
+                           {DEMILL_PAIR_DAMPING, DEMILL_DAMPING_RESTITUTION},
+                           {DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN},
+                           {DEMILL_PAIR_ROLLING, DEMILL_ROLLING_CONSTANT_TORQUE},
+                           {DEMILL_PAIR_COHESION, law}};
+    for (int k = 0; k < 5; k++)
+        DM_OK(w, demill_pair_set(w, m, m, laws[k][0], laws[k][1]));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_RESTITUTION, 0.5));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_ROLLING_FRICTION, 0.05));
+    const double origin[3] = {0, 0, 0}, up[3] = {0, 1, 0};
+    demill_id floor;
+    DM_OK(w, demill_wall_add_plane(w, m, origin, up, &floor));
+    double x[81], r[27];
+    int n = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < (dim == 3 ? 3 : 1); k++, n++) {
+                x[3 * n] = 2.1 * R * i + 0.1 * R * j;
+                x[3 * n + 1] = R * (1.5 + 2.2 * j);
+                x[3 * n + 2] = dim == 3 ? 2.1 * R * k - 0.1 * R * i : 0.0;
+                r[n] = R;
+            }
+    DM_OK(w, demill_particles_add(w, m, (size_t)n, x, r, NULL, 0, NULL));
+    double dt;
+    DM_OK(w, demill_world_suggest_time_step(w, 0, 0, &dt, NULL, NULL));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+    double total0, total1, dissipated, cohesion;
+    DM_OK(w, demill_world_energy(w, DEMILL_ENERGY_TOTAL, &total0));
+    double through = 0.0;
+    for (double t = 0; t < 0.1; t += 1000 * dt) {
+        double before;
+        DM_OK(w, demill_world_energy(w, DEMILL_ENERGY_COHESION, &before));
+        DM_OK(w, demill_world_step(w, 1000));
+        DM_OK(w, demill_world_energy(w, DEMILL_ENERGY_COHESION, &cohesion));
+        through += fabs(cohesion - before);
+    }
+    DM_OK(w, demill_world_energy(w, DEMILL_ENERGY_TOTAL, &total1));
+    DM_OK(w, demill_world_energy(w, DEMILL_ENERGY_DISSIPATED, &dissipated));
+    through += dissipated;
+    ck_assert(isfinite(total1) && dissipated > 0.0 && through > dissipated);
+    ck_assert_msg(fabs(total1 - total0) <= 1e-3 * through,
+                  "the balance moved by %g J of %g J through (%g dissipated)", total1 - total0,
+                  through, dissipated);
+    demill_world_destroy(w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("cohesion");
@@ -495,6 +603,8 @@ int main(void)
     tcase_add_loop_test(ti, capillary_impact, 0, 8);
     tcase_add_loop_test(ti, impacts_other_integrators, 0, 2);
     tcase_add_loop_test(ti, bond_survives_rebuilds_and_copies, 0, 4);
+    tcase_add_test(ti, longer_reach_mid_bond);
+    tcase_add_loop_test(ti, pile_balance, 0, 4);
     suite_add_tcase(s, ti);
     return dm_test_run(s);
 }

@@ -220,6 +220,12 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
         /* contact lists are grouped by kernel: start them afresh */
         dm_clist_clear(w);
         w->nlist_valid = false;
+    } else if (dm_cohesion_reach(w, w->skin / w->skin_fraction) >
+               w->cohesion_reach * (1.0 + 1e-12)) {
+        /* cohesion reaches further than the lists were built for (at the
+         * largest radius then, skin / skin fraction): build them again,
+         * carrying the contacts over */
+        w->nlist_valid = false;
     }
     return DEMILL_OK;
 }
