@@ -50,7 +50,7 @@ double dm_kernel_flip(int kernel, int dim, int slot)
 int dm_kernel_hist_size(int kernel, int dim)
 {
     dm_laws l = dm_kernel_laws(kernel);
-    return dm_law_hist_size(l.normal, l.damping, l.tangential, l.rolling, l.cohesion, dim);
+    return dm_law_hist_size(l.normal, l.damping, l.tangential, l.rolling, dim);
 }
 
 /* The forces and torques of particles p0 .. p1-1: gravity, then the

@@ -441,7 +441,7 @@ DM_INLINE void dm_chunk_laws(const int D, const int NL, const int DL, const int 
                              const int RL, const int CL, dm_chunk *restrict ch, uint32_t lanes,
                              const dm_pairparam *restrict tab, double dt_hist, double reach)
 {
-    const int HSL = dm_law_hist_size(NL, DL, TL, RL, CL, D);
+    const int HSL = dm_law_hist_size(NL, DL, TL, RL, D);
     const uint32_t n = lanes / DM_LANES * DM_LANES; /* = lanes (see dm_kin_fn) */
     for (uint32_t s = 0; s < n; s++) {
         dm_kin q;
@@ -461,7 +461,7 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
                            const int CL, dm_law_fn laws, dm_kernel_args *a)
 {
     const int S = D + 2 * (D == 3 ? 3 : 1);
-    const int HSL = dm_law_hist_size(NL, DL, TL, RL, CL, D), HSP = dm_law_tangential_size(TL, D);
+    const int HSL = dm_law_hist_size(NL, DL, TL, RL, D), HSP = dm_law_tangential_size(TL, D);
     const int EXIT = dm_law_exit(NL, DL), XL = dm_law_extended(NL, RL, CL);
     const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
     demill_world *w = a->w;
@@ -560,7 +560,7 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
                            const int CL, dm_law_fn laws, dm_kernel_args *a)
 {
     const int S = D + 2 * (D == 3 ? 3 : 1);
-    const int HSL = dm_law_hist_size(NL, DL, TL, RL, CL, D), HSP = dm_law_tangential_size(TL, D);
+    const int HSL = dm_law_hist_size(NL, DL, TL, RL, D), HSP = dm_law_tangential_size(TL, D);
     const int EXIT = dm_law_exit(NL, DL), XL = dm_law_extended(NL, RL, CL);
     const int SPIN = TL != DEMILL_TANGENTIAL_NONE;
     demill_world *w = a->w;

@@ -101,8 +101,9 @@ DM_INLINE int dm_law_exit(int normal, int damping)
     return normal == DEMILL_NORMAL_LINEAR && damping != DEMILL_DAMPING_NONE;
 }
 
-/* History doubles of the normal law's own state (plastic laws), of the
- * rolling law (its spring) and of the cohesion law. */
+/* History doubles of the normal law's own state (plastic laws) and of the
+ * rolling law (its spring). Cohesion keeps none: whether a bond holds is
+ * whether its contact is on. */
 DM_INLINE int dm_law_normal_size(int normal)
 {
     return dm_plastic_hist_size(normal);
@@ -117,16 +118,10 @@ DM_INLINE int dm_law_rolling_size(int rolling, int dim)
     return rolling == DEMILL_ROLLING_SPRING ? (dim == 3 ? 3 : 1) + 1 : 0;
 }
 
-DM_INLINE int dm_law_cohesion_size(int cohesion)
-{
-    (void)cohesion;
-    return 0;
-}
-
 /* A contact's history, in this order: the tangential law's, then (for laws
  * with the exit correction) the last normal force and overlap, then the
- * normal law's, the rolling law's and the cohesion law's; where each starts,
- * and the doubles in all. */
+ * normal law's and the rolling law's; where each starts, and the doubles in
+ * all. */
 DM_INLINE int dm_law_off_normal(int normal, int damping, int tangential, int dim)
 {
     return dm_law_tangential_size(tangential, dim) + 2 * dm_law_exit(normal, damping);
@@ -137,18 +132,10 @@ DM_INLINE int dm_law_off_rolling(int normal, int damping, int tangential, int di
     return dm_law_off_normal(normal, damping, tangential, dim) + dm_law_normal_size(normal);
 }
 
-DM_INLINE int dm_law_off_cohesion(int normal, int damping, int tangential, int rolling,
-                                  int dim)
+DM_INLINE int dm_law_hist_size(int normal, int damping, int tangential, int rolling, int dim)
 {
     return dm_law_off_rolling(normal, damping, tangential, dim) +
            dm_law_rolling_size(rolling, dim);
-}
-
-DM_INLINE int dm_law_hist_size(int normal, int damping, int tangential, int rolling,
-                               int cohesion, int dim)
-{
-    return dm_law_off_cohesion(normal, damping, tangential, rolling, dim) +
-           dm_law_cohesion_size(cohesion);
 }
 
 /* The factor on history slot `slot` of a particle-particle contact of laws
@@ -183,8 +170,10 @@ DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar
 
 /* D: dimension; NL, DL, TL, RL, CL: DEMILL_NORMAL_*, DEMILL_DAMPING_*,
  * DEMILL_TANGENTIAL_*, DEMILL_ROLLING_*, DEMILL_COHESION_* (compile-time
- * constants in the fast kernels, run-time values in the generic one). vc: relative velocity at the contact
- * point at the end of the step (drives dashpots and friction); dc: the rate
+ * constants in the fast kernels, run-time values in the generic one).
+ * delta: the overlap, negative for a cohesive contact across a gap. vc:
+ * relative velocity at the contact point at the end of the step (drives
+ * dashpots and friction); dc: the rate
  * of relative displacement over the step (drives the tangential spring).
  * wrel: ω_a - ω_b at the end of the step (the rolling laws' dashpots and
  * constant torque); wd: ω_a - ω_b over the step (the rolling spring); ir:
@@ -206,10 +195,9 @@ DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar
  * infinite or NaN; they are discarded. */
 DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, const int RL,
                       const int CL, const dm_pairparam *pp, const double *n, double delta,
-                      const double *vc,
-                      const double *dc, const double *wrel, const double *wd, double ir,
-                      double rstar, double mstar, double dt_hist, double reach, int first,
-                      const double *hin, double *hout, dm_law_out *o)
+                      const double *vc, const double *dc, const double *wrel, const double *wd,
+                      double ir, double rstar, double mstar, double dt_hist, double reach,
+                      int first, const double *hin, double *hout, dm_law_out *o)
 {
     const int W = D == 3 ? 3 : 1;
     const int advance = dt_hist > 0.0;
