@@ -250,8 +250,9 @@ DEMILL_API demill_status demill_grinding_set_appearance_energy(demill_grinding *
  *      lambda_ik = counts[i][k] / (N_i T)
  *
  *  lambda_ik the impacts per particle and second in energy bin k, E_k the
- *  bin's midpoint (edges[k] + edges[k+1]) / 2, K the impacts of the damage
- *  sequence (demill_grinding_set_damage_impacts(), 1 unless set),
+ *  bin's midpoint (edges[k] + edges[k+1]) / 2, K = lambda_ik t_d (rounded,
+ *  at least 1) the impacts of the bin a particle receives in the damage
+ *  time t_d (demill_grinding_set_damage_time(), 0 unless set: K = 1),
  *  F_i(E, K) the fraction of particles of the class's geometric mean size
  *  broken within K impacts of specific energy E, the survivors of each
  *  weakened by it (as demill_grinding_broken_fraction() gives it: Tavares
@@ -285,36 +286,38 @@ DEMILL_API demill_status demill_grinding_set_appearance_energy(demill_grinding *
  *          DEMILL_ERR_INVALID_VALUE (a count that does not match, edges not
  *          increasing, a negative count or particle number, impacts on a
  *          class without particles, time <= 0, no model set, the JKMRC
- *          model, or a breaking bin whose t10 is outside the model's
- *          t-family table) or DEMILL_ERR_OUT_OF_MEMORY. */
+ *          model, a breaking bin whose t10 is outside the model's
+ *          t-family table, or a bin with more than 1e6 impacts per particle
+ *          in the damage time) or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_grinding_rates_from_impacts(demill_grinding *grinding,
                                                             size_t classes, size_t bins,
                                                             const double *edges,
                                                             const double *counts,
                                                             const double *particles, double time);
 
-/** Sets K, the number of impacts in the damage sequence of
- *  demill_grinding_rates_from_impacts(): the rate of each energy bin is
- *  that at which a sequence of K impacts of its energy breaks particles that
- *  the impacts weaken (Tavares and King 2002): the fraction broken within
- *  K impacts over the time of the impacts survived. 1 (the default) gives
- *  the rate of single impacts on fresh particles, the hazard of a fresh
- *  charge; a larger K, up to the impacts of one energy that a particle
- *  receives while it is ground, counts the damage of the impacts before
- *  and the strength of the particles that survive them. The cost of
- *  the rates grows with K (a root-finding per impact and bin).
+/** Sets the damage time t_d of demill_grinding_rates_from_impacts(): the
+ *  rate of each energy bin is that at which the sequence of impacts of its
+ *  energy that a particle receives in t_d, K = lambda_ik t_d of them
+ *  (rounded, at least 1), breaks particles that the impacts weaken
+ *  (Tavares and King 2002): the fraction broken within the K impacts over
+ *  the time of the impacts survived. 0 (the default) makes every K 1: the
+ *  rate of single impacts on fresh particles, the hazard of a fresh charge.
+ *  The grinding time counts the damage of the impacts before and the
+ *  strength of the particles that survive them over the grind. The cost of
+ *  the rates grows with K (one root of the damage equation per impact and
+ *  bin).
  *  @param grinding the object.
- *  @param impacts  K, 1 to 100000.
- *  @return DEMILL_OK or DEMILL_ERR_INVALID_VALUE (impacts out of range). */
-DEMILL_API demill_status demill_grinding_set_damage_impacts(demill_grinding *grinding,
-                                                            uint32_t impacts);
+ *  @param time     t_d, s, >= 0.
+ *  @return DEMILL_OK, DEMILL_ERR_NOT_FINITE or DEMILL_ERR_INVALID_VALUE
+ *          (time < 0). */
+DEMILL_API demill_status demill_grinding_set_damage_time(demill_grinding *grinding, double time);
 
-/** Reads K, the number of impacts in the damage sequence of the rates.
- *  @param grinding     the object.
- *  @param[out] impacts receives K.
+/** Reads the damage time t_d of the rates.
+ *  @param grinding  the object.
+ *  @param[out] time receives t_d, s.
  *  @return DEMILL_OK or DEMILL_ERR_NULL_POINTER. */
-DEMILL_API demill_status demill_grinding_damage_impacts(const demill_grinding *grinding,
-                                                        uint32_t *impacts);
+DEMILL_API demill_status demill_grinding_damage_time(const demill_grinding *grinding,
+                                                     double *time);
 
 /** Extends the rates to the classes finer than the finest class with a
  *  rate, by Austin's size dependence of the specific rate of breakage

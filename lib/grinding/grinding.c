@@ -103,7 +103,6 @@ DEMILL_API demill_status demill_grinding_create(double top_size, uint32_t classe
     g->base.magic = DM_GRINDING_MAGIC;
     g->n = classes;
     g->top = top_size;
-    g->impacts = 1;
     *out = g;
     return DEMILL_OK;
 }
@@ -439,6 +438,7 @@ DEMILL_API demill_status demill_grinding_set_appearance_energy(demill_grinding *
 }
 
 #define DM_IMPACT_MAX_BINS 10000u
+#define DM_DAMAGE_MAX_IMPACTS 1000000.0 /* per particle and bin in the damage time */
 
 /* Checks the arguments of demill_grinding_rates_from_impacts(). */
 static demill_status check_impacts(const demill_grinding *g, const char *what, size_t classes,
@@ -520,10 +520,21 @@ DEMILL_API demill_status demill_grinding_rates_from_impacts(demill_grinding *g, 
             if (c == 0)
                 continue;
             double e = 0.5 * (edges[k] + edges[k + 1]), broken, survived;
+            double lambda = c / (particles[j] * time); /* per particle and second */
             /* the bin's impacts break F_K of the particles within a sequence
-             * of K, over the time of the impacts they survive to receive */
-            dm_tk_sequence(&g->ore, size, e, g->impacts, &broken, &survived);
-            double w = c / (particles[j] * time) * broken / survived;
+             * of the K a particle receives in the damage time, over the time
+             * of the impacts they survive to receive */
+            double impacts = fmax(1.0, round(lambda * g->damage_time));
+            if (impacts > DM_DAMAGE_MAX_IMPACTS) {
+                free(s);
+                free(b);
+                return FAIL(g, DEMILL_ERR_INVALID_VALUE,
+                            "%s, class %u, energy %g J/kg: %.6g impacts per particle in the "
+                            "damage time %g s, more than %g: shorten it",
+                            what, j, e, impacts, g->damage_time, DM_DAMAGE_MAX_IMPACTS);
+            }
+            dm_tk_sequence(&g->ore, size, e, (uint32_t)impacts, &broken, &survived);
+            double w = lambda * broken / survived;
             if (w == 0)
                 continue;
             double t10 = dm_ore_t10(&g->ore, size, e);
@@ -550,27 +561,25 @@ DEMILL_API demill_status demill_grinding_rates_from_impacts(demill_grinding *g, 
     return DEMILL_OK;
 }
 
-#define DM_DAMAGE_MAX_IMPACTS 100000u
-
-DEMILL_API demill_status demill_grinding_set_damage_impacts(demill_grinding *g, uint32_t impacts)
+DEMILL_API demill_status demill_grinding_set_damage_time(demill_grinding *g, double time)
 {
     CHECK(g);
-    if (impacts < 1 || impacts > DM_DAMAGE_MAX_IMPACTS)
-        return FAIL(g, DEMILL_ERR_INVALID_VALUE,
-                    "demill_grinding_set_damage_impacts: %u impacts, not 1 to %u", impacts,
-                    DM_DAMAGE_MAX_IMPACTS);
-    g->impacts = impacts;
+    const char *what = "demill_grinding_set_damage_time";
+    if (!isfinite(time))
+        return FAIL(g, DEMILL_ERR_NOT_FINITE, "%s: time is %g", what, time);
+    if (time < 0)
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE, "%s: time %g s, below 0", what, time);
+    g->damage_time = time;
     ok(g);
     return DEMILL_OK;
 }
 
-DEMILL_API demill_status demill_grinding_damage_impacts(const demill_grinding *g,
-                                                        uint32_t *impacts)
+DEMILL_API demill_status demill_grinding_damage_time(const demill_grinding *g, double *time)
 {
     CHECK(g);
-    if (!impacts)
-        return FAIL(g, DEMILL_ERR_NULL_POINTER, "demill_grinding_damage_impacts: impacts is NULL");
-    *impacts = g->impacts;
+    if (!time)
+        return FAIL(g, DEMILL_ERR_NULL_POINTER, "demill_grinding_damage_time: time is NULL");
+    *time = g->damage_time;
     ok(g);
     return DEMILL_OK;
 }

@@ -36,7 +36,7 @@ struct demill_grinding {
     double *b;    /* appearance function, b[i * n + j] */
     double total; /* the feed's mass, 0 before a feed is set */
     double time;  /* grinding time since the feed was set, s */
-    uint32_t impacts; /* the impacts of one energy in the damage sequence of the rates, >= 1 */
+    double damage_time; /* the time of the damage sequences of the rates, s; 0: single impacts */
     dm_ore ore;
 };
 

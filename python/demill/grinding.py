@@ -148,17 +148,15 @@ class Grinding(Closable):
                    ptr(c), ptr(n), float(time))
 
     @property
-    def damage_impacts(self):
-        """K, the impacts of one energy in the damage sequence of
-        :meth:`rates_from_impacts` (1: single impacts on fresh particles;
-        ``demill_grinding_set_damage_impacts``)."""
-        out = ctypes.c_uint32()
-        self._call("demill_grinding_damage_impacts", ctypes.byref(out))
-        return out.value
+    def damage_time(self):
+        """The damage time of :meth:`rates_from_impacts`, s: each energy bin's
+        rate counts the damage of the impacts a particle receives in it (0:
+        single impacts on fresh particles; ``demill_grinding_set_damage_time``)."""
+        return self._scalar("demill_grinding_damage_time")
 
-    @damage_impacts.setter
-    def damage_impacts(self, impacts):
-        self._call("demill_grinding_set_damage_impacts", int(impacts))
+    @damage_time.setter
+    def damage_time(self, time):
+        self._call("demill_grinding_set_damage_time", float(time))
 
     def extend_rates(self, alpha=None, mu=0.0, big_lambda=0.0):
         """Extends the rates to the classes finer than the finest with a rate

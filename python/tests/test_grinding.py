@@ -97,11 +97,12 @@ class GrindingTest(unittest.TestCase):
             g.set_tavares(100, 0.005, 1, 0.8, 0, 2.5, 30, 1, TABLE)
             f2 = 0.5 * math.erfc(-math.log((1 + 5 ** 0.5) / 2) / 0.8 / 2 ** 0.5)
             self.assertAlmostEqual(g.broken_fraction(0.005, 200, 2), f2, places=12)
-            self.assertEqual(g.damage_impacts, 1)
-            g.damage_impacts = 2
-            self.assertEqual(g.damage_impacts, 2)
+            self.assertEqual(g.damage_time, 0)
+            g.damage_time = 0.4
+            self.assertEqual(g.damage_time, 0.4)
             # one bin at E50 of class 2, 40 impacts on 4 particles in 2 s:
-            # lambda = 5 /s, S = lambda F_2 / (1 + 1 - F_1), F_1 = 1/2
+            # lambda = 5 /s, K = 5 × 0.4 = 2 impacts in the damage time,
+            # S = lambda F_2 / (1 + 1 - F_1), F_1 = 1/2
             d = 0.02 * 2 ** -1.25
             e50 = 100 * (1 + 0.005 / d)
             counts = np.zeros((8, 1))

@@ -299,7 +299,7 @@ END_TEST
 /* Everything a grinding object shows, to compare before and after a call. */
 typedef struct view {
     double mass[6], rates[6], b[36], time, t10, tn[5], limits[7];
-    uint32_t impacts;
+    double damage_time;
     char error_kind;
 } view;
 
@@ -314,7 +314,7 @@ static view look(demill_grinding *g)
     ck_assert_int_eq(demill_grinding_t10(g, 0.01, 5000, &v.t10), DEMILL_OK);
     ck_assert_int_eq(demill_grinding_tn(g, 12, v.tn), DEMILL_OK);
     ck_assert_int_eq(demill_grinding_sizes(g, v.limits, 7, NULL), DEMILL_OK);
-    ck_assert_int_eq(demill_grinding_damage_impacts(g, &v.impacts), DEMILL_OK);
+    ck_assert_int_eq(demill_grinding_damage_time(g, &v.damage_time), DEMILL_OK);
     return v;
 }
 
@@ -434,10 +434,10 @@ START_TEST(bad_input_changes_nothing)
     REFUSED(g, demill_grinding_broken_fraction(g, 0.01, 10, 1, &x), DEMILL_ERR_INVALID_VALUE);
     REFUSED(g, demill_grinding_set_appearance_energy(g, 0), DEMILL_ERR_INVALID_VALUE);
     REFUSED(g, demill_grinding_product(g, f2, N - 1, NULL), DEMILL_ERR_BUFFER_TOO_SMALL);
-    /* damage sequences of 0 or too many impacts */
-    REFUSED(g, demill_grinding_set_damage_impacts(g, 0), DEMILL_ERR_INVALID_VALUE);
-    REFUSED(g, demill_grinding_set_damage_impacts(g, 100001), DEMILL_ERR_INVALID_VALUE);
-    REFUSED(g, demill_grinding_damage_impacts(g, NULL), DEMILL_ERR_NULL_POINTER);
+    /* damage times below 0 or NaN */
+    REFUSED(g, demill_grinding_set_damage_time(g, -1), DEMILL_ERR_INVALID_VALUE);
+    REFUSED(g, demill_grinding_set_damage_time(g, nan), DEMILL_ERR_NOT_FINITE);
+    REFUSED(g, demill_grinding_damage_time(g, NULL), DEMILL_ERR_NULL_POINTER);
     /* Austin's extension: mu < 0, Lambda <= 0 with a mu, NaN */
     REFUSED(g, demill_grinding_extend_rates(g, 1, 0, -0.001, 3, NULL), DEMILL_ERR_INVALID_VALUE);
     REFUSED(g, demill_grinding_extend_rates(g, 1, 0, 0.001, 0, NULL), DEMILL_ERR_INVALID_VALUE);
@@ -587,7 +587,8 @@ END_TEST
  * broken within k impacts is F_k = Φ(ln(E_k/E50)/σ). A bin of λ impacts
  * per particle and second breaks, in a sequence of K, F_K of them over the
  * sum_{m<K} (1 - F_m) impacts a particle survives to receive (F_0 = 0):
- * S = λ F_K / sum_{m<K} (1 - F_m). */
+ * S = λ F_K / sum_{m<K} (1 - F_m), K = λ t_d the impacts in the damage
+ * time. */
 static double damage_rate(double lambda, double e, double e50, double sigma, int impacts,
                           double *broken)
 {
@@ -613,13 +614,14 @@ START_TEST(damage_in_the_rates)
     double edges[2] = {100, 140}, counts[N] = {500, 500, 500, 500, 500, 0}, particles[N];
     for (int i = 0; i < N; i++)
         particles[i] = 10;
-    uint32_t k;
-    G_OK(g, demill_grinding_damage_impacts(g, &k));
-    ck_assert_uint_eq(k, 1); /* the default: single impacts */
-    const int impacts[3] = {1, 20, 400};
+    double td;
+    G_OK(g, demill_grinding_damage_time(g, &td));
+    ck_assert(td == 0); /* the default: single impacts */
+    const int impacts[3] = {1, 20, 400}; /* λ t_d for t_d = 0 (K = 1), 0.8 and 16 s */
+    const double damage_time[3] = {0, 0.8, 16};
     double s[3][N];
     for (int c = 0; c < 3; c++) {
-        G_OK(g, demill_grinding_set_damage_impacts(g, (uint32_t)impacts[c]));
+        G_OK(g, demill_grinding_set_damage_time(g, damage_time[c]));
         G_OK(g, demill_grinding_rates_from_impacts(g, N, 1, edges, counts, particles, time));
         G_OK(g, demill_grinding_rates(g, s[c], N, NULL));
         for (int i = 0; i < N - 1; i++) {
