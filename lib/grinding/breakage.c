@@ -179,9 +179,9 @@ void dm_tk_sequence(const dm_ore *ore, double d, double e, uint32_t impacts, dou
     /* A particle breaks within k impacts if its initial fracture energy is
      * below the threshold t_k: t_1 = e, and t_{k+1} the initial energy that
      * the first impact damages down to t_k. F_k = P(t_k) is the fraction
-     * broken within k impacts; a particle survives impact m + 1 with
-     * probability 1 - F_m (F_0 = 0), so the impacts survived are
-     * sum_{m=0}^{K-1} (1 - F_m). */
+     * broken within k impacts; a particle receives impact m + 1 if the m
+     * before left it whole, with probability 1 - F_m (F_0 = 0), so it
+     * receives sum_{m=0}^{K-1} (1 - F_m) of the K impacts on average. */
     double t = e, f = tk_cdf(ore, d, e), s = 1.0; /* f = F_1, s = 1 - F_0 */
     uint32_t k = 1;
     while (k < impacts && f < 1.0) {

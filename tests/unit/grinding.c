@@ -569,6 +569,12 @@ START_TEST(rates_from_impacts_refused)
             DEMILL_ERR_INVALID_VALUE);
     REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, e, c, bad_np, 1),
             DEMILL_ERR_INVALID_VALUE);
+    /* a damage time in which a bin gives a particle more than 1e6 impacts
+     * (class 0's first bin: 5 impacts on 10 particles in 1 s, 0.5 per
+     * particle and second, 5e6 in 1e7 s) */
+    G_OK(g, demill_grinding_set_damage_time(g, 1e7));
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, e, c, np, 1), DEMILL_ERR_INVALID_VALUE);
+    G_OK(g, demill_grinding_set_damage_time(g, 0));
     /* a breaking bin whose t10 is beyond the table (A' 60 %, last row 30 %) */
     G_OK(g, demill_grinding_set_tavares(g, 100, 0.005, 1, 0.8, 0, 5, 60, 1, 3, table));
     double hot[3] = {0, 1e4, 1e5};
