@@ -328,12 +328,12 @@ DEMILL_API demill_status demill_grinding_damage_time(const demill_grinding *grin
  *
  *  x a class's upper limit. A (and alpha, if fit_alpha) is fitted by least
  *  squares to the logarithms of the rates of the classes that have one
- *  (S_i > 0, such as rates_from_impacts() gives the classes the DEM charge
- *  holds); every class between the finest of them and the sink gets the
- *  law's rate, and as appearance the finest one's column shifted down by
- *  as many classes (a normalisable breakage function, Austin et al. 1984),
- *  what would fall past the sink added to the sink. The classes with a
- *  rate, and coarser ones, are left as they are.
+ *  (S_i > 0, such as demill_grinding_rates_from_impacts() gives the classes
+ *  the DEM charge holds); every class between the finest of them and the
+ *  sink gets the law's rate, and as appearance the finest one's column
+ *  shifted down by as many classes (a normalisable breakage function,
+ *  Austin et al. 1984), what would fall past the sink added to the sink.
+ *  The classes with a rate, and coarser ones, are left as they are.
  *  @param grinding   the object.
  *  @param fit_alpha  nonzero: fit alpha as well (two classes with a rate at
  *                    least); 0: use `alpha`.
