@@ -64,6 +64,10 @@ typedef struct ore_def {
     size_t rows;
     double table[6 * ORE_MAX_ROWS];  /* t-family: t10 t2 t4 t25 t50 t75 */
     double bond_wi;                  /* Bond work index, kWh/t; 0 if not given */
+    int damage;                      /* rates with the damage of the grinding time's impacts */
+    int extend;                      /* Austin's rates below the DEM's classes: 0 no, 1 yes */
+    int fit_alpha;                   /* with alpha fitted, or given in austin[0] */
+    double austin[3];                /* alpha, mu (m), Lambda */
 } ore_def;
 
 /* What the grinding gave (ore_grind, ore_write_csv). */
@@ -72,6 +76,7 @@ typedef struct ore_result {
     double limits[201], rates[200], feed[200], product[200];
     double feed_passing[200], product_passing[200]; /* at each class's upper limit */
     double f80, p80, kwh_t, bond_kwh_t;
+    double austin[2]; /* A (1/s) and alpha of Austin's rates below the DEM's, if extended */
 } ore_result;
 
 /* Each returns 0, or -1 with a message on stderr. */

@@ -1,8 +1,10 @@
 /* ore.c: the mill's --ore option: an ore file read, the ore added to the
  * ball charge, its impacts recorded over the measured revolution, and from
- * them the grinding rates, the population balance over --grind-minutes and
- * the product (product.csv, and P80 and kWh/t for summary.txt). The DEM
- * charge keeps its balls and ore sizes: the coupling is one way. */
+ * them the grinding rates (optionally with the damage of the grinding
+ * time's impacts, and Austin's rates for the classes below the feed's),
+ * the population balance over --grind-minutes and the product
+ * (product.csv, and P80 and kWh/t for summary.txt). The DEM charge keeps
+ * its balls and ore sizes: the coupling is one way. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -71,6 +73,19 @@ int ore_read(const char *path, ore_def *ore)
         } else if (!strcmp(key, "tavares_king")) {
             bad = numbers(rest, 8, ore->tk);
             have_model = 1;
+        } else if (!strcmp(key, "damage")) {
+            bad = numbers(rest, 1, v) || (v[0] != 0 && v[0] != 1);
+            ore->damage = v[0] == 1;
+        } else if (!strcmp(key, "austin_rates")) {
+            /* alpha (or the word fit), mu, Lambda */
+            while (*rest == ' ' || *rest == '\t')
+                rest++;
+            ore->fit_alpha = !strncmp(rest, "fit", 3);
+            if (ore->fit_alpha)
+                bad = numbers(rest + 3, 2, ore->austin + 1);
+            else
+                bad = numbers(rest, 3, ore->austin);
+            ore->extend = 1;
         } else if (!strcmp(key, "t_family")) {
             bad = numbers(rest, 6, v) || ore->rows == ORE_MAX_ROWS;
             if (!bad)
@@ -188,7 +203,12 @@ int ore_grind(demill_world *w, demill_id drum, const ore_def *ore, double minute
                                         ore->tk[4], ore->tk[5], ore->tk[6], ore->tk[7], ore->rows,
                                         ore->table);
     if (s == DEMILL_OK)
+        s = demill_grinding_set_damage_time(g, ore->damage ? 60 * minutes : 0);
+    if (s == DEMILL_OK)
         s = demill_grinding_rates_from_drum(g, w, drum);
+    if (s == DEMILL_OK && ore->extend)
+        s = demill_grinding_extend_rates(g, ore->fit_alpha, ore->austin[0], ore->austin[1],
+                                         ore->austin[2], out->austin);
     if (s == DEMILL_OK)
         s = demill_grinding_rates(g, out->rates, n, NULL);
     if (s == DEMILL_OK)

@@ -244,25 +244,35 @@ DEMILL_API demill_status demill_grinding_set_appearance_energy(demill_grinding *
 
 /** Sets the specific breakage rates S_i and the appearance function b_ij
  *  from the impacts the particles of each class received in a time (an
- *  impact spectrum), by the Tavares and King model:
+ *  impact spectrum), by the Tavares and King model with damage:
  *
- *      S_i = sum_k lambda_ik p_i(E_k),  lambda_ik = counts[i][k] / (N_i T)
+ *      S_i = sum_k lambda_ik F_i(E_k, K) / M_i(E_k, K),
+ *      lambda_ik = counts[i][k] / (N_i T)
  *
  *  lambda_ik the impacts per particle and second in energy bin k, E_k the
- *  bin's midpoint (edges[k] + edges[k+1]) / 2, and p_i(E) the probability
- *  that one impact of specific energy E breaks a particle of class i: the
- *  fraction of fresh particles of the class's geometric mean size whose
- *  fracture energy is at most E (Tavares and King 1998, Single-particle
- *  fracture under impact loading; the weakening of survivors by damage is
- *  not part of this rate). Column j of b is the mean of the appearance
- *  columns at the t10 of each bin's energy (as
- *  demill_grinding_set_appearance_energy() makes them), weighted by each
- *  bin's breakage lambda_jk p_j(E_k); a class that does not break (S_j = 0)
- *  gets a column of zeros, as the sink. The sink's counts are not used.
- *  The JKMRC model gives a fragment size distribution for a breakage event
- *  but no probability that an impact breaks a particle (Napier-Munn et al.
- *  1996 measure t10 on particles that all broke), so it is refused here:
- *  set Tavares and King's model.
+ *  bin's midpoint (edges[k] + edges[k+1]) / 2, K = lambda_ik t_d (rounded,
+ *  at least 1) the impacts of the bin a particle receives in the damage
+ *  time t_d (demill_grinding_set_damage_time(), 0 unless set: K = 1),
+ *  F_i(E, K) the fraction of particles of the class's geometric mean size
+ *  broken within K impacts of specific energy E, the survivors of each
+ *  weakened by it (as demill_grinding_broken_fraction() gives it: Tavares
+ *  and King 1998, Single-particle fracture under impact loading; Tavares and
+ *  King 2002, Modeling of particle fracture by repeated impacts using
+ *  continuum damage mechanics), and M_i(E, K) = sum_{m<K} (1 - F_i(E, m))
+ *  the mean number of those impacts a particle survives to receive: the
+ *  bin breaks F of the particles over M / lambda_ik seconds of impacts.
+ *  With K = 1 this is lambda_ik times the probability that one impact
+ *  breaks a fresh particle; with a K that breaks nearly all, lambda_ik over
+ *  the mean number of impacts to fracture. Each bin's impacts are a
+ *  sequence of their own: the damage done by impacts of other energies is
+ *  not counted. Column j of b is the mean of the appearance columns at the
+ *  t10 of each bin's energy (as demill_grinding_set_appearance_energy()
+ *  makes them), weighted by each bin's part of S_j; a class that does not
+ *  break (S_j = 0) gets a column of zeros, as the sink. The sink's counts
+ *  are not used. The JKMRC model gives a fragment size distribution for a
+ *  breakage event but no probability that an impact breaks a particle
+ *  (Napier-Munn et al. 1996 measure t10 on particles that all broke), so it
+ *  is refused here: set Tavares and King's model.
  *  @param grinding  the object.
  *  @param classes   the number of classes (the object's).
  *  @param bins      the number of energy bins, 1 to 10000.
@@ -276,13 +286,70 @@ DEMILL_API demill_status demill_grinding_set_appearance_energy(demill_grinding *
  *          DEMILL_ERR_INVALID_VALUE (a count that does not match, edges not
  *          increasing, a negative count or particle number, impacts on a
  *          class without particles, time <= 0, no model set, the JKMRC
- *          model, or a breaking bin whose t10 is outside the model's
- *          t-family table) or DEMILL_ERR_OUT_OF_MEMORY. */
+ *          model, a breaking bin whose t10 is outside the model's
+ *          t-family table, or a bin with more than 1e6 impacts per particle
+ *          in the damage time) or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_grinding_rates_from_impacts(demill_grinding *grinding,
                                                             size_t classes, size_t bins,
                                                             const double *edges,
                                                             const double *counts,
                                                             const double *particles, double time);
+
+/** Sets the damage time t_d of demill_grinding_rates_from_impacts(): the
+ *  rate of each energy bin is that at which the sequence of impacts of its
+ *  energy that a particle receives in t_d, K = lambda_ik t_d of them
+ *  (rounded, at least 1), breaks particles that the impacts weaken
+ *  (Tavares and King 2002): the fraction broken within the K impacts over
+ *  the time of the impacts survived. 0 (the default) makes every K 1: the
+ *  rate of single impacts on fresh particles, the hazard of a fresh charge.
+ *  The grinding time counts the damage of the impacts before and the
+ *  strength of the particles that survive them over the grind. The cost of
+ *  the rates grows with K (one root of the damage equation per impact and
+ *  bin).
+ *  @param grinding the object.
+ *  @param time     t_d, s, >= 0.
+ *  @return DEMILL_OK, DEMILL_ERR_NOT_FINITE or DEMILL_ERR_INVALID_VALUE
+ *          (time < 0). */
+DEMILL_API demill_status demill_grinding_set_damage_time(demill_grinding *grinding, double time);
+
+/** Reads the damage time t_d of the rates.
+ *  @param grinding  the object.
+ *  @param[out] time receives t_d, s.
+ *  @return DEMILL_OK or DEMILL_ERR_NULL_POINTER. */
+DEMILL_API demill_status demill_grinding_damage_time(const demill_grinding *grinding,
+                                                     double *time);
+
+/** Extends the rates to the classes finer than the finest class with a
+ *  rate, by Austin's size dependence of the specific rate of breakage
+ *  (Austin, Klimpel and Luckie 1984, Process Engineering of Size Reduction:
+ *  Ball Milling):
+ *
+ *      S(x) = A (x/x0)^alpha / (1 + (x/mu)^Lambda),   x0 = 1 mm,
+ *
+ *  x a class's upper limit. A (and alpha, if fit_alpha) is fitted by least
+ *  squares to the logarithms of the rates of the classes that have one
+ *  (S_i > 0, such as demill_grinding_rates_from_impacts() gives the classes
+ *  the DEM charge holds); every class between the finest of them and the
+ *  sink gets the law's rate, and as appearance the finest one's column
+ *  shifted down by as many classes (a normalisable breakage function,
+ *  Austin et al. 1984), what would fall past the sink added to the sink.
+ *  The classes with a rate, and coarser ones, are left as they are.
+ *  @param grinding   the object.
+ *  @param fit_alpha  nonzero: fit alpha as well (two classes with a rate at
+ *                    least); 0: use `alpha`.
+ *  @param alpha      alpha, the exponent below the maximum, when not fitted.
+ *  @param mu         mu, the size of the rates' maximum, m, > 0; 0 for none
+ *                    (a power law: S = A (x/x0)^alpha).
+ *  @param big_lambda Lambda, > 0, how fast the rates fall above mu (not
+ *                    used when mu is 0).
+ *  @param[out] fitted receives 2 values: A, 1/s, and alpha; may be NULL.
+ *  @return DEMILL_OK, DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (mu
+ *          < 0, Lambda <= 0 with a mu, no class with a rate, or one only
+ *          when alpha is fitted, or an appearance column of the finest class
+ *          with a rate that does not sum to 1) or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_grinding_extend_rates(demill_grinding *grinding, int32_t fit_alpha,
+                                                      double alpha, double mu, double big_lambda,
+                                                      double *fitted);
 
 /** Grinds for a time: integrates the batch grinding equation with the
  *  current rates and appearance function from the current product, exactly

@@ -147,56 +147,63 @@ static double tk_cdf(const dm_ore *ore, double d, double e)
  * using continuum damage mechanics): an impact of specific energy e on a
  * particle of fracture energy em > e that survives leaves it the fracture
  * energy em (1 - D), the damage D the smallest root of
- * D = [2γ/(2γ - 5D + 5) · e/em]^(2γ/5). Its right side grows with D from a
- * positive value at D = 0 and is below 1 at D = 1, so the iteration from 0
- * rises to the smallest root. */
-static double tk_damaged(const dm_ore *ore, double em, double e)
-{
-    double g = ore->gamma, r = e / em, dmg = 0.0;
-    for (int it = 0; it < 100000; it++) {
-        double next = pow(2 * g / (2 * g - 5 * dmg + 5) * r, 2 * g / 5);
-        if (fabs(next - dmg) <= 1e-15)
-            return em * (1.0 - next);
-        dmg = next;
-    }
-    return em * (1.0 - dmg);
-}
-
-/* The initial fracture energy em > e that an impact of e leaves at
- * `after`: the inverse of tk_damaged in em, by bisection (the energy left
- * grows with em). */
+ * D = [2γ/(2γ - 5D + 5) · e/em]^(2γ/5). This is its inverse: the initial
+ * fracture energy em that one impact of e damages down to `after` (>= e).
+ * With em = after/(1 - D) the equation reads
+ * D = [2γ (1 - D)/(2γ - 5D + 5) · e/after]^(2γ/5), whose right side falls
+ * as D grows (from a positive value at D = 0 to 0 at D = 1), so it has one
+ * root in (0, 1), found by bisection. */
 static double tk_before(const dm_ore *ore, double e, double after)
 {
-    double lo = e, hi = 2.0 * (after > e ? after : e);
-    while (tk_damaged(ore, hi, e) < after)
-        hi *= 2.0;
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (tk_damaged(ore, mid, e) < after)
+    const double g = ore->gamma;
+    double lo = 0.0, hi = 1.0, mid = 0.5;
+    while (mid > lo && mid < hi) { /* down to adjacent doubles */
+        double rhs = pow(2 * g * (1 - mid) / (2 * g - 5 * mid + 5) * e / after, 2 * g / 5);
+        if (mid < rhs)
             lo = mid;
         else
             hi = mid;
+        mid = 0.5 * (lo + hi);
     }
-    return 0.5 * (lo + hi);
+    return after / (1.0 - mid);
+}
+
+void dm_tk_sequence(const dm_ore *ore, double d, double e, uint32_t impacts, double *broken,
+                    double *survived)
+{
+    if (e <= 0) {
+        *broken = 0.0;
+        *survived = impacts;
+        return;
+    }
+    /* A particle breaks within k impacts if its initial fracture energy is
+     * below the threshold t_k: t_1 = e, and t_{k+1} the initial energy that
+     * the first impact damages down to t_k. F_k = P(t_k) is the fraction
+     * broken within k impacts; a particle receives impact m + 1 if the m
+     * before left it whole, with probability 1 - F_m (F_0 = 0), so it
+     * receives sum_{m=0}^{K-1} (1 - F_m) of the K impacts on average. */
+    double t = e, f = tk_cdf(ore, d, e), s = 1.0; /* f = F_1, s = 1 - F_0 */
+    uint32_t k = 1;
+    while (k < impacts && f < 1.0) {
+        double next = tk_before(ore, e, t);
+        if (next - t <= 1e-14 * t) { /* the threshold no longer moves: F stays f */
+            s += (double)(impacts - k) * (1.0 - f);
+            break;
+        }
+        s += 1.0 - f;
+        t = next;
+        f = tk_cdf(ore, d, t);
+        k++;
+    }
+    *broken = f;
+    *survived = s;
 }
 
 double dm_tk_broken(const dm_ore *ore, double d, double e, uint32_t impacts)
 {
-    if (e <= 0)
-        return 0.0;
-    /* A particle breaks within k impacts if its initial fracture energy is
-     * below the threshold t_k: t_1 = e, and t_{k+1} the initial energy that
-     * the first impact damages down to t_k. */
-    double t = e;
-    for (uint32_t k = 1; k < impacts; k++) {
-        double next = tk_before(ore, e, t);
-        if (next - t <= 1e-14 * t)
-            break; /* the threshold no longer moves */
-        t = next;
-        if (tk_cdf(ore, d, t) == 1.0)
-            break; /* every particle has broken */
-    }
-    return tk_cdf(ore, d, t);
+    double broken, survived;
+    dm_tk_sequence(ore, d, e, impacts, &broken, &survived);
+    return broken;
 }
 
 /* The fragments' cumulative fraction passing relative size r = x/parent,

@@ -438,6 +438,7 @@ DEMILL_API demill_status demill_grinding_set_appearance_energy(demill_grinding *
 }
 
 #define DM_IMPACT_MAX_BINS 10000u
+#define DM_DAMAGE_MAX_IMPACTS 1000000.0 /* per particle and bin in the damage time */
 
 /* Checks the arguments of demill_grinding_rates_from_impacts(). */
 static demill_status check_impacts(const demill_grinding *g, const char *what, size_t classes,
@@ -518,8 +519,22 @@ DEMILL_API demill_status demill_grinding_rates_from_impacts(demill_grinding *g, 
             double c = counts[j * bins + k];
             if (c == 0)
                 continue;
-            double e = 0.5 * (edges[k] + edges[k + 1]);
-            double w = c / (particles[j] * time) * dm_tk_broken(&g->ore, size, e, 1);
+            double e = 0.5 * (edges[k] + edges[k + 1]), broken, survived;
+            double lambda = c / (particles[j] * time); /* per particle and second */
+            /* the bin's impacts break F_K of the particles within a sequence
+             * of the K a particle receives in the damage time, over the time
+             * of the impacts they survive to receive */
+            double impacts = fmax(1.0, round(lambda * g->damage_time));
+            if (impacts > DM_DAMAGE_MAX_IMPACTS) {
+                free(s);
+                free(b);
+                return FAIL(g, DEMILL_ERR_INVALID_VALUE,
+                            "%s, class %u, energy %g J/kg: %.6g impacts per particle in the "
+                            "damage time %g s, more than %g: shorten it",
+                            what, j, e, impacts, g->damage_time, DM_DAMAGE_MAX_IMPACTS);
+            }
+            dm_tk_sequence(&g->ore, size, e, (uint32_t)impacts, &broken, &survived);
+            double w = lambda * broken / survived;
             if (w == 0)
                 continue;
             double t10 = dm_ore_t10(&g->ore, size, e);
@@ -542,6 +557,125 @@ DEMILL_API demill_status demill_grinding_rates_from_impacts(demill_grinding *g, 
     memcpy(g->b, b, n * n * sizeof *b);
     free(s);
     free(b);
+    ok(g);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_grinding_set_damage_time(demill_grinding *g, double time)
+{
+    CHECK(g);
+    const char *what = "demill_grinding_set_damage_time";
+    if (!isfinite(time))
+        return FAIL(g, DEMILL_ERR_NOT_FINITE, "%s: time is %g", what, time);
+    if (time < 0)
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE, "%s: time %g s, below 0", what, time);
+    g->damage_time = time;
+    ok(g);
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_grinding_damage_time(const demill_grinding *g, double *time)
+{
+    CHECK(g);
+    if (!time)
+        return FAIL(g, DEMILL_ERR_NULL_POINTER, "demill_grinding_damage_time: time is NULL");
+    *time = g->damage_time;
+    ok(g);
+    return DEMILL_OK;
+}
+
+/* Austin, Klimpel and Luckie (1984, Process Engineering of Size Reduction:
+ * Ball Milling): the specific rate of breakage against size,
+ * S(x) = A (x/x0)^α / (1 + (x/μ)^Λ), x0 = 1 mm; this is its logarithm less
+ * ln A, with no maximum (a pure power law) when mu is 0. */
+static double austin_log_shape(double x, double alpha, double mu, double big_lambda)
+{
+    double u = alpha * log(x / 1e-3);
+    return mu > 0 ? u - log1p(pow(x / mu, big_lambda)) : u;
+}
+
+DEMILL_API demill_status demill_grinding_extend_rates(demill_grinding *g, int32_t fit_alpha,
+                                                      double alpha, double mu, double big_lambda,
+                                                      double *fitted)
+{
+    CHECK(g);
+    const char *what = "demill_grinding_extend_rates";
+    if (!isfinite(alpha) || !isfinite(mu) || !isfinite(big_lambda))
+        return FAIL(g, DEMILL_ERR_NOT_FINITE, "%s: alpha %g, mu %g m, Lambda %g", what, alpha, mu,
+                    big_lambda);
+    if (mu < 0 || (mu > 0 && !(big_lambda > 0)))
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE,
+                    "%s: mu %g m must be > 0 with Lambda %g > 0, or 0 for no maximum", what, mu,
+                    big_lambda);
+    const uint32_t n = g->n;
+    uint32_t with = 0, finest = 0;
+    for (uint32_t i = 0; i + 1 < n; i++)
+        if (g->s[i] > 0) {
+            with++;
+            finest = i;
+        }
+    if (with == 0 || (fit_alpha && with < 2))
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE,
+                    "%s: %u classes have a rate; %s needs at least %d", what, with,
+                    fit_alpha ? "fitting alpha" : "fitting A", fit_alpha ? 2 : 1);
+    double sum = 0.0;
+    for (uint32_t i = finest + 1; i < n; i++)
+        sum += g->b[i * n + finest];
+    if (fabs(sum - 1.0) > 1e-9)
+        return FAIL(g, DEMILL_ERR_INVALID_VALUE,
+                    "%s: the appearance column of class %u, the finest with a rate, sums to %g, "
+                    "not 1: set the appearance function first",
+                    what, finest, sum);
+    /* Least squares in the logarithms over the classes with a rate:
+     * ln S_i = ln A + α ln(x_i/x0) - ln(1 + (x_i/μ)^Λ), x_i the class's
+     * upper limit; for α, the slope of the regression line. */
+    double su = 0, sv = 0, suu = 0, suv = 0;
+    for (uint32_t i = 0; i + 1 < n; i++) {
+        if (!(g->s[i] > 0))
+            continue;
+        double x = dm_class_limit(g, i), u = log(x / 1e-3);
+        double v = log(g->s[i]) - austin_log_shape(x, 0.0, mu, big_lambda);
+        su += u;
+        sv += v;
+        suu += u * u;
+        suv += u * v;
+    }
+    if (fit_alpha)
+        alpha = (suv - su * sv / with) / (suu - su * su / with);
+    double log_a = (sv - alpha * su) / with;
+    if (!isfinite(log_a) || !isfinite(alpha))
+        return FAIL(g, DEMILL_ERR_NOT_FINITE, "%s: the fit gives A = e^%g, alpha %g", what, log_a,
+                    alpha);
+    /* the finer classes: the law's rates, and the finest measured class's
+     * appearance column shifted down by as many classes (a normalisable
+     * breakage function, Austin et al. 1984), what would fall past the sink
+     * into the sink */
+    double *s = malloc(n * sizeof *s), *b = malloc((size_t)n * n * sizeof *b);
+    if (!s || !b) {
+        free(s);
+        free(b);
+        return FAIL(g, DEMILL_ERR_OUT_OF_MEMORY, "%s: no memory", what);
+    }
+    memcpy(s, g->s, n * sizeof *s);
+    memcpy(b, g->b, (size_t)n * n * sizeof *b);
+    for (uint32_t j = finest + 1; j + 1 < n; j++) {
+        s[j] = exp(log_a + austin_log_shape(dm_class_limit(g, j), alpha, mu, big_lambda));
+        uint32_t shift = j - finest;
+        for (uint32_t i = 0; i < n; i++)
+            b[i * n + j] = i > j && i + 1 < n ? g->b[(i - shift) * n + finest] : 0.0;
+        double tail = 0.0;
+        for (uint32_t r = n - 1 - shift; r < n; r++)
+            tail += g->b[r * n + finest];
+        b[(n - 1) * n + j] = tail;
+    }
+    memcpy(g->s, s, n * sizeof *s);
+    memcpy(g->b, b, (size_t)n * n * sizeof *b);
+    free(s);
+    free(b);
+    if (fitted) {
+        fitted[0] = exp(log_a);
+        fitted[1] = alpha;
+    }
     ok(g);
     return DEMILL_OK;
 }

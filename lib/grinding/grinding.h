@@ -36,6 +36,7 @@ struct demill_grinding {
     double *b;    /* appearance function, b[i * n + j] */
     double total; /* the feed's mass, 0 before a feed is set */
     double time;  /* grinding time since the feed was set, s */
+    double damage_time; /* the time of the damage sequences of the rates, s; 0: single impacts */
     dm_ore ore;
 };
 
@@ -54,6 +55,11 @@ double dm_tk_e50(const dm_ore *ore, double d);
 /* Tavares and King: the fraction of particles of size d broken within
  * `impacts` impacts of specific energy e each. */
 double dm_tk_broken(const dm_ore *ore, double d, double e, uint32_t impacts);
+/* The same, into *broken, and into *survived the mean number of those
+ * impacts a particle survives to receive: sum_{m<impacts} (1 - F_m), F_m the
+ * fraction broken within m impacts (F_0 = 0). */
+void dm_tk_sequence(const dm_ore *ore, double d, double e, uint32_t impacts, double *broken,
+                    double *survived);
 /* The appearance column of parent class j (< n - 1) at t10 (in the table's
  * range): col[i] for i = 0 .. n - 1. */
 void dm_appearance_column(const demill_grinding *g, uint32_t j, double t10, double *col);

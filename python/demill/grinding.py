@@ -147,6 +147,28 @@ class Grinding(Closable):
         self._call("demill_grinding_rates_from_impacts", c.shape[0], c.shape[1], ptr(e),
                    ptr(c), ptr(n), float(time))
 
+    @property
+    def damage_time(self):
+        """The damage time of :meth:`rates_from_impacts`, s: each energy bin's
+        rate counts the damage of the impacts a particle receives in it (0:
+        single impacts on fresh particles; ``demill_grinding_set_damage_time``)."""
+        return self._scalar("demill_grinding_damage_time")
+
+    @damage_time.setter
+    def damage_time(self, time):
+        self._call("demill_grinding_set_damage_time", float(time))
+
+    def extend_rates(self, alpha=None, mu=0.0, big_lambda=0.0):
+        """Extends the rates to the classes finer than the finest with a rate
+        by Austin's S(x) = A (x/1 mm)^alpha / (1 + (x/mu)^Lambda), A fitted
+        to the rates there are, and alpha too when ``alpha`` is None; ``mu``
+        0 for a power law. Returns (A, alpha) (``demill_grinding_extend_rates``)."""
+        fitted = np.empty(2)
+        fit = alpha is None
+        self._call("demill_grinding_extend_rates", 1 if fit else 0, 0.0 if fit else float(alpha),
+                   float(mu), float(big_lambda), ptr(fitted))
+        return fitted[0], fitted[1]
+
     def rates_from_drum(self, drum):
         """Sets the rates and the appearance function from the impacts a
         :class:`~demill.Drum` recorded (:meth:`~demill.Drum.impacts_start`),

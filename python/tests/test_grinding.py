@@ -88,6 +88,37 @@ class GrindingTest(unittest.TestCase):
                 g.rates_from_impacts([0.5 * e50, 1.5 * e50], counts, [4] * 8, 2.0)
             self.assertIn("JKMRC", cm.exception.message)
 
+    def test_damage_and_extension(self):
+        with demill.Grinding(0.02, 8) as g:
+            # Tavares and King (2002) with gamma = 2.5: the thresholds of
+            # impacts of E are E_1 = E, E_(k+1) = (E + sqrt(E^2 + 4 E_k^2))/2
+            # (the damage equation solved in closed form); two impacts at
+            # E = E50 break Phi(ln(E_2/E50)/sigma) = Phi(ln(1.618)/0.8).
+            g.set_tavares(100, 0.005, 1, 0.8, 0, 2.5, 30, 1, TABLE)
+            f2 = 0.5 * math.erfc(-math.log((1 + 5 ** 0.5) / 2) / 0.8 / 2 ** 0.5)
+            self.assertAlmostEqual(g.broken_fraction(0.005, 200, 2), f2, places=12)
+            self.assertEqual(g.damage_time, 0)
+            g.damage_time = 0.4
+            self.assertEqual(g.damage_time, 0.4)
+            # one bin at E50 of class 2, 40 impacts on 4 particles in 2 s:
+            # lambda = 5 /s, K = 5 × 0.4 = 2 impacts in the damage time,
+            # S = lambda F_2 / (1 + 1 - F_1), F_1 = 1/2
+            d = 0.02 * 2 ** -1.25
+            e50 = 100 * (1 + 0.005 / d)
+            counts = np.zeros((8, 1))
+            counts[2, 0] = 40
+            g.rates_from_impacts([0.5 * e50, 1.5 * e50], counts, [4] * 8, 2.0)
+            self.assertAlmostEqual(g.rates[2], 5 * f2 / 1.5, delta=1e-12)
+            # Austin's power law through classes 0 and 1 (S ~ x^0.5): classes
+            # 2 to 6 follow it
+            g.rates = [0.02, 0.02 * 2 ** -0.25, 0, 0, 0, 0, 0, 0]
+            g.appearance = np.tril(np.full((8, 8), 1.0), -1) / np.arange(7, -1, -1).clip(1)
+            a, alpha = g.extend_rates()
+            self.assertAlmostEqual(alpha, 0.5, places=12)
+            self.assertAlmostEqual(g.rates[5], 0.02 * 2 ** -1.25, places=14)
+            with self.assertRaises(demill.InvalidValue):
+                g.extend_rates(mu=-1)
+
     def test_rates_from_drum(self):
         # Two ore balls of 10 mm meet head-on at 1 m/s in a drum, no
         # gravity, restitution 0.5: each absorbs half of 0.375 m* v² with

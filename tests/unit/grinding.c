@@ -18,6 +18,12 @@
  *   at the rate of the integral worked below in closed form, and the
  *   appearance function is the breakage-weighted mean of the model's
  *   columns at each bin's energy;
+ * - rates with damage: a sequence of identical impacts breaks particles at
+ *   the rate that Tavares and King's (2002) damage model gives in closed
+ *   form for a damage exponent of 2.5, worked below;
+ * - rates extended below the classes that have them by Austin's size
+ *   dependence (Austin, Klimpel and Luckie 1984): a fit to rates made from
+ *   the law recovers its parameters, and the finer classes follow it;
  * - every bad input gives its code and leaves the object as it was. */
 #include <stdlib.h>
 #include <string.h>
@@ -293,6 +299,7 @@ END_TEST
 /* Everything a grinding object shows, to compare before and after a call. */
 typedef struct view {
     double mass[6], rates[6], b[36], time, t10, tn[5], limits[7];
+    double damage_time;
     char error_kind;
 } view;
 
@@ -307,6 +314,7 @@ static view look(demill_grinding *g)
     ck_assert_int_eq(demill_grinding_t10(g, 0.01, 5000, &v.t10), DEMILL_OK);
     ck_assert_int_eq(demill_grinding_tn(g, 12, v.tn), DEMILL_OK);
     ck_assert_int_eq(demill_grinding_sizes(g, v.limits, 7, NULL), DEMILL_OK);
+    ck_assert_int_eq(demill_grinding_damage_time(g, &v.damage_time), DEMILL_OK);
     return v;
 }
 
@@ -426,6 +434,14 @@ START_TEST(bad_input_changes_nothing)
     REFUSED(g, demill_grinding_broken_fraction(g, 0.01, 10, 1, &x), DEMILL_ERR_INVALID_VALUE);
     REFUSED(g, demill_grinding_set_appearance_energy(g, 0), DEMILL_ERR_INVALID_VALUE);
     REFUSED(g, demill_grinding_product(g, f2, N - 1, NULL), DEMILL_ERR_BUFFER_TOO_SMALL);
+    /* damage times below 0 or NaN */
+    REFUSED(g, demill_grinding_set_damage_time(g, -1), DEMILL_ERR_INVALID_VALUE);
+    REFUSED(g, demill_grinding_set_damage_time(g, nan), DEMILL_ERR_NOT_FINITE);
+    REFUSED(g, demill_grinding_damage_time(g, NULL), DEMILL_ERR_NULL_POINTER);
+    /* Austin's extension: mu < 0, Lambda <= 0 with a mu, NaN */
+    REFUSED(g, demill_grinding_extend_rates(g, 1, 0, -0.001, 3, NULL), DEMILL_ERR_INVALID_VALUE);
+    REFUSED(g, demill_grinding_extend_rates(g, 1, 0, 0.001, 0, NULL), DEMILL_ERR_INVALID_VALUE);
+    REFUSED(g, demill_grinding_extend_rates(g, 0, nan, 0, 0, NULL), DEMILL_ERR_NOT_FINITE);
     /* a world is not a grinding object */
     demill_world *w;
     ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
@@ -553,11 +569,162 @@ START_TEST(rates_from_impacts_refused)
             DEMILL_ERR_INVALID_VALUE);
     REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, e, c, bad_np, 1),
             DEMILL_ERR_INVALID_VALUE);
+    /* a damage time in which a bin gives a particle more than 1e6 impacts
+     * (class 0's first bin: 5 impacts on 10 particles in 1 s, 0.5 per
+     * particle and second, 5e6 in 1e7 s) */
+    G_OK(g, demill_grinding_set_damage_time(g, 1e7));
+    REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, e, c, np, 1), DEMILL_ERR_INVALID_VALUE);
+    G_OK(g, demill_grinding_set_damage_time(g, 0));
     /* a breaking bin whose t10 is beyond the table (A' 60 %, last row 30 %) */
     G_OK(g, demill_grinding_set_tavares(g, 100, 0.005, 1, 0.8, 0, 5, 60, 1, 3, table));
     double hot[3] = {0, 1e4, 1e5};
     REFUSED(g, demill_grinding_rates_from_impacts(g, N, 2, hot, c, np, 1),
             DEMILL_ERR_INVALID_VALUE);
+    demill_grinding_destroy(g);
+}
+END_TEST
+
+/* Tavares and King (2002): with the damage exponent γ = 2.5 the damage
+ * equation D = [2γ/(2γ - 5D + 5) · E/Em]^(2γ/5) is D = E/(Em (2 - D)),
+ * whose smallest root is D = 1 - √(1 - E/Em); the energy an impact leaves,
+ * Em (1 - D) = √(Em² - E Em), is t when Em = (E + √(E² + 4t²))/2. So the
+ * initial fracture energies below which particles break within k impacts
+ * of E are E_1 = E, E_(k+1) = (E + √(E² + 4 E_k²))/2, and the fraction
+ * broken within k impacts is F_k = Φ(ln(E_k/E50)/σ). A bin of λ impacts
+ * per particle and second breaks, in a sequence of K, F_K of them over the
+ * sum_{m<K} (1 - F_m) impacts a particle survives to receive (F_0 = 0):
+ * S = λ F_K / sum_{m<K} (1 - F_m), K = λ t_d the impacts in the damage
+ * time. */
+static double damage_rate(double lambda, double e, double e50, double sigma, int impacts,
+                          double *broken)
+{
+    double t = e, survived = 1.0, f = phi_n(log(t / e50) / sigma);
+    for (int k = 1; k < impacts; k++) {
+        survived += 1.0 - f;
+        t = 0.5 * (e + sqrt(e * e + 4 * t * t));
+        f = phi_n(log(t / e50) / sigma);
+    }
+    *broken = f;
+    return lambda * f / survived;
+}
+
+START_TEST(damage_in_the_rates)
+{
+    enum { N = 6 };
+    demill_grinding *g;
+    ck_assert_int_eq(demill_grinding_create(0.02, N, &g), DEMILL_OK);
+    const double sigma = 0.8, time = 2.0;
+    G_OK(g, demill_grinding_set_tavares(g, 100, 0.005, 1, sigma, 0, 2.5, 30, 1, 3, table));
+    /* one bin, 100-140 J/kg (E = 120 J/kg), 500 impacts on 10 particles of
+     * each class in 2 s: λ = 25 impacts per particle and second */
+    double edges[2] = {100, 140}, counts[N] = {500, 500, 500, 500, 500, 0}, particles[N];
+    for (int i = 0; i < N; i++)
+        particles[i] = 10;
+    double td;
+    G_OK(g, demill_grinding_damage_time(g, &td));
+    ck_assert(td == 0); /* the default: single impacts */
+    const int impacts[3] = {1, 20, 400}; /* λ t_d for t_d = 0 (K = 1), 0.8 and 16 s */
+    const double damage_time[3] = {0, 0.8, 16};
+    double s[3][N];
+    for (int c = 0; c < 3; c++) {
+        G_OK(g, demill_grinding_set_damage_time(g, damage_time[c]));
+        G_OK(g, demill_grinding_rates_from_impacts(g, N, 1, edges, counts, particles, time));
+        G_OK(g, demill_grinding_rates(g, s[c], N, NULL));
+        for (int i = 0; i < N - 1; i++) {
+            double d = 0.02 * pow(2.0, -0.5 * i - 0.25), e50 = 100.0 * (1.0 + 0.005 / d), f, fb;
+            double want = damage_rate(25.0, 120.0, e50, sigma, impacts[c], &f);
+            ck_assert_msg(fabs(s[c][i] - want) <= 1e-10 * want,
+                          "K = %d, class %d: S = %.15g 1/s, by hand %.15g", impacts[c], i,
+                          s[c][i], want);
+            G_OK(g, demill_grinding_broken_fraction(g, d, 120.0, (uint32_t)impacts[c], &fb));
+            ck_assert_msg(fabs(fb - f) <= 1e-12, "K = %d, class %d: F = %.15g, by hand %.15g",
+                          impacts[c], i, fb, f);
+        }
+    }
+    /* K = 1 is the single-impact rate λ Φ(ln(E/E50)/σ) (class 0: E50 =
+     * 100 (1 + 5/16.82) J/kg = 129.7 J/kg); 400 impacts break all but
+     * 1e-6 of class 0 (E_400 = 24,219 J/kg), so that S is λ over the mean
+     * number of impacts to fracture */
+    double e50 = 100.0 * (1.0 + 0.005 / (0.02 * pow(2.0, -0.25))), f400;
+    ck_assert(fabs(s[0][0] - 25.0 * phi_n(log(120.0 / e50) / sigma)) <= 1e-12 * s[0][0]);
+    damage_rate(25.0, 120.0, e50, sigma, 400, &f400);
+    ck_assert_msg(f400 > 1 - 1e-6, "F_400 = %.15g", f400);
+    demill_grinding_destroy(g);
+}
+END_TEST
+
+/* Austin, Klimpel and Luckie (1984): S(x) = A (x/x0)^α / (1 + (x/μ)^Λ),
+ * x0 = 1 mm, at the classes' upper limits. */
+static double austin_s(double x, double a, double alpha, double mu, double big_lambda)
+{
+    double s = a * pow(x / 1e-3, alpha);
+    return mu > 0 ? s / (1 + pow(x / mu, big_lambda)) : s;
+}
+
+START_TEST(rates_extended_below)
+{
+    enum { N = 12, MEASURED = 4 };
+    const double a = 0.02, alpha = 1.2, mu = 0.004, big_lambda = 3;
+    demill_grinding *g;
+    ck_assert_int_eq(demill_grinding_create(0.01, N, &g), DEMILL_OK);
+    double s[N] = {0}, b[N * N], fitted[2], s2[N], b2[N * N];
+    for (int i = 0; i < MEASURED; i++) /* the classes the DEM charge holds */
+        s[i] = austin_s(0.01 * pow(2.0, -0.5 * i), a, alpha, mu, big_lambda);
+    austin_b(N, b);
+    double feed[N] = {1, 1};
+    G_OK(g, demill_grinding_set_feed(g, N, feed));
+    G_OK(g, demill_grinding_set_rates(g, N, s));
+    G_OK(g, demill_grinding_set_appearance(g, N * N, b));
+    for (int fit = 1; fit >= 0; fit--) {
+        G_OK(g, demill_grinding_set_rates(g, N, s));
+        G_OK(g, demill_grinding_set_appearance(g, N * N, b));
+        G_OK(g, demill_grinding_extend_rates(g, fit, fit ? 0.0 : alpha, mu, big_lambda, fitted));
+        ck_assert_msg(fabs(fitted[0] - a) <= 1e-12 * a && fabs(fitted[1] - alpha) <= 1e-12,
+                      "fit %d: A %.15g 1/s, alpha %.15g", fit, fitted[0], fitted[1]);
+        G_OK(g, demill_grinding_rates(g, s2, N, NULL));
+        G_OK(g, demill_grinding_appearance(g, b2, N * N, NULL));
+        for (int i = 0; i < N - 1; i++) {
+            double want = austin_s(0.01 * pow(2.0, -0.5 * i), a, alpha, mu, big_lambda);
+            ck_assert_msg(fabs(s2[i] - want) <= 1e-12 * want, "S_%d = %.15g, the law %.15g", i,
+                          s2[i], want);
+        }
+        ck_assert(s2[N - 1] == 0);
+        /* each new column is the last measured one's, shifted down */
+        for (int j = MEASURED; j < N - 1; j++) {
+            int shift = j - (MEASURED - 1);
+            double tail = 0;
+            for (int r = N - 1 - shift; r < N; r++)
+                tail += b[r * N + MEASURED - 1];
+            for (int i = 0; i < N - 1; i++) {
+                double want = i > j ? b[(i - shift) * N + MEASURED - 1] : 0.0;
+                ck_assert(b2[i * N + j] == want);
+            }
+            ck_assert(fabs(b2[(N - 1) * N + j] - tail) <= 1e-15);
+        }
+        /* a whole appearance function, accepted back; the mass is kept */
+        G_OK(g, demill_grinding_set_appearance(g, N * N, b2));
+        G_OK(g, demill_grinding_run(g, 600));
+        double m[N];
+        G_OK(g, demill_grinding_product(g, m, N, NULL));
+        ck_assert(fabs(sum(m, N) - 2) <= 1e-12 * 2);
+    }
+    /* a power law (no maximum) through two classes: α = ln(S1/S0)/ln(x1/x0) */
+    double s3[N] = {0.01, 0.01 * pow(2.0, -0.5 * 0.9)};
+    G_OK(g, demill_grinding_set_rates(g, N, s3));
+    G_OK(g, demill_grinding_extend_rates(g, 1, 0, 0, 0, fitted));
+    ck_assert(fabs(fitted[1] - 0.9) <= 1e-12);
+    G_OK(g, demill_grinding_rates(g, s2, N, NULL));
+    ck_assert(fabs(s2[7] - 0.01 * pow(2.0, -0.5 * 0.9 * 7)) <= 1e-14);
+    /* one class with a rate is not enough to fit α; none is nothing to extend */
+    double s4[N] = {0.01};
+    G_OK(g, demill_grinding_set_rates(g, N, s4));
+    ck_assert_int_eq(demill_grinding_extend_rates(g, 1, 0, 0, 0, NULL), DEMILL_ERR_INVALID_VALUE);
+    G_OK(g, demill_grinding_rates(g, s2, N, NULL));
+    ck_assert(memcmp(s2, s4, sizeof s4) == 0); /* refused, unchanged */
+    G_OK(g, demill_grinding_extend_rates(g, 0, 1.0, 0, 0, NULL));
+    double s5[N] = {0};
+    G_OK(g, demill_grinding_set_rates(g, N, s5));
+    ck_assert_int_eq(demill_grinding_extend_rates(g, 0, 1.0, 0, 0, NULL), DEMILL_ERR_INVALID_VALUE);
     demill_grinding_destroy(g);
 }
 END_TEST
@@ -576,6 +743,8 @@ int main(void)
     tcase_add_test(tc, bad_input_changes_nothing);
     tcase_add_test(tc, rates_from_impacts);
     tcase_add_test(tc, rates_from_impacts_refused);
+    tcase_add_test(tc, damage_in_the_rates);
+    tcase_add_test(tc, rates_extended_below);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }
