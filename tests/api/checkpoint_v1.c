@@ -42,13 +42,7 @@ static const char *fixture(void)
 
 START_TEST(format_1_loads_with_its_spectrum)
 {
-    FILE *f = fopen(fixture(), "rb");
-    ck_assert_msg(f != NULL, "cannot open %s", fixture());
-    unsigned char head[12];
-    ck_assert_uint_eq(fread(head, 1, sizeof head, f), sizeof head);
-    fclose(f);
-    ck_assert(!memcmp(head, "DEMILLCK", 8));
-    ck_assert_uint_eq(head[8] | head[9] << 8 | head[10] << 16 | (uint32_t)head[11] << 24, 1);
+    dm_test_checkpoint_format(fixture(), 1);
 
     demill_world *w;
     ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);

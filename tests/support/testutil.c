@@ -1,6 +1,7 @@
 /* testutil.c: helpers shared by the test suites. */
 #include "testutil.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -238,4 +239,15 @@ void dm_test_copies_run_on(demill_world *w, uint64_t steps, dm_test_copy_fn chec
     free(ref);
     free(bytes);
     demill_snapshot_free(snap);
+}
+
+void dm_test_checkpoint_format(const char *path, uint32_t format)
+{
+    FILE *f = fopen(path, "rb");
+    ck_assert_msg(f != NULL, "cannot open %s", path);
+    unsigned char head[12];
+    ck_assert_uint_eq(fread(head, 1, sizeof head, f), sizeof head);
+    fclose(f);
+    ck_assert(!memcmp(head, "DEMILLCK", 8));
+    ck_assert_uint_eq(head[8] | head[9] << 8 | head[10] << 16 | (uint32_t)head[11] << 24, format);
 }

@@ -36,6 +36,10 @@ double *dm_test_state(demill_world *w, size_t *n);
 typedef void (*dm_test_copy_fn)(demill_world *w, demill_world *copy, int way, void *ctx);
 void dm_test_copies_run_on(demill_world *w, uint64_t steps, dm_test_copy_fn check, void *ctx);
 
+/* Asserts that the file at path is a checkpoint of the given format (its
+ * header: "DEMILLCK" and the format, little-endian). */
+void dm_test_checkpoint_format(const char *path, uint32_t format);
+
 /* Fails the test with the world's message unless the call returns DEMILL_OK. */
 #define DM_OK(world, call)                                                                         \
     do {                                                                                           \
