@@ -26,6 +26,10 @@
  *                       t_c the undamped Hertz duration at 1 m/s
  *   hertz_duration      Hertz, elastic: worst error of the duration against
  *                       t_c = 2.9432752 δ_max / v
+ *   thornton_restitution  the same spheres, Thornton's elastic-perfectly
+ *                       plastic law, meeting at 10 times their yield speed:
+ *                       worst error of the restitution against Thornton's
+ *                       closed form; t_c the elastic Hertz duration
  *   gas_energy          64 elastic Hertz discs in a box, no friction, no
  *                       gravity: largest |E(t) - E(0)| / E(0) over GAS_SPAN
  *                       contact durations (10^6 steps at 1/200), sampled once
@@ -383,6 +387,40 @@ static double hertz_duration(run *r)
                    hertz_impact_time(), 1);
 }
 
+/* Thornton (1997), "Coefficient of restitution for collinear collisions of
+ * elastic-perfectly plastic spheres", J. Appl. Mech. 64: the limiting
+ * contact pressure of the impacts, and his closed form of e for x = v_y/v. */
+#define THORNTON_PRESSURE 2e6 /* Pa */
+#define THORNTON_SPEEDS 10.0  /* v / v_y */
+
+static double thornton_e(double x)
+{
+    return sqrt(6 * sqrt(3.0) / 5) * sqrt(1 - x * x / 6) *
+           pow(x / (x + 2 * sqrt(6.0 / 5 - x * x / 5)), 0.25);
+}
+
+static double thornton_restitution(run *r)
+{
+    /* the yield speed from the elastic work to yield, 2/5 F_y δ_y, with
+     * δ_y = R* (π p_y/(2E*))² and F_y = π³ p_y³ R*²/(6 E*²) */
+    const double rstar = HERTZ_RADIUS / 2, mstar = equal_mstar(HERTZ_RADIUS);
+    const double estar = YOUNG / (2 * (1 - POISSON * POISSON)), py = THORNTON_PRESSURE;
+    const double dy = rstar * pow(M_PI * py / (2 * estar), 2);
+    const double fy = pow(M_PI, 3) * pow(py, 3) * rstar * rstar / (6 * estar * estar);
+    const double v = THORNTON_SPEEDS * sqrt(0.8 * fy * dy / mstar);
+    const double tc = hertz_contact_time(rstar, mstar, v);
+    const demill_id m = open_world(r, 3, tc, 0.0, DENSITY, DEMILL_NORMAL_THORNTON,
+                                   DEMILL_DAMPING_NONE, DEMILL_TANGENTIAL_NONE);
+    pair(r, m, DEMILL_PAIR_YIELD_PRESSURE, py);
+    const double e = thornton_e(1 / THORNTON_SPEEDS);
+    double worst = 0;
+    for (size_t p = 0; p < sizeof phases / sizeof phases[0]; p++)
+        worst = worse(worst,
+                      rel(collide(r, m, HERTZ_RADIUS, v, tc / r->spc, phases[p]).restitution, e));
+    close_world(r);
+    return worst;
+}
+
 /* ---- the elastic gas ------------------------------------------------------ */
 
 #define GAS_SIDE 8      /* particles per row */
@@ -572,6 +610,7 @@ static const problem problems[] = {
     {"linear_restitution", linear_restitution},
     {"hertz_restitution", hertz_restitution},
     {"hertz_duration", hertz_duration},
+    {"thornton_restitution", thornton_restitution},
     {"gas_energy", gas_energy},
     {"rolling", rolling},
     {"mill_power", mill_power},
