@@ -1,5 +1,6 @@
 /* shapes.c: the mass properties of unions of spheres and discs
- * (lib/physics/shapes/union.c) against numbers derived here another way.
+ * (lib/physics/shapes/union.c) and the symmetric eigen-solver
+ * (lib/physics/shapes/eigen.c) against numbers derived here another way.
  *
  * What this suite proves:
  *  - Two spheres (a dumbbell, equal and unequal radii, overlapping and not)
@@ -34,6 +35,9 @@
  *    dumbbell's slices.
  *  - Three pairwise overlapping spheres, no sphere, a NaN centre and a
  *    radius <= 0 are refused with their codes and leave the output as it was.
+ *  - The eigen-solver recovers known eigenvalues (distinct, and two equal)
+ *    of a tensor turned by random rotations, to 1e-13 of the largest, and
+ *    their axes to 1e-12 (for a repeated eigenvalue its plane), right-handed.
  *
  * Sizes: radii 10 mm, density 2700 kg/m³, shapes placed away from the origin
  * at p0 along a slanted axis, so that positions and orientations carry the
@@ -379,6 +383,97 @@ START_TEST(test_refused)
 }
 END_TEST
 
+/* A random rotation matrix (rows q[k] its axes), from a random unit
+ * quaternion (Shoemake (1992), "Uniform random rotations", Graphics Gems III). */
+static void random_rotation(double q[3][3])
+{
+    double u1 = rand() / (double)RAND_MAX, u2 = rand() / (double)RAND_MAX,
+           u3 = rand() / (double)RAND_MAX;
+    double w = sqrt(1 - u1) * sin(2 * M_PI * u2), x = sqrt(1 - u1) * cos(2 * M_PI * u2),
+           y = sqrt(u1) * sin(2 * M_PI * u3), z = sqrt(u1) * cos(2 * M_PI * u3);
+    double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                      {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                      {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+    memcpy(q, m, sizeof m);
+}
+
+static double dot(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+START_TEST(test_eigen)
+{
+    srand(17);
+    const double spectra[][3] = {{1.0, 2.0, 5.0}, {2.0, 2.0, 5.0}, {1.0, 4.0, 4.0}, {3.0, 3.0, 3.0},
+                                 {1e-3, 0.7, 1.0}};
+    for (int rep = 0; rep < 200; rep++) {
+        const double *l = spectra[rep % 5];
+        double scale = 1e-6, q[3][3], a[3][3], val[3], vec[3][3];
+        random_rotation(q);
+        /* a = Σ λ_k q_k q_kᵀ: eigenpairs (λ_k, q_k). */
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < 3; k++)
+                a[j][k] = scale * (l[0] * q[0][j] * q[0][k] + l[1] * q[1][j] * q[1][k] +
+                                   l[2] * q[2][j] * q[2][k]);
+        dm_sym3_eigen(a, val, vec);
+        for (int k = 0; k < 3; k++)
+            ck_assert_msg(fabs(val[k] - scale * l[k]) <= 1e-13 * scale * l[2],
+                          "eigenvalue %d: %.17g against %.17g", k, val[k] / scale, l[k]);
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < 3; k++)
+                ck_assert(fabs(dot(vec[j], vec[k]) - (j == k)) <= 1e-13);
+        /* Right-handed. */
+        double cr[3] = {vec[0][1] * vec[1][2] - vec[0][2] * vec[1][1],
+                        vec[0][2] * vec[1][0] - vec[0][0] * vec[1][2],
+                        vec[0][0] * vec[1][1] - vec[0][1] * vec[1][0]};
+        ck_assert(dot(cr, vec[2]) > 1.0 - 1e-13);
+        /* A distinct eigenvalue's axis is q_k up to sign; a repeated one's
+         * lies in its eigenspace (no component along the other axes). */
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 3; j++)
+                if (l[j] != l[k])
+                    ck_assert_msg(fabs(dot(vec[k], q[j])) <= 1e-12, "axis %d leaks into %d: %g",
+                                  k, j, dot(vec[k], q[j]));
+    }
+    /* A diagonal tensor is its own answer. */
+    double a[3][3] = {{3, 0, 0}, {0, 1, 0}, {0, 0, 2}}, val[3], vec[3][3];
+    dm_sym3_eigen(a, val, vec);
+    ck_assert(val[0] == 1.0 && val[1] == 2.0 && val[2] == 3.0);
+    ck_assert(fabs(vec[0][1]) == 1.0 && fabs(vec[1][2]) == 1.0 && fabs(vec[2][0]) == 1.0);
+}
+END_TEST
+
+START_TEST(test_l_principal)
+{
+    /* The principal moments of the overlapping L rebuild its tensor. */
+    double c[9], rad[3] = {R0, R0, R0}, val[3], vec[3][3];
+    for (int j = 0; j < 3; j++) {
+        c[j] = P0[j];
+        c[3 + j] = P0[j] + 1.5 * R0 * E1[j];
+        c[6 + j] = P0[j] + 1.5 * R0 * E2[j];
+    }
+    dm_mass_props q;
+    ck_assert_int_eq(dm_spheres_union_mass(3, c, rad, RHO, &q, NULL), DEMILL_OK);
+    dm_sym3_eigen(q.inertia, val, vec);
+    /* By symmetry about the plane through A and the L's bisector normal to
+     * E1 - E2, one axis is (E1 - E2)/√2. */
+    double b[3] = {(E1[0] - E2[0]) / sqrt(2.0), (E1[1] - E2[1]) / sqrt(2.0),
+                   (E1[2] - E2[2]) / sqrt(2.0)};
+    int found = 0;
+    for (int k = 0; k < 3; k++)
+        found += fabs(fabs(dot(vec[k], b)) - 1.0) <= 1e-12;
+    ck_assert_int_eq(found, 1);
+    for (int j = 0; j < 3; j++)
+        for (int k = 0; k < 3; k++) {
+            double s = 0.0;
+            for (int n = 0; n < 3; n++)
+                s += val[n] * vec[n][j] * vec[n][k];
+            ck_assert(fabs(s - q.inertia[j][k]) <= 1e-13 * val[2]);
+        }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("shapes");
@@ -389,6 +484,8 @@ int main(void)
     tcase_add_test(tc, test_inside_and_repeated);
     tcase_add_test(tc, test_discs);
     tcase_add_test(tc, test_refused);
+    tcase_add_test(tc, test_eigen);
+    tcase_add_test(tc, test_l_principal);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }
