@@ -24,8 +24,10 @@ typedef struct dm_mass_props {
  * counted once however many spheres cover it. Exact to round-off
  * (inclusion-exclusion with the closed-form moments of each lens, see
  * union.c): a sphere inside another (or equal to an earlier one) adds
- * nothing, two overlapping spheres add their lens once. It takes O(n³)
- * operations (meant for templates of tens of spheres).
+ * nothing, two overlapping spheres add their lens once. It takes O(n²)
+ * operations and O(n) more per overlapping pair (the test whether a ball
+ * lies inside another), O(n⁴) at worst: meant for templates of tens of
+ * spheres.
  * Errors, with *out untouched and *why (if why is not NULL) set to a
  * static message:
  *  DEMILL_ERR_NULL_POINTER   c, r or out is NULL;
@@ -43,7 +45,7 @@ demill_status dm_spheres_union_mass(size_t n, const double *c, const double *r, 
  * spheres of those centres and radii (mass rho volume). The results are the
  * mass *m, the centre of mass com (2 doubles) and the moment of inertia *i
  * about the axis through the centre of mass normal to the plane. Exact to
- * round-off, O(n³), with the same errors as dm_spheres_union_mass() (t
+ * round-off, as fast, with the same errors as dm_spheres_union_mass() (t
  * negative or not finite also DEMILL_ERR_INVALID_VALUE or
  * DEMILL_ERR_NOT_FINITE); nothing is written on failure. */
 demill_status dm_discs_union_mass(size_t n, const double *c, const double *r, double rho,

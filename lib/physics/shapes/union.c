@@ -132,10 +132,10 @@ static demill_status check(int dim, size_t n, const double *c, const double *r, 
         if (dropped(dim, n, c, r, i))
             continue;
         for (size_t j = i + 1; j < n && bad < 0; j++) {
-            if (dropped(dim, n, c, r, j) || !lens(dim, c, r, i, j))
+            if (!lens(dim, c, r, i, j) || dropped(dim, n, c, r, j))
                 continue;
             for (size_t k = j + 1; k < n && bad < 0; k++)
-                if (!dropped(dim, n, c, r, k) && lens(dim, c, r, i, k) && lens(dim, c, r, j, k))
+                if (lens(dim, c, r, i, k) && lens(dim, c, r, j, k) && !dropped(dim, n, c, r, k))
                     bad = 5, st = DEMILL_ERR_INVALID_VALUE;
         }
     }
@@ -160,7 +160,7 @@ static void union_moments(int dim, int dc, size_t n, const double *c, const doub
         slab(dim, r[i], -r[i], r[i], s);
         add_slab(M, dim, 1.0, ci, ex, s);
         for (size_t j = i + 1; j < n; j++) {
-            if (dropped(dc, n, c, r, j) || !lens(dc, c, r, i, j))
+            if (!lens(dc, c, r, i, j) || dropped(dc, n, c, r, j))
                 continue;
             /* The lens: ball i beyond x = a, ball j short of it, along the
              * axis e from centre i to centre j. */
