@@ -103,14 +103,16 @@ static int lens(int dim, const double *c, const double *r, size_t i, size_t j)
     return dist(dim, c + dim * i, c + dim * j) < r[i] + r[j];
 }
 
+/* Whether a union can be weighed (centres of dim coordinates): DEMILL_OK,
+ * or the code of the first fault found and its message in *why. */
 static demill_status check(int dim, size_t n, const double *c, const double *r, double rho,
                            const char **why)
 {
     static const char *const msg[] = {
         "no spheres", "a centre or a radius is not finite", "a radius is not positive",
         "the density is not finite", "the density is not positive",
-        "three of the spheres overlap pairwise: the union of three overlapping spheres "
-        "is not yet supported"};
+        "three of the spheres (discs) overlap pairwise: the union of three overlapping "
+        "spheres is not yet supported"};
     int bad = -1;
     demill_status st = DEMILL_OK;
     if (n == 0)
