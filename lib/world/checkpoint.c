@@ -730,6 +730,8 @@ static void transfer(io *s, demill_world *w)
         io_f64_array(s, vec[k], n * per[k], n * per[k]);
     io_array(s, &P->mat, n, n, sizeof *P->mat);
     io_array(s, &P->hid, n, n, sizeof *P->hid);
+    if (s->reading && !s->status && !(P->clump = calloc(n ? n : 1, sizeof *P->clump)))
+        io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory"); /* no clumps: every particle free */
     transfer_handles(s, &w->ph, "particle handles");
 
     io_section(s, "WALL");
@@ -1195,6 +1197,11 @@ static uint32_t crc32_of(const uint8_t *p, size_t n)
 /* The checkpoint of w, in a new buffer (*bytes of it). */
 static demill_status encode(demill_world *w, uint8_t **out, size_t *bytes)
 {
+    if (w->ntemplates)
+        return dm_fail(w, DEMILL_ERR_UNSUPPORTED,
+                       "checkpoint: the world has clump templates (%u) and clumps (%u), which "
+                       "checkpoints do not hold yet; a snapshot (demill_snapshot_take) does",
+                       w->ntemplates, w->live_clumps);
     io s = {.reading = false, .format = CK_FORMAT};
     uint8_t header[CK_HEADER] = {0};
     io_bytes(&s, header, sizeof header);

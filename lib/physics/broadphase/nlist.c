@@ -2,8 +2,9 @@
  * of a uniform grid, then every pair closer than the sum of radii plus the
  * skin is listed once (i < j in storage order) in the bucket of its contact
  * kernel, with the history of contacts that were already touching carried
- * over. Cost O(N); the lists stay valid until some particle has moved half
- * the skin (or a wall has moved so far that a gap could close). */
+ * over; members of one clump are never paired. Cost O(N); the lists stay
+ * valid until some particle has moved half the skin (or a wall has moved so
+ * far that a gap could close). */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -206,6 +207,7 @@ static void scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t
     const double ri = r[i] + w->skin + w->cohesion_reach;
     const dm_pairparam *row = w->ptab + P->mat[i] * w->nmat_tab;
     const bool fixed = dm_particle_fixed(P, i);
+    const uint32_t clump = P->clump[i];
     uint32_t near[SCAN_BLOCK];
     for (uint32_t b0 = j0; b0 < j1; b0 += SCAN_BLOCK) {
         const uint32_t b1 = j1 - b0 < SCAN_BLOCK ? j1 : b0 + SCAN_BLOCK;
@@ -222,8 +224,9 @@ static void scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t
         }
         for (uint32_t q = 0; q < m; q++) {
             const int kern = row[P->mat[near[q]]].kernel;
-            /* two fixed particles do not touch */
-            if (kern >= 0 && (!fixed || !dm_particle_fixed(P, near[q])))
+            /* two fixed particles do not touch, nor two members of one clump */
+            if (kern >= 0 && (!fixed || !dm_particle_fixed(P, near[q])) &&
+                (!clump || P->clump[near[q]] != clump))
                 pairbuf_push(pb, i, near[q], 0, kern);
         }
     }
