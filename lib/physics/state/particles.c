@@ -87,7 +87,8 @@ void dm_particles_permute(demill_world *w, const uint32_t *order)
     memcpy(P->mat, m16, n * sizeof *m16);
     uint32_t *h32 = (uint32_t *)s;
     uint32_t *u32[] = {P->hid, P->clump};
-    for (size_t a = 0; a < 2; a++) {
+    /* without clumps every clump slot is 0, and stays so unmoved */
+    for (size_t a = 0; a < (w->live_clumps ? 2u : 1u); a++) {
         for (uint32_t k = 0; k < n; k++)
             h32[k] = u32[a][order[k]];
         memcpy(u32[a], h32, n * sizeof *h32);
