@@ -100,7 +100,8 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
                                  (LOAD); 4 the extended laws' dissipation terms
                                  (WRLD), the cohesion law, the number of fields
                                  per material and of values per material pair
-                                 (MATS), and the number of contact lists (CONT) */
+                                 (MATS), the number of contact lists (CONT) and
+                                 the 3D particles' orientations (ORNT) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -283,6 +284,35 @@ static void transfer_handles(io *s, dm_handles *h, const char *what)
     io_array(s, &h->slot, h->n, h->n, sizeof *h->slot);
     io_array(s, &h->gen, h->n, h->n, sizeof *h->gen);
     io_array(s, &h->free, h->nfree, h->n, sizeof *h->free);
+}
+
+/* The orientations of a 3D world's n particles (section ORNT, from format 4
+ * on): 4 doubles each, of norm 1 to within 1e-12 (the integrators keep it to
+ * round-off). An older file has none: its particles start at (1, 0, 0, 0),
+ * as new ones do. */
+static void transfer_orientations(io *s, dm_particles *P, size_t n)
+{
+    if (s->format < 4) {
+        if (s->reading && !s->status) {
+            P->q = malloc(n ? 4 * n * sizeof *P->q : 1);
+            if (!P->q) {
+                io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory");
+                return;
+            }
+            for (size_t i = 0; i < n; i++)
+                memcpy(P->q + 4 * i, (const double[4]){1.0, 0.0, 0.0, 0.0}, 4 * sizeof *P->q);
+        }
+        return;
+    }
+    io_section(s, "ORNT");
+    io_f64_array(s, &P->q, 4 * n, 4 * n);
+    for (size_t i = 0; i < n && s->reading && !s->status; i++) {
+        const double *q = P->q + 4 * i;
+        const double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+        if (!(fabs(n2 - 1.0) <= 1e-12))
+            io_fail(s, DEMILL_ERR_FORMAT, "particle %zu: orientation of norm %.17g, not 1", i,
+                    sqrt(n2));
+    }
 }
 
 static void transfer_wall(io *s, dm_wall *wl)
@@ -731,6 +761,8 @@ static void transfer(io *s, demill_world *w)
     io_array(s, &P->mat, n, n, sizeof *P->mat);
     io_array(s, &P->hid, n, n, sizeof *P->hid);
     transfer_handles(s, &w->ph, "particle handles");
+    if (w->dim == 3)
+        transfer_orientations(s, P, n);
 
     io_section(s, "WALL");
     io_count(s, &w->nwalls, UINT32_MAX - 1, "wall slots");

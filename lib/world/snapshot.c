@@ -22,8 +22,8 @@ typedef struct buffer {
     size_t bytes;
 } buffer;
 
-/* particles 15, handles 3 × 3, pairs, table, walls, bodies, spectrum 2, buckets 5 each */
-#define MAX_BUFFERS (15 + 9 + 4 + 2 + 2 * DM_KERNELS * 5)
+/* particles 16, handles 3 × 3, pairs, table, walls, bodies, spectrum 2, buckets 5 each */
+#define MAX_BUFFERS (16 + 9 + 4 + 2 + 2 * DM_KERNELS * 5)
 
 /* The buffers of state s (its pointers and sizes), into b; returns how many. */
 static size_t buffers_of(demill_world *s, buffer *b)
@@ -42,6 +42,7 @@ static size_t buffers_of(demill_world *s, buffer *b)
     ADD(P->t, n * W * sizeof(double));
     ADD(P->wp, n * W * sizeof(double));
     ADD(P->theta, n * sizeof(double));
+    ADD(P->q, n * (size_t)dm_qdim(s) * sizeof(double));
     ADD(P->r, n * sizeof(double));
     ADD(P->m, n * sizeof(double));
     ADD(P->im, n * sizeof(double));

@@ -1174,7 +1174,7 @@ static void bad_particles_write(scene *sc)
         BAD(sc, DEMILL_ERR_READ_ONLY, demill_particles_write(w, ro[k], cur, m), "read");
         free(cur);
     }
-    static const int32_t unknown[] = {0, 10, 99, 100, 101, -1};
+    static const int32_t unknown[] = {0, 11, 99, 100, 101, -1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -1248,7 +1248,7 @@ static void bad_particle_set(scene *sc)
         ctx(sc, "particle_set read-only field %d", (int)ro[k]);
         BAD(sc, DEMILL_ERR_READ_ONLY, demill_particle_set(w, p, ro[k], cur), "read");
     }
-    static const int32_t unknown[] = {0, 10, 99, 100, 101, -1};
+    static const int32_t unknown[] = {0, 11, 99, 100, 101, -1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -2027,7 +2027,7 @@ static void bad_reads(scene *sc)
         ctx(sc, "particles_read_ids field %d, out and count NULL", (int)f);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_particles_read_ids(w, f, NULL, n, NULL), "NULL");
     }
-    static const int32_t unknown_p[] = {0, 10, 99, 100, -1};
+    static const int32_t unknown_p[] = {0, 11, 99, 100, -1};
     for (size_t k = 0; k < sizeof unknown_p / sizeof unknown_p[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown_p[k]);

@@ -26,6 +26,7 @@
 #include "physics/broadphase/broadphase.h"
 #include "physics/contact/contact.h"
 #include "physics/integrate/integrate.h"
+#include "physics/integrate/orient.h"
 #include "physics/mill/mill.h"
 
 #define DM_INLINE static inline __attribute__((always_inline))
@@ -119,13 +120,16 @@ DM_INLINE void kick(const int D, dm_particles *P, const step_args *a, uint32_t i
 
 /* The rotational half steps: with kick, first ω += h α (the second half of
  * the step before); with predict, wp = ω + 2h α; then ω += h α, and in 2D
- * θ += hth ω. */
+ * θ += hth ω, in 3D the orientation turned by hth ω (orient.h) when hth is
+ * not 0. */
 DM_INLINE void spin(const int D, dm_particles *P, const step_args *a, uint32_t i0, uint32_t i1)
 {
     const int W = D == 3 ? 3 : 1;
     double *restrict om = P->w, *restrict wp = P->wp, *restrict theta = P->theta;
+    double *restrict q = P->q;
     const double *restrict t = P->t, *restrict ii = P->iinv;
     const double h = a->h, hth = a->hth;
+    const int turn = D == 3 && hth != 0.0;
     const int kick = a->kick, predict = a->predict;
     for (uint32_t i = i0; i < i1; i++) {
         for (int c = 0; c < W; c++) {
@@ -139,6 +143,10 @@ DM_INLINE void spin(const int D, dm_particles *P, const step_args *a, uint32_t i
         }
         if (D == 2)
             theta[i] += hth * om[i];
+        if (turn) {
+            const double phi[3] = {hth * om[3 * i], hth * om[3 * i + 1], hth * om[3 * i + 2]};
+            dm_quat_turn(q + 4 * i, phi);
+        }
     }
 }
 

@@ -16,15 +16,17 @@ int dm_particles_reserve(demill_world *w, uint32_t need)
     size_t cap = dm_grown_capacity(P->cap, need);
     if (cap > UINT32_MAX)
         cap = need;
-    const size_t D = (size_t)w->dim * sizeof(double), W = (size_t)dm_wdim(w) * sizeof(double);
+    const size_t D = (size_t)w->dim * sizeof(double), W = (size_t)dm_wdim(w) * sizeof(double),
+                 Q = (size_t)dm_qdim(w) * sizeof(double);
     void **const arrays[] = {(void **)&P->x,  (void **)&P->v,     (void **)&P->f,
                              (void **)&P->x0, (void **)&P->vp,    (void **)&P->wp,
                              (void **)&P->w,  (void **)&P->t,     (void **)&P->theta,
                              (void **)&P->r,  (void **)&P->m,     (void **)&P->im,
-                             (void **)&P->iinv, (void **)&P->mat, (void **)&P->hid};
+                             (void **)&P->iinv, (void **)&P->mat, (void **)&P->hid,
+                             (void **)&P->q};
     const size_t sizes[] = {D, D, D, D, D, W, W, W, sizeof(double), sizeof(double),
                             sizeof(double), sizeof(double), sizeof(double), sizeof(uint16_t),
-                            sizeof(uint32_t)};
+                            sizeof(uint32_t), Q};
     if (dm_grow_arrays(arrays, sizes, sizeof sizes / sizeof sizes[0], cap))
         return -1;
     P->cap = (uint32_t)cap;
@@ -43,6 +45,7 @@ void dm_particles_free(demill_world *w)
     free(P->w);
     free(P->t);
     free(P->theta);
+    free(P->q);
     free(P->r);
     free(P->m);
     free(P->im);
@@ -57,7 +60,7 @@ void dm_particles_permute(demill_world *w, const uint32_t *order)
 {
     dm_particles *P = &w->p;
     const uint32_t n = P->n;
-    const int D = w->dim, W = dm_wdim(w);
+    const int D = w->dim, W = dm_wdim(w), Q = dm_qdim(w);
     if (n == 0) /* nothing to move, and a world that never had particles has no arrays */
         return;
     double *s = w->grid.scratch;
@@ -72,6 +75,11 @@ void dm_particles_permute(demill_world *w, const uint32_t *order)
         for (uint32_t k = 0; k < n; k++)
             memcpy(s + (size_t)W * k, ang[a] + (size_t)W * order[k], (size_t)W * sizeof *s);
         memcpy(ang[a], s, (size_t)W * n * sizeof *s);
+    }
+    if (Q) {
+        for (uint32_t k = 0; k < n; k++)
+            memcpy(s + (size_t)Q * k, P->q + (size_t)Q * order[k], (size_t)Q * sizeof *s);
+        memcpy(P->q, s, (size_t)Q * n * sizeof *s);
     }
     double *sc[] = {P->theta, P->r, P->m, P->im, P->iinv};
     for (size_t a = 0; a < 5; a++) {
