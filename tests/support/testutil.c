@@ -211,10 +211,7 @@ double *dm_test_state(demill_world *w, size_t *n)
 void dm_test_copies_run_on(demill_world *w, uint64_t steps, dm_test_copy_fn check, void *ctx)
 {
     size_t size, n0, n1;
-    DM_OK(w, demill_world_save_buffer(w, NULL, 0, &size));
-    void *bytes = malloc(size);
-    ck_assert(bytes);
-    DM_OK(w, demill_world_save_buffer(w, bytes, size, &size));
+    unsigned char *bytes = dm_test_save(w, &size);
     demill_snapshot *snap;
     DM_OK(w, demill_snapshot_take(w, &snap));
     DM_OK(w, demill_world_step(w, steps));
@@ -241,6 +238,13 @@ void dm_test_copies_run_on(demill_world *w, uint64_t steps, dm_test_copy_fn chec
     demill_snapshot_free(snap);
 }
 
+/* The format of the checkpoint whose first 12 bytes are head. */
+static uint32_t checkpoint_format(const unsigned char *head)
+{
+    ck_assert(!memcmp(head, "DEMILLCK", 8));
+    return head[8] | head[9] << 8 | head[10] << 16 | (uint32_t)head[11] << 24;
+}
+
 void dm_test_checkpoint_format(const char *path, uint32_t format)
 {
     FILE *f = fopen(path, "rb");
@@ -248,6 +252,26 @@ void dm_test_checkpoint_format(const char *path, uint32_t format)
     unsigned char head[12];
     ck_assert_uint_eq(fread(head, 1, sizeof head, f), sizeof head);
     fclose(f);
-    ck_assert(!memcmp(head, "DEMILLCK", 8));
-    ck_assert_uint_eq(head[8] | head[9] << 8 | head[10] << 16 | (uint32_t)head[11] << 24, format);
+    ck_assert_uint_eq(checkpoint_format(head), format);
+}
+
+unsigned char *dm_test_save(demill_world *w, size_t *n)
+{
+    DM_OK(w, demill_world_save_buffer(w, NULL, 0, n));
+    unsigned char *b = malloc(*n);
+    ck_assert_ptr_nonnull(b);
+    DM_OK(w, demill_world_save_buffer(w, b, *n, n));
+    return b;
+}
+
+demill_world *dm_test_reloaded(demill_world *w, uint32_t *format)
+{
+    size_t n;
+    unsigned char *b = dm_test_save(w, &n);
+    *format = checkpoint_format(b);
+    demill_world *v;
+    ck_assert_int_eq(demill_world_create(3, &v), DEMILL_OK);
+    DM_OK(v, demill_world_load_buffer(v, b, n));
+    free(b);
+    return v;
 }

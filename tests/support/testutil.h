@@ -40,6 +40,13 @@ void dm_test_copies_run_on(demill_world *w, uint64_t steps, dm_test_copy_fn chec
  * header: "DEMILLCK" and the format, little-endian). */
 void dm_test_checkpoint_format(const char *path, uint32_t format);
 
+/* World w saved to checkpoint bytes, in a new array of *n bytes (free it). */
+unsigned char *dm_test_save(demill_world *w, size_t *n);
+
+/* A new 3D world loaded from a checkpoint of w (destroy it), and in *format
+ * the format the checkpoint was written in. */
+demill_world *dm_test_reloaded(demill_world *w, uint32_t *format);
+
 /* Fails the test with the world's message unless the call returns DEMILL_OK. */
 #define DM_OK(world, call)                                                                         \
     do {                                                                                           \
