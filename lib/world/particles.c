@@ -131,7 +131,7 @@ demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const
             P->w[W * i + c] = P->wp[W * i + c] = P->t[W * i + c] = 0.0;
         P->theta[i] = 0.0;
         if (dm_qdim(w))
-            memcpy(P->q + 4 * (size_t)i, (const double[4]){1.0, 0.0, 0.0, 0.0}, 4 * sizeof *P->q);
+            dm_quat_put(P->q, i, (const double[4]){1.0, 0.0, 0.0, 0.0});
         P->r[i] = radii[k];
         P->mat[i] = (uint16_t)mat;
         dm_particle_set_mass(w, i, false);
@@ -186,8 +186,8 @@ void dm_particles_compact(demill_world *w, uint32_t *map)
             memcpy(P->wp + W * m, P->wp + W * i, W * sizeof *P->x);
             memcpy(P->t + W * m, P->t + W * i, W * sizeof *P->x);
             P->theta[m] = P->theta[i];
-            if (dm_qdim(w))
-                memcpy(P->q + 4 * m, P->q + 4 * i, 4 * sizeof *P->q);
+            for (int c = 0; c < dm_qdim(w); c++)
+                P->q[c][m] = P->q[c][i];
             P->r[m] = P->r[i];
             P->m[m] = P->m[i];
             P->im[m] = P->im[i];
@@ -291,7 +291,7 @@ static void get_one(const demill_world *w, uint32_t i, int32_t field, double *ou
     case DEMILL_PARTICLE_RADIUS: out[0] = P->r[i]; return;
     case DEMILL_PARTICLE_MASS: out[0] = P->m[i]; return;
     case DEMILL_PARTICLE_ANGLE: out[0] = P->theta[i]; return;
-    case DEMILL_PARTICLE_ORIENTATION: memcpy(out, P->q + 4 * i, 4 * sizeof *out); return;
+    case DEMILL_PARTICLE_ORIENTATION: dm_quat_get(P->q, i, out); return;
     case DEMILL_PARTICLE_FIXED: out[0] = dm_particle_fixed(P, i); return;
     }
     out[0] = out[1] = out[2] = 0.0;
@@ -400,7 +400,7 @@ static void set_one(demill_world *w, uint32_t i, int32_t field, const double *in
             n2 += (in[c] / m) * (in[c] / m);
         const double n = sqrt(n2);
         for (int c = 0; c < 4; c++)
-            P->q[4 * i + c] = in[c] / m / n;
+            P->q[c][i] = in[c] / m / n;
         break;
     }
     case DEMILL_PARTICLE_FIXED:

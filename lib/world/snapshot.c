@@ -22,8 +22,8 @@ typedef struct buffer {
     size_t bytes;
 } buffer;
 
-/* particles 16, handles 3 × 3, pairs, table, walls, bodies, spectrum 2, buckets 5 each */
-#define MAX_BUFFERS (16 + 9 + 4 + 2 + 2 * DM_KERNELS * 5)
+/* particles 19, handles 3 × 3, pairs, table, walls, bodies, spectrum 2, buckets 5 each */
+#define MAX_BUFFERS (19 + 9 + 4 + 2 + 2 * DM_KERNELS * 5)
 
 /* The buffers of state s (its pointers and sizes), into b; returns how many. */
 static size_t buffers_of(demill_world *s, buffer *b)
@@ -42,7 +42,8 @@ static size_t buffers_of(demill_world *s, buffer *b)
     ADD(P->t, n * W * sizeof(double));
     ADD(P->wp, n * W * sizeof(double));
     ADD(P->theta, n * sizeof(double));
-    ADD(P->q, n * (size_t)dm_qdim(s) * sizeof(double));
+    for (int c = 0; c < 4; c++) /* empty in 2D */
+        ADD(P->q[c], n * (dm_qdim(s) ? sizeof(double) : 0));
     ADD(P->r, n * sizeof(double));
     ADD(P->m, n * sizeof(double));
     ADD(P->im, n * sizeof(double));

@@ -62,8 +62,7 @@ void dm_nlist_free(demill_world *w)
     free(w->wg.lost);
 }
 
-/* Sizes the per-particle scratch for n particles: 4 doubles each, the
- * largest particle field (an orientation). */
+/* Sizes the per-particle scratch for n particles. */
 int dm_grid_reserve(dm_grid *g, uint32_t n)
 {
     if (n + 1 <= g->cap)
@@ -72,7 +71,7 @@ int dm_grid_reserve(dm_grid *g, uint32_t n)
     void **const arrays[] = {(void **)&g->cell_of, (void **)&g->order, (void **)&g->inv,
                              (void **)&g->row, (void **)&g->scratch};
     const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint32_t),
-                            sizeof(uint32_t), 4 * sizeof(double)};
+                            sizeof(uint32_t), 3 * sizeof(double)};
     if (dm_grow_arrays(arrays, sizes, 5, cap))
         return -1;
     g->cap = (uint32_t)cap;

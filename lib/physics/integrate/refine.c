@@ -84,9 +84,10 @@ static int reserve(demill_world *w)
     const size_t D = (size_t)w->dim * sizeof(double), W = (size_t)dm_wdim(w) * sizeof(double);
     void **const arrays[] = {(void **)&R->xn, (void **)&R->vn, (void **)&R->fn,
                              (void **)&R->fprev, (void **)&R->wn, (void **)&R->tn,
-                             (void **)&R->tprev, (void **)&R->thn, (void **)&R->qn};
-    const size_t sizes[] = {D, D, D, D, W, W, W, sizeof(double),
-                            (size_t)dm_qdim(w) * sizeof(double)};
+                             (void **)&R->tprev, (void **)&R->thn, (void **)&R->qn[0],
+                             (void **)&R->qn[1], (void **)&R->qn[2], (void **)&R->qn[3]};
+    const size_t Q = w->dim == 3 ? sizeof(double) : 0; /* each orientation array */
+    const size_t sizes[] = {D, D, D, D, W, W, W, sizeof(double), Q, Q, Q, Q};
     if (dm_grow_arrays(arrays, sizes, sizeof sizes / sizeof sizes[0], cap))
         return -1;
     R->cap = cap;
@@ -104,7 +105,8 @@ void dm_refine_free(demill_world *w)
     free(R->tn);
     free(R->tprev);
     free(R->thn);
-    free(R->qn);
+    for (int c = 0; c < 4; c++)
+        free(R->qn[c]);
     free(R->hist);
     free(R->on);
     free(R->wall_diss);
@@ -128,7 +130,8 @@ static void trade(demill_world *w)
         if (w->dim == 2)
             swap(&P->theta, &R->thn);
         else
-            swap(&P->q, &R->qn);
+            for (int c = 0; c < 4; c++)
+                swap(&P->q[c], &R->qn[c]);
     }
 }
 
@@ -261,8 +264,7 @@ DM_INLINE void predict(const int D, demill_world *w, refine_args *a, int t, uint
         return;
     double *restrict om = P->w, *restrict wp = P->wp, *restrict theta = P->theta;
     const double *restrict wn = R->wn, *restrict tn = R->tn, *restrict tq = P->t;
-    const double *restrict thn = R->thn, *restrict ii = P->iinv, *restrict qn = R->qn;
-    double *restrict qi = P->q;
+    const double *restrict thn = R->thn, *restrict ii = P->iinv;
     for (uint32_t i = i0; i < i1; i++) {
         double phi[3]; /* 3D: the rotation vector of the step, Δt times the mean ω */
         for (int c = 0; c < W; c++) {
@@ -276,8 +278,10 @@ DM_INLINE void predict(const int D, demill_world *w, refine_args *a, int t, uint
                 phi[c] = th;
         }
         if (D == 3) {
-            memcpy(qi + 4 * i, qn + 4 * i, 4 * sizeof *qi);
-            dm_quat_turn(qi + 4 * i, phi);
+            double q[4];
+            dm_quat_get(R->qn, i, q);
+            dm_quat_turn(q, phi, 1.0);
+            dm_quat_put(P->q, i, q);
         }
     }
 }
