@@ -67,7 +67,7 @@ DM_INLINE void verlet_drift(const int D, dm_particles *P, const step_args *a, ui
     const double dt = a->dt, h = a->h;
     const int kick = a->kick;
     uint64_t worst = 0;
-    for (uint32_t i = i0; i < i1; i++) {
+    for (size_t i = i0; i < i1; i++) {
         double d2 = 0.0;
         for (int c = 0; c < D; c++) {
             const double acc = f[D * i + c] * im[i];
@@ -94,7 +94,7 @@ DM_INLINE void euler_drift(const int D, dm_particles *P, const step_args *a, uin
     const double *restrict f = P->f, *restrict im = P->im, *restrict x0 = P->x0;
     const double dt = a->dt;
     uint64_t worst = 0;
-    for (uint32_t i = i0; i < i1; i++) {
+    for (size_t i = i0; i < i1; i++) {
         double d2 = 0.0;
         for (int c = 0; c < D; c++) {
             v[D * i + c] += dt * f[D * i + c] * im[i];
@@ -113,7 +113,7 @@ DM_INLINE void kick(const int D, dm_particles *P, const step_args *a, uint32_t i
     double *restrict v = P->v;
     const double *restrict f = P->f, *restrict im = P->im;
     const double h = a->h;
-    for (uint32_t i = i0; i < i1; i++)
+    for (size_t i = i0; i < i1; i++)
         for (int c = 0; c < D; c++)
             v[D * i + c] += h * (f[D * i + c] * im[i]);
 }
@@ -173,7 +173,7 @@ DM_INLINE void spin(const int D, dm_particles *P, const step_args *a, uint32_t i
     const double *restrict t = P->t, *restrict ii = P->iinv;
     const double h = a->h, hth = a->hth;
     const int kick = a->kick, predict = a->predict;
-    for (uint32_t i = i0; i < i1; i++) {
+    for (size_t i = i0; i < i1; i++) {
         for (int c = 0; c < W; c++) {
             const double al = t[W * i + c] * ii[i];
             double o = om[W * i + c];
