@@ -6,11 +6,11 @@
  *  - Two spheres (a dumbbell, equal and unequal radii, overlapping and not)
  *    give the mass, centre of mass and inertia tensor of their union to
  *    1e-12 relative. The reference integrates the union directly along the
- *    line of centres as a solid of revolution: the plane of the two spheres'
- *    circle of intersection, x = a = (d² + R² - r²)/(2d) from the first
- *    centre, splits it into a part of the first ball (x < a) and a part of
- *    the second (x > a); the radius² of a cross-section, ρ²(x) = R² - (x - c)²,
- *    is a polynomial in x, so the volume π∫ρ², the axial moment π∫x ρ², the
+ *    line of centres as a solid of revolution (collinear(), for any number
+ *    of balls on a line): the radius² of its cross-section at x is
+ *    ρ²(x) = max_k (R_k² - (x - x_k)²), between the break points (the
+ *    balls' ends and where two of these parabolas cross) that of one ball,
+ *    a polynomial in x, so the volume π∫ρ², the axial moment π∫x ρ², the
  *    axial inertia (π/2)∫ρ⁴ (a disc's m ρ²/2) and the inertia about a
  *    perpendicular axis π∫(ρ⁴/4 + x² ρ²) (a disc's m ρ²/4, shifted by x) are
  *    integrals of polynomials, which the test takes exactly from their
@@ -97,13 +97,61 @@ static void slices(double R, double c, double x0, double x1, double s[4])
     s[3] += M_PI * (pint(r4, 5, x0, x1) / 4.0 + pint(x2r2, 5, x0, x1));
 }
 
-/* The mass properties of the union of the ball of radius R at p and the
- * ball of radius r at p + d u (u a unit vector), by slices along u. */
-static dm_mass_props dumbbell(const double p[3], const double u[3], double R, double r, double d)
+static int by_value(const void *a, const void *b)
 {
-    double a = (d * d + R * R - r * r) / (2.0 * d), s[4] = {0};
-    slices(R, 0.0, -R, fmin(a, R), s);
-    slices(r, d, fmax(a, d - r), d + r, s);
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The break points of the union of n balls (or discs) centred on an axis
+ * at x[k], radii R[k], sorted into br (room for 2n + n(n - 1)/2 values;
+ * returns their count): the balls' ends x_k ± R_k and where two balls'
+ * squared cross-section radii R_k² - (x - x_k)² cross, at
+ * x = (R_j² - R_k² + x_k² - x_j²)/(2 (x_k - x_j)). Between two break points
+ * one ball has the widest cross-section throughout. */
+static int axis_breaks(int n, const double *x, const double *R, double *br)
+{
+    int nb = 0;
+    for (int k = 0; k < n; k++) {
+        br[nb++] = x[k] - R[k];
+        br[nb++] = x[k] + R[k];
+        for (int j = 0; j < k; j++)
+            if (x[j] != x[k])
+                br[nb++] = (R[j] * R[j] - R[k] * R[k] + x[k] * x[k] - x[j] * x[j]) /
+                           (2.0 * (x[k] - x[j]));
+    }
+    qsort(br, (size_t)nb, sizeof *br, by_value);
+    return nb;
+}
+
+/* The ball with the widest cross-section at x, or -1 if none reaches x. */
+static int widest(int n, const double *x, const double *R, double at)
+{
+    int best = -1;
+    double w = 0.0;
+    for (int k = 0; k < n; k++) {
+        double r2 = R[k] * R[k] - (at - x[k]) * (at - x[k]);
+        if (r2 > w)
+            w = r2, best = k;
+    }
+    return best;
+}
+
+/* The mass properties of the union of n balls centred on the line p + x u
+ * (u a unit vector) at x[k], radii R[k] (n <= 8), by slices along u: the
+ * union is a solid of revolution whose cross-section radius² is
+ * ρ²(x) = max_k (R_k² - (x - x_k)²), between break points the slices of
+ * one ball (piecewise spherical caps). */
+static dm_mass_props collinear(const double p[3], const double u[3], int n, const double *x,
+                               const double *R)
+{
+    double br[44], s[4] = {0};
+    int nb = axis_breaks(n, x, R, br);
+    for (int k = 0; k + 1 < nb; k++) {
+        int w = widest(n, x, R, 0.5 * (br[k] + br[k + 1]));
+        if (w >= 0)
+            slices(R[w], x[w], br[k], br[k + 1], s);
+    }
     double m = RHO * s[0], xc = s[1] / s[0];
     double iax = RHO * s[2], iperp = RHO * s[3] - m * xc * xc;
     dm_mass_props q = {.mass = m};
@@ -113,6 +161,13 @@ static dm_mass_props dumbbell(const double p[3], const double u[3], double R, do
             q.inertia[j][k] = iax * u[j] * u[k] + iperp * ((j == k) - u[j] * u[k]);
     }
     return q;
+}
+
+/* The union of the ball of radius R at p and the ball of radius r at
+ * p + d u. */
+static dm_mass_props dumbbell(const double p[3], const double u[3], double R, double r, double d)
+{
+    return collinear(p, u, 2, (double[2]){0.0, d}, (double[2]){R, r});
 }
 
 /* The inertia of q about the point o (parallel axes), times sign, added to
