@@ -394,7 +394,7 @@ static int power_cell(ballset *b, size_t i)
  * sin θ, cos² θ, sin² θ and sin θ cos θ in closed form. */
 static void sector(double R, const double a[2], const double b[2], double s[6])
 {
-    double la = hypot(a[0], a[1]), lb = hypot(b[0], b[1]);
+    double la = sqrt(a[0] * a[0] + a[1] * a[1]), lb = sqrt(b[0] * b[0] + b[1] * b[1]);
     double u[2] = {a[0] / la, a[1] / la}, v[2] = {b[0] / lb, b[1] / lb};
     double phi = atan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1]);
     double R2 = R * R, w = 0.5 * (v[0] * v[1] - u[0] * u[1]);
