@@ -21,21 +21,31 @@ typedef struct dm_mass_props {
 
 /* The mass properties of the union of n spheres (centres c, 3 n doubles,
  * radii r, n doubles) of one density rho (kg/m³), each point of space
- * counted once however many spheres cover it. Exact to round-off
- * (inclusion-exclusion with the closed-form moments of each lens, see
- * union.c): a sphere inside another (or equal to an earlier one) adds
- * nothing, two overlapping spheres add their lens once. It takes O(n²)
- * operations and O(n) more per overlapping pair (the test whether a ball
- * lies inside another), O(n⁴) at worst: meant for templates of tens of
- * spheres.
+ * counted once however many spheres cover it; a sphere inside another (or
+ * equal to an earlier one) adds nothing. Two methods (union.c):
+ *  - where no three spheres overlap pairwise, inclusion-exclusion with the
+ *    closed-form moments of each lens, exact to round-off, in O(n²)
+ *    operations and O(n) more per overlapping pair;
+ *  - where three do, slices along z, each a union of discs weighed exactly
+ *    by its power diagram, integrated by adaptive Gauss-Kronrod quadrature
+ *    split where the slices change their make-up, to a requested 1e-13 of
+ *    the spheres' summed volume V times the shape's size L to the power of
+ *    each moment (V L for the centre of mass' moment, V L² for inertia).
+ *    Measured (tests/unit/shapes.c): rows of 3 to 5 overlapping spheres
+ *    within 5.5e-15 of their closed form, a 12-sphere cluster turned and
+ *    moved within 3.6e-15 of the turned result. It takes about 0.005 s
+ *    for 10 spheres, 0.1 s for 50 and 0.35 s for 100 (CPU time on one
+ *    core; radii 0.6 to 1, centres uniform in an ellipsoid, each sphere
+ *    meeting 6 to 11 others on average; denser clusters, each meeting up
+ *    to 58, cost no more): meant for templates, built once.
  * Errors, with *out untouched and *why (if why is not NULL) set to a
  * static message:
  *  DEMILL_ERR_NULL_POINTER   c, r or out is NULL;
  *  DEMILL_ERR_NOT_FINITE     a centre, a radius or rho is NaN or infinite;
- *  DEMILL_ERR_INVALID_VALUE  n is 0, a radius or rho is not positive, or
- *                            three spheres overlap pairwise (not yet
- *                            supported: the union then needs the volume
- *                            of triple intersections). */
+ *  DEMILL_ERR_INVALID_VALUE  n is 0, or a radius or rho is not positive;
+ *  DEMILL_ERR_OUT_OF_MEMORY  the working lists of the second method (O(n)
+ *                            doubles, and a list of O(n²) neighbours at
+ *                            worst) could not be allocated. */
 demill_status dm_spheres_union_mass(size_t n, const double *c, const double *r, double rho,
                                     dm_mass_props *out, const char **why);
 
@@ -44,8 +54,10 @@ demill_status dm_spheres_union_mass(size_t n, const double *c, const double *r, 
  * prism of that thickness (mass rho t area), with t = 0 the union of the
  * spheres of those centres and radii (mass rho volume). The results are the
  * mass *m, the centre of mass com (2 doubles) and the moment of inertia *i
- * about the axis through the centre of mass normal to the plane. Exact to
- * round-off, as fast, with the same errors as dm_spheres_union_mass() (t
+ * about the axis through the centre of mass normal to the plane. With a
+ * thickness exact to round-off whether or not three discs overlap pairwise
+ * (inclusion-exclusion, or the discs' power diagram where three do);
+ * without one as accurate as dm_spheres_union_mass(). The same errors (t
  * negative or not finite also DEMILL_ERR_INVALID_VALUE or
  * DEMILL_ERR_NOT_FINITE); nothing is written on failure. */
 demill_status dm_discs_union_mass(size_t n, const double *c, const double *r, double rho,
