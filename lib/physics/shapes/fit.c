@@ -597,8 +597,8 @@ static void cover(fit *f, const double *c, double r)
         }
 }
 
-/* The 26 directions to a cube's neighbours, as offsets and unit vectors. */
-static void directions(int off[26][3], double u[26][3])
+/* The 26 unit vectors towards a cube's neighbours. */
+static void directions(double u[26][3])
 {
     int m = 0;
     for (int a = -1; a <= 1; a++)
@@ -607,7 +607,6 @@ static void directions(int off[26][3], double u[26][3])
                 if (!a && !b && !c)
                     continue;
                 const double len = sqrt((double)(a * a + b * b + c * c));
-                off[m][0] = a, off[m][1] = b, off[m][2] = c;
                 u[m][0] = a / len, u[m][1] = b / len, u[m][2] = c / len;
                 m++;
             }
@@ -617,9 +616,8 @@ static void directions(int off[26][3], double u[26][3])
  * gain, each step shorter than the radius so that the centre stays inside. */
 static void refine(const fit *f, double *c, double *r, double *g)
 {
-    int off[26][3];
     double u[26][3];
-    directions(off, u);
+    directions(u);
     double s = 0.5 * f->h;
     for (int level = 0; level <= SEARCH_LEVELS; level++, s *= 0.5)
         for (int moves = 0; moves < 1000; moves++) {
@@ -668,6 +666,29 @@ static void heap_down(entry *e, size_t n, size_t k)
     }
 }
 
+/* Whether cube q is a candidate: inside, and no neighbour's centre farther
+ * from the surface by RIDGE of the step to it. */
+static int on_ridge(const fit *f, size_t q)
+{
+    if (!f->state[q])
+        return 0;
+    int ijk[3];
+    double x[3];
+    cube_at(f, q, ijk, x);
+    for (int a = -1; a <= 1; a++)
+        for (int b = -1; b <= 1; b++)
+            for (int e = -1; e <= 1; e++) {
+                const int i = ijk[0] + a, j = ijk[1] + b, k = ijk[2] + e;
+                if ((!a && !b && !e) || i < 0 || j < 0 || k < 0 || i >= f->n[0] ||
+                    j >= f->n[1] || k >= f->n[2])
+                    continue;
+                const size_t p = cube(f, i, j, k);
+                if (f->state[p] && f->d[p] - f->d[q] >= RIDGE * f->h * sqrt(a * a + b * b + e * e))
+                    return 0;
+            }
+    return 1;
+}
+
 /* The distances, the candidates near the medial axis, and the greedy
  * choice of up to ns balls into c and r; *placed says how many. */
 static demill_status choose(fit *f, size_t ns, double *c, double *r, size_t *placed)
@@ -680,32 +701,16 @@ static demill_status choose(fit *f, size_t ns, double *c, double *r, size_t *pla
             cube_at(f, q, ijk, x);
             f->d[q] = surface_dist(f, x);
         }
-    int off[26][3];
-    double u[26][3];
-    directions(off, u);
-    entry *heap = malloc((ncube ? ncube : 1) * sizeof *heap);
-    if (!heap)
-        return fail(f, DEMILL_ERR_OUT_OF_MEMORY, "out of memory for %zu candidates", ncube);
     size_t nh = 0;
-    for (size_t q = 0; q < ncube; q++) {
-        if (!f->state[q])
-            continue;
-        int ijk[3];
-        double x[3];
-        cube_at(f, q, ijk, x);
-        int ridge = 1;
-        for (int m = 0; m < 26 && ridge; m++) {
-            const int a = ijk[0] + off[m][0], b = ijk[1] + off[m][1], e = ijk[2] + off[m][2];
-            if (a < 0 || b < 0 || e < 0 || a >= f->n[0] || b >= f->n[1] || e >= f->n[2])
-                continue;
-            const size_t p = cube(f, a, b, e);
-            const double step = f->h * sqrt((double)(off[m][0] * off[m][0] +
-                                                     off[m][1] * off[m][1] + off[m][2] * off[m][2]));
-            ridge = !(f->state[p] && f->d[p] - f->d[q] >= RIDGE * step);
-        }
-        if (ridge)
+    for (size_t q = 0; q < ncube; q++)
+        nh += on_ridge(f, q);
+    entry *heap = malloc((nh ? nh : 1) * sizeof *heap);
+    if (!heap)
+        return fail(f, DEMILL_ERR_OUT_OF_MEMORY, "out of memory for %zu candidates", nh);
+    nh = 0;
+    for (size_t q = 0; q < ncube; q++)
+        if (on_ridge(f, q))
             heap[nh++] = (entry){4.0 / 3.0 * DM_PI * f->d[q] * f->d[q] * f->d[q], q};
-    }
     for (size_t k = nh / 2; k-- > 0;)
         heap_down(heap, nh, k);
     size_t n = 0;
