@@ -39,7 +39,10 @@
  *    N = 5, 20, 50, and agrees with a Monte Carlo estimate (2e5 points in
  *    the bounding box, inside the convex mesh when inside every face's
  *    plane) within four standard errors and the resolution error; no point
- *    of the union is outside the mesh.
+ *    of the union is outside the mesh. The same for a shape that is not
+ *    convex, a tripod of seven 4 mm cubes (a corner and two along each
+ *    axis, 60 triangles: the faces of the cubes not shared), a point inside
+ *    it when inside one of the cubes.
  *  - The same input gives bitwise the same spheres.
  *  - An open mesh (one triangle removed), a flipped triangle, a mesh inside
  *    out, N = 0, a NaN vertex, a zero-area triangle, an index out of range
@@ -374,9 +377,24 @@ START_TEST(test_dumbbell)
 }
 END_TEST
 
-/* Fits N = 5, 20, 50 spheres to the convex mesh m and checks that the
- * volume error falls and agrees with a Monte Carlo estimate. */
-static void falls(const char *name, const mesh *m)
+/* Whether x is inside the convex mesh of the planes pl (as planes() gives
+ * them, nt of them). */
+typedef struct convex {
+    const double *pl;
+    size_t nt;
+} convex;
+
+static int in_convex(const void *ctx, const double *x)
+{
+    const convex *cv = ctx;
+    return convex_depth(cv->pl, cv->nt, x) > 0.0;
+}
+
+/* Fits N = 5, 20, 50 spheres to the mesh m and checks that the volume error
+ * falls and agrees with a Monte Carlo estimate, the points' inside told by
+ * inside(ctx, x). */
+static void falls(const char *name, const mesh *m, int (*inside)(const void *, const double *),
+                  const void *ctx)
 {
     static const size_t ns[3] = {5, 20, 50};
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
@@ -384,7 +402,7 @@ static void falls(const char *name, const mesh *m)
         for (int a = 0; a < 3; a++)
             lo[a] = fmin(lo[a], m->v[3 * k + a]), hi[a] = fmax(hi[a], m->v[3 * k + a]);
     enum { POINTS = 200000 };
-    double *x = malloc(3 * POINTS * sizeof *x), *pl = planes(m);
+    double *x = malloc(3 * POINTS * sizeof *x);
     char *in = malloc(POINTS);
     dm_rng rng;
     dm_rng_seed(&rng, 17);
@@ -392,7 +410,7 @@ static void falls(const char *name, const mesh *m)
     for (int k = 0; k < POINTS; k++) {
         for (int a = 0; a < 3; a++)
             x[3 * k + a] = lo[a] + (hi[a] - lo[a]) * dm_rng_uniform(&rng);
-        in[k] = convex_depth(pl, m->nt, x + 3 * k) > 0.0;
+        in[k] = (char)inside(ctx, x + 3 * k);
         in_mesh += in[k];
     }
     double last = 1.0;
@@ -421,7 +439,6 @@ static void falls(const char *name, const mesh *m)
         last = rep.volume_error;
     }
     free(x);
-    free(pl);
     free(in);
 }
 
@@ -429,7 +446,9 @@ START_TEST(test_ellipsoid)
 {
     const double s[3] = {R0, 0.7 * R0, 0.5 * R0};
     mesh m = icosphere(3, s, P0);
-    falls("ellipsoid", &m);
+    const convex cv = {planes(&m), m.nt};
+    falls("ellipsoid", &m, in_convex, &cv);
+    free((void *)cv.pl);
     mesh_free(&m);
 }
 END_TEST
@@ -439,7 +458,68 @@ START_TEST(test_box)
     const double lo[3] = {P0[0] - 0.7 * R0, P0[1] - 0.7 * R0, P0[2] - 0.5 * R0},
                  hi[3] = {P0[0] + 0.7 * R0, P0[1] + 0.7 * R0, P0[2] + 0.5 * R0};
     mesh m = box(lo, hi);
-    falls("box", &m);
+    const convex cv = {planes(&m), m.nt};
+    falls("box", &m, in_convex, &cv);
+    free((void *)cv.pl);
+    mesh_free(&m);
+}
+END_TEST
+
+/* A tripod of seven cubes of side TRIPOD from P0: one at the corner and
+ * two along each axis from it. */
+#define TRIPOD (0.4 * R0)
+static const int LEGS[7][3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0},
+                               {0, 2, 0}, {0, 0, 1}, {0, 0, 2}};
+
+static int tripod_has(int i, int j, int k)
+{
+    for (int c = 0; c < 7; c++)
+        if (LEGS[c][0] == i && LEGS[c][1] == j && LEGS[c][2] == k)
+            return 1;
+    return 0;
+}
+
+static int in_tripod(const void *ctx, const double *x)
+{
+    (void)ctx;
+    return tripod_has((int)floor((x[0] - P0[0]) / TRIPOD), (int)floor((x[1] - P0[1]) / TRIPOD),
+                      (int)floor((x[2] - P0[2]) / TRIPOD));
+}
+
+/* The tripod's surface: every face of a cube whose neighbour across it is
+ * not in the tripod, two triangles wound outwards as box() winds them. */
+static mesh tripod(void)
+{
+    static const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    static const int across[6][3] = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0},
+                                     {0, 1, 0},  {-1, 0, 0}, {1, 0, 0}};
+    mesh m = {0};
+    for (int c = 0; c < 7; c++)
+        for (int f = 0; f < 6; f++) {
+            const int *l = LEGS[c];
+            if (tripod_has(l[0] + across[f][0], l[1] + across[f][1], l[2] + across[f][2]))
+                continue;
+            uint32_t v[4];
+            for (int k = 0; k < 4; k++) {
+                const int corner = q[f][k];
+                const double x[3] = {P0[0] + TRIPOD * (l[0] + (corner & 1)),
+                                     P0[1] + TRIPOD * (l[1] + (corner >> 1 & 1)),
+                                     P0[2] + TRIPOD * (l[2] + (corner >> 2 & 1))};
+                v[k] = vertex(&m, x);
+            }
+            triangle(&m, v[0], v[1], v[2]);
+            triangle(&m, v[0], v[2], v[3]);
+        }
+    return m;
+}
+
+START_TEST(test_tripod)
+{
+    mesh m = tripod();
+    ck_assert_uint_eq(m.nt, 2 * (7 * 6 - 2 * 6)); /* 6 shared faces hidden on both sides */
+    DM_ASSERT_REL(volume(&m, P0), 7.0 * TRIPOD * TRIPOD * TRIPOD, 1e-12);
+    falls("tripod", &m, in_tripod, NULL);
     mesh_free(&m);
 }
 END_TEST
@@ -573,6 +653,7 @@ int main(void)
     tcase_add_test(tc, test_dumbbell);
     tcase_add_test(tc, test_ellipsoid);
     tcase_add_test(tc, test_box);
+    tcase_add_test(tc, test_tripod);
     tcase_add_test(tc, test_grid_lines_on_edges);
     tcase_add_test(tc, test_deterministic);
     tcase_add_test(tc, test_refused);

@@ -104,10 +104,12 @@ typedef struct dm_fit_report {
  * h = (the bounding box's longest side) / cells (fit.c says how and cites
  * the method). Writes the first rep->n centres (3 doubles each) and radii
  * and the fit's report *rep. Deterministic: the same input gives the same
- * output, bitwise. The grid takes about 14 bytes a cube (cells³ of them for
- * a cube-shaped box: 3.7 MB at cells = 64, 235 MB at the most, 256); the
- * time grows with the cubes, the triangles (log) and the spheres: about a
- * second for 1280 triangles, 50 spheres and cells = 64 (unit_shapes_fit).
+ * output, bitwise. The grid takes 13 bytes a cube, and 16 more a candidate
+ * centre, near the medial axis (cells³ cubes for a cube-shaped box: 3.4 MB
+ * at cells = 64, 220 MB at the most, 256); the time grows with the cubes,
+ * the triangles (log) and the spheres: measured on one core, 0.8 s for an
+ * ellipsoid of 1280 triangles, 50 spheres and cells = 64, 5.2 s with
+ * cells = 128.
  * Errors, with nothing written but err:
  *  DEMILL_ERR_NULL_POINTER   v, tri, centres, radii or rep is NULL;
  *  DEMILL_ERR_NOT_FINITE     a vertex is NaN or infinite;
