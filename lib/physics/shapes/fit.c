@@ -74,6 +74,7 @@
 #define STACK 64        /* more than the depth + 1 of a median-split tree of 2^32 triangles */
 #define RIDGE 0.8       /* a centre is off the medial axis if d grows by this per step */
 #define SEARCH_LEVELS 14 /* the compass search's step halvings, from h/2 */
+#define SEARCH_MOVES 1000 /* its moves at one step length, at most (8 seen) */
 
 typedef struct node {
     double lo[3], hi[3];
@@ -173,13 +174,13 @@ static demill_status check_triangles(fit *f)
             if (c[j] == c[(j + 1) % 3])
                 return fail(f, DEMILL_ERR_INVALID_VALUE,
                             "triangle %zu has zero area: two corners are vertex %u", t, c[j]);
-        double e[3][3], longest = 0.0, n[3];
+        double e[3][3], longest2 = 0.0, n[3];
         for (int j = 0; j < 3; j++) {
             sub(vtx(f, t, (j + 1) % 3), vtx(f, t, j), e[j]);
-            longest = fmax(longest, dot(e[j], e[j]));
+            longest2 = fmax(longest2, dot(e[j], e[j]));
         }
         cross(e[0], e[2], n);
-        if (!(sqrt(dot(n, n)) > FLAT * longest))
+        if (!(sqrt(dot(n, n)) > FLAT * longest2)) /* |n| = height x longest edge */
             return fail(f, DEMILL_ERR_INVALID_VALUE,
                         "triangle %zu has zero area: its corners are in a line", t);
     }
@@ -620,7 +621,7 @@ static void refine(const fit *f, double *c, double *r, double *g)
     directions(u);
     double s = 0.5 * f->h;
     for (int level = 0; level <= SEARCH_LEVELS; level++, s *= 0.5)
-        for (int moves = 0; moves < 1000; moves++) {
+        for (int moves = 0; moves < SEARCH_MOVES; moves++) {
             double best[3], br = 0.0, bg = *g;
             for (int m = 0; m < 26; m++) {
                 if (s >= *r)
