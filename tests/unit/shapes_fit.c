@@ -45,9 +45,9 @@
  *    it when inside one of the cubes.
  *  - The same input gives bitwise the same spheres.
  *  - An open mesh (one triangle removed), a flipped triangle, a mesh inside
- *    out, N = 0, a NaN vertex, a zero-area triangle, an index out of range
- *    and too few cells are refused with their codes and a message, and
- *    nothing is written.
+ *    out, N = 0, a NaN vertex, a zero-area triangle, an index out of range,
+ *    too few cells and a NULL array are refused with their codes and a
+ *    message, and nothing is written.
  */
 #include <math.h>
 #include <stdio.h>
@@ -639,6 +639,8 @@ START_TEST(test_refused)
     double c[3], r;
     dm_fit_report rep;
     char err[256];
+    ck_assert_int_eq(dm_spheres_fit_mesh(m.nv, NULL, m.nt, m.t, 1, CELLS, c, &r, &rep, NULL, 0),
+                     DEMILL_ERR_NULL_POINTER);
     ck_assert_int_eq(fit(&m, 1, CELLS, c, &r, &rep, err), DEMILL_OK);
     ck_assert_str_eq(err, "");
     mesh_free(&m);

@@ -973,8 +973,8 @@ demill_status dm_spheres_fit_mesh(size_t nv, const double *v, size_t nt, const u
                                   size_t nspheres, int cells, double *centres, double *radii,
                                   dm_fit_report *rep, char *err, size_t errlen)
 {
-    fit f = {.v = v, .tri = tri, .nv = nv, .nt = nt, .err = err, .errlen = errlen};
-    if (errlen)
+    fit f = {.v = v, .tri = tri, .nv = nv, .nt = nt, .err = err, .errlen = err ? errlen : 0};
+    if (f.errlen)
         err[0] = '\0';
     if (!v || !tri || !centres || !radii || !rep)
         return fail(&f, DEMILL_ERR_NULL_POINTER, "a required pointer is NULL");

@@ -86,7 +86,8 @@ typedef struct dm_fit_report {
                                 * within deviation_out + deviation_out_tol */
     double deviation_in;     /* largest distance from a point of the union's surface to the
                               * mesh's surface */
-    double deviation_in_tol; /* the spacing of its sample (about h/2) */
+    double deviation_in_tol; /* the spacing of its sample (about h/2; an estimate of
+                              * what it can miss, not a bound) */
     int cells[3];            /* the grid's cubes along x, y, z */
     double h;                /* their side */
     size_t inside;           /* cube centres inside the mesh (inside h³ estimates its
@@ -114,7 +115,8 @@ typedef struct dm_fit_report {
  *  DEMILL_ERR_NULL_POINTER   v, tri, centres, radii or rep is NULL;
  *  DEMILL_ERR_NOT_FINITE     a vertex is NaN or infinite;
  *  DEMILL_ERR_INVALID_VALUE  nspheres is 0; cells is not from DM_FIT_CELLS_MIN
- *                            to DM_FIT_CELLS_MAX; fewer than 4 triangles; a
+ *                            to DM_FIT_CELLS_MAX; fewer than 4 triangles, or
+ *                            more than UINT32_MAX / 3 triangles or vertices; a
  *                            corner's index is not below nv; a triangle has
  *                            zero area (two corners the same vertex, or a
  *                            height under 1e-12 of its longest edge); the
@@ -125,8 +127,8 @@ typedef struct dm_fit_report {
  *                            (flat, or inside out); no cube centre is
  *                            inside it (cells too few for a thin shape);
  *  DEMILL_ERR_OUT_OF_MEMORY.
- * err (errlen bytes, may be 0) says what is wrong, naming the vertex,
- * triangle (from 0) or edge; it is emptied on success. */
+ * err (errlen bytes; NULL when errlen is 0) says what is wrong, naming the
+ * vertex, triangle (from 0) or edge; it is emptied on success. */
 demill_status dm_spheres_fit_mesh(size_t nv, const double *v, size_t nt, const uint32_t *tri,
                                   size_t nspheres, int cells, double *centres, double *radii,
                                   dm_fit_report *rep, char *err, size_t errlen);
