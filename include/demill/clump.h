@@ -76,7 +76,9 @@ DEMILL_API int32_t demill_clump_field_size(int32_t field);
 
 /** Adds a clump template: a rigid shape of n spheres (2D: discs, z = 0) of
  *  one material, whose mass properties are those of the union of the
- *  spheres (exact to round-off). The material's density and, in 2D, the
+ *  spheres (exact to round-off where no three spheres overlap pairwise,
+ *  else to 1e-13 of the spheres' volume times the shape's size to the
+ *  power of each moment). The material's density and, in 2D, the
  *  world's disc thickness are read now: neither can change afterwards
  *  (demill_material_set() and demill_world_set() refuse it). Templates are
  *  never removed.
@@ -89,9 +91,9 @@ DEMILL_API int32_t demill_clump_field_size(int32_t field);
  *                  DEMILL_KIND_TEMPLATE).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (material),
  *          DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE (a centre or a
- *          radius), DEMILL_ERR_INVALID_VALUE (n = 0, a radius <= 0, a mass
- *          that is not finite and positive, or three spheres that overlap
- *          pairwise, which the union does not support yet),
+ *          radius), DEMILL_ERR_INVALID_VALUE (n = 0, a radius <= 0, or a
+ *          mass or principal moment that is not finite and positive, nor
+ *          its inverse),
  *          DEMILL_ERR_DIMENSION (a centre with z != 0 in a 2D world) or
  *          DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_clump_template_add(demill_world *world, demill_id material,

@@ -4,9 +4,9 @@
  * Bulk functions move whole fields in and out as flat, caller-owned arrays of
  * doubles: a vector field takes 3 doubles per particle (x, y, z; in a 2D
  * world z is 0, and angular velocity has only its z component), a scalar
- * field 1. Bulk reads and writes use "id order": the order in which
- * demill_particles_read_ids() lists the particles. That order changes only
- * when particles are added or removed.
+ * field 1, an orientation 4 (w, x, y, z). Bulk reads and writes use "id
+ * order": the order in which demill_particles_read_ids() lists the
+ * particles. That order changes only when particles are added or removed.
  */
 #ifndef DEMILL_PARTICLES_H
 #define DEMILL_PARTICLES_H
@@ -36,7 +36,16 @@ enum {
      *  contact's reduced mass m* is the moving particle's mass. Two fixed
      *  particles do not touch, nor does a fixed particle touch a wall. For
      *  rough floors and walls made of particles. 0 makes it move again. */
-    DEMILL_PARTICLE_FIXED = 9
+    DEMILL_PARTICLE_FIXED = 9,
+    /** 4 doubles (w, x, y, z): 3D worlds only, the orientation as a unit
+     *  quaternion, turning the particle's body frame into the world frame
+     *  (a vector b of the body is R(q) b in the world); read/write. A new
+     *  particle starts at (1, 0, 0, 0); each step turns it by the angular
+     *  velocity (docs/shapes.md, Orientation). A write is normalised (any
+     *  non-zero multiple of a rotation's quaternion gives that rotation);
+     *  a component that is not finite gives DEMILL_ERR_NOT_FINITE, all four
+     *  0 DEMILL_ERR_INVALID_VALUE, a 2D world DEMILL_ERR_DIMENSION. */
+    DEMILL_PARTICLE_ORIENTATION = 10
 };
 
 /** Id fields, for demill_particles_read_ids(). */
@@ -55,7 +64,7 @@ enum {
 
 /** The size of a particle field.
  *  @param field a DEMILL_PARTICLE_* field.
- *  @return the number of doubles per particle of the field (1 or 3), or 0
+ *  @return the number of doubles per particle of the field (1, 3 or 4), or 0
  *          for an unknown field. */
 DEMILL_API int32_t demill_particle_field_size(int32_t field);
 
@@ -104,7 +113,8 @@ DEMILL_API demill_status demill_particles_remove(demill_world *world, size_t n,
  *  @param[out] count  receives the number of particles (may be NULL if out is
  *                     not).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
- *          DEMILL_ERR_DIMENSION (the angle in a 3D world),
+ *          DEMILL_ERR_DIMENSION (the angle in a 3D world, the orientation
+ *          in a 2D one),
  *          DEMILL_ERR_NULL_POINTER or DEMILL_ERR_BUFFER_TOO_SMALL (nothing
  *          written, *count set). */
 DEMILL_API demill_status demill_particles_read(const demill_world *world, int32_t field,
@@ -149,9 +159,10 @@ DEMILL_API demill_status demill_particles_write(demill_world *world, int32_t fie
  *  @param world     the world.
  *  @param particle  the particle's id.
  *  @param field     a DEMILL_PARTICLE_* field.
- *  @param[out] out  receives the field's 1 or 3 doubles.
+ *  @param[out] out  receives the field's 1, 3 or 4 doubles.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
- *          DEMILL_ERR_DIMENSION (the angle in a 3D world) or
+ *          DEMILL_ERR_DIMENSION (the angle in a 3D world, the orientation
+ *          in a 2D one) or
  *          DEMILL_ERR_NULL_POINTER. */
 DEMILL_API demill_status demill_particle_get(const demill_world *world, demill_id particle,
                                              int32_t field, double *out);
@@ -161,7 +172,7 @@ DEMILL_API demill_status demill_particle_get(const demill_world *world, demill_i
  *  @param world    the world.
  *  @param particle the particle's id.
  *  @param field    a writable DEMILL_PARTICLE_* field.
- *  @param in       the field's 1 or 3 doubles (a radius as for
+ *  @param in       the field's 1, 3 or 4 doubles (a radius as for
  *                  demill_particles_write()).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NULL_POINTER,

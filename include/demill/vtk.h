@@ -26,12 +26,17 @@
  * | force            | Float64 | 3 components, N, as DEMILL_PARTICLE_FORCE     |
  * | torque           | Float64 | 3 components, N m, as DEMILL_PARTICLE_TORQUE  |
  * | angle            | Float64 | rad, 2D worlds only (DEMILL_PARTICLE_ANGLE)   |
+ * | orientation      | Float64 | 4 components w, x, y, z, 3D worlds only (DEMILL_PARTICLE_ORIENTATION) |
  *
  * Forces and torques are those of the last force evaluation (after a step,
  * or demill_world_step(world, 0)); before any they are 0. In a 2D world
  * every z is 0. In ParaView, show the particles with the Point Gaussian
  * representation scaled by radius ("Scale By Array", Gaussian Radius 1), or
- * with Glyph (Sphere, Scale Array radius, Scale Factor 2).
+ * with Glyph (Sphere, Scale Array radius, Scale Factor 2). To see 3D
+ * particles turn, use the 3D Glyphs representation (VTK's
+ * vtkGlyph3DMapper) with Orient on, Orientation Mode Quaternion and
+ * Orientation Vectors orientation: it takes a 4-component array as the
+ * quaternion w, x, y, z, which is this array's order.
  *
  * The wall file (.vtp, polygonal data) has the surfaces of the walls and of
  * the drum as they stand at the world's time:

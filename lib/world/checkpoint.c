@@ -90,7 +90,7 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 /* ---- the bytes of a state --------------------------------------------------- */
 
 #define CK_MAGIC "DEMILLCK"
-#define CK_FORMAT 4u          /* the format this library writes and the newest it reads;
+#define CK_FORMAT 5u          /* the format this library writes and the newest it reads;
                                  2 adds the impacts on an ore to the drum's spectrum,
                                  3 a material per part of the drum, the walls'
                                  meshes (section MESH), the feeds and outlets (FLOW),
@@ -100,7 +100,8 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
                                  (LOAD); 4 the extended laws' dissipation terms
                                  (WRLD), the cohesion law, the number of fields
                                  per material and of values per material pair
-                                 (MATS), and the number of contact lists (CONT) */
+                                 (MATS) and the number of contact lists (CONT);
+                                 5 the 3D particles' orientations (ORNT) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -283,6 +284,37 @@ static void transfer_handles(io *s, dm_handles *h, const char *what)
     io_array(s, &h->slot, h->n, h->n, sizeof *h->slot);
     io_array(s, &h->gen, h->n, h->n, sizeof *h->gen);
     io_array(s, &h->free, h->nfree, h->n, sizeof *h->free);
+}
+
+/* The orientations of a 3D world's n particles (section ORNT, from format 5
+ * on): the arrays w, x, y, z, each quaternion of norm 1 to within 1e-12 (the
+ * integrators keep it to round-off). An older file has none: its particles
+ * start at (1, 0, 0, 0), as new ones do. */
+static void transfer_orientations(io *s, dm_particles *P, size_t n)
+{
+    if (s->format < 5) {
+        for (int c = 0; c < 4 && s->reading && !s->status; c++) {
+            P->q[c] = malloc(n ? n * sizeof *P->q[c] : 1);
+            if (!P->q[c]) {
+                io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory");
+                return;
+            }
+            for (size_t i = 0; i < n; i++)
+                P->q[c][i] = c == 0 ? 1.0 : 0.0;
+        }
+        return;
+    }
+    io_section(s, "ORNT");
+    for (int c = 0; c < 4; c++)
+        io_f64_array(s, &P->q[c], n, n);
+    for (size_t i = 0; i < n && s->reading && !s->status; i++) {
+        double q[4];
+        dm_quat_get(P->q, (uint32_t)i, q);
+        const double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+        if (!(fabs(n2 - 1.0) <= 1e-12))
+            io_fail(s, DEMILL_ERR_FORMAT, "particle %zu: orientation of norm %.17g, not 1", i,
+                    sqrt(n2));
+    }
 }
 
 static void transfer_wall(io *s, dm_wall *wl)
@@ -733,6 +765,8 @@ static void transfer(io *s, demill_world *w)
     if (s->reading && !s->status && !(P->clump = calloc(n ? n : 1, sizeof *P->clump)))
         io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory"); /* no clumps: every particle free */
     transfer_handles(s, &w->ph, "particle handles");
+    if (w->dim == 3)
+        transfer_orientations(s, P, n);
 
     io_section(s, "WALL");
     io_count(s, &w->nwalls, UINT32_MAX - 1, "wall slots");

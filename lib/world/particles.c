@@ -130,6 +130,8 @@ demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const
         for (int c = 0; c < W; c++)
             P->w[W * i + c] = P->wp[W * i + c] = P->t[W * i + c] = 0.0;
         P->theta[i] = 0.0;
+        if (dm_qdim(w))
+            dm_quat_put(P->q, i, (const double[4]){1.0, 0.0, 0.0, 0.0});
         P->r[i] = radii[k];
         P->mat[i] = (uint16_t)mat;
         P->clump[i] = 0;
@@ -185,6 +187,8 @@ void dm_particles_compact(demill_world *w, uint32_t *map)
             memcpy(P->wp + W * m, P->wp + W * i, W * sizeof *P->x);
             memcpy(P->t + W * m, P->t + W * i, W * sizeof *P->x);
             P->theta[m] = P->theta[i];
+            for (int c = 0; c < dm_qdim(w); c++)
+                P->q[c][m] = P->q[c][i];
             P->r[m] = P->r[i];
             P->m[m] = P->m[i];
             P->im[m] = P->im[i];
@@ -253,6 +257,7 @@ DEMILL_API int32_t demill_particle_field_size(int32_t field)
     case DEMILL_PARTICLE_ANGULAR_VELOCITY:
     case DEMILL_PARTICLE_FORCE:
     case DEMILL_PARTICLE_TORQUE: return 3;
+    case DEMILL_PARTICLE_ORIENTATION: return 4;
     case DEMILL_PARTICLE_RADIUS:
     case DEMILL_PARTICLE_MASS:
     case DEMILL_PARTICLE_ANGLE:
@@ -267,13 +272,17 @@ static demill_status check_field(demill_world *w, int32_t field, int writing)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "%d is not a particle field", (int)field);
     if (field == DEMILL_PARTICLE_ANGLE && w->dim == 3)
         return dm_fail(w, DEMILL_ERR_DIMENSION, "the rotation angle exists only in 2D worlds");
+    if (field == DEMILL_PARTICLE_ORIENTATION && w->dim == 2)
+        return dm_fail(w, DEMILL_ERR_DIMENSION,
+                       "the orientation quaternion exists only in 3D worlds (2D: "
+                       "DEMILL_PARTICLE_ANGLE)");
     if (writing && (field == DEMILL_PARTICLE_MASS || field == DEMILL_PARTICLE_FORCE ||
                     field == DEMILL_PARTICLE_TORQUE))
         return dm_fail(w, DEMILL_ERR_READ_ONLY, "particle field %d is read-only", (int)field);
     return DEMILL_OK;
 }
 
-/* Copies storage slot i's field into out (1 or 3 doubles). */
+/* Copies storage slot i's field into out (1, 3 or 4 doubles). */
 static void get_one(const demill_world *w, uint32_t i, int32_t field, double *out)
 {
     const dm_particles *P = &w->p;
@@ -289,6 +298,7 @@ static void get_one(const demill_world *w, uint32_t i, int32_t field, double *ou
     case DEMILL_PARTICLE_RADIUS: out[0] = P->r[i]; return;
     case DEMILL_PARTICLE_MASS: out[0] = P->m[i]; return;
     case DEMILL_PARTICLE_ANGLE: out[0] = P->theta[i]; return;
+    case DEMILL_PARTICLE_ORIENTATION: dm_quat_get(P->q, i, out); return;
     case DEMILL_PARTICLE_FIXED: out[0] = dm_particle_fixed(P, i); return;
     }
     out[0] = out[1] = out[2] = 0.0;
@@ -305,6 +315,32 @@ static demill_status check_at_rest(demill_world *w, uint32_t i, const double *in
     if (dm_particle_fixed(&w->p, i) && (in[0] != 0.0 || in[1] != 0.0 || in[2] != 0.0))
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                        "%s: the particle is fixed; its %s can only be 0", who, what);
+    return DEMILL_OK;
+}
+
+/* The largest magnitude of q's 4 components, by which it is scaled before
+ * its norm is taken, so that no square overflows or underflows. */
+static double quaternion_scale(const double *q)
+{
+    double m = 0.0;
+    for (int c = 0; c < 4; c++)
+        m = fabs(q[c]) > m ? fabs(q[c]) : m;
+    return m;
+}
+
+/* An orientation to write: 4 finite doubles, not all 0. */
+static demill_status check_quaternion(demill_world *w, const double *q, const char *who)
+{
+    for (int c = 0; c < 4; c++)
+        if (!isfinite(q[c]))
+            return dm_fail(w, DEMILL_ERR_NOT_FINITE,
+                           "%s: orientation (%g, %g, %g, %g) is not finite", who, q[0], q[1],
+                           q[2], q[3]);
+    if (quaternion_scale(q) == 0.0)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "%s: orientation (0, 0, 0, 0) is no rotation; a unit quaternion (w, x, "
+                       "y, z) is expected, e.g. (1, 0, 0, 0)",
+                       who);
     return DEMILL_OK;
 }
 
@@ -342,6 +378,7 @@ static demill_status check_one(demill_world *w, uint32_t i, int32_t field, const
             return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: fixed = %g, not 0 or 1", who,
                            in[0]);
         return DEMILL_OK;
+    case DEMILL_PARTICLE_ORIENTATION: return check_quaternion(w, in, who);
     default:
         if (!isfinite(in[0]))
             return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: angle %g is not finite", who, in[0]);
@@ -368,6 +405,16 @@ static void set_one(demill_world *w, uint32_t i, int32_t field, const double *in
         w->nlist_valid = false;
         break;
     case DEMILL_PARTICLE_ANGLE: P->theta[i] = in[0]; break;
+    case DEMILL_PARTICLE_ORIENTATION: { /* normalised */
+        const double m = quaternion_scale(in);
+        double n2 = 0.0;
+        for (int c = 0; c < 4; c++)
+            n2 += (in[c] / m) * (in[c] / m);
+        const double n = sqrt(n2);
+        for (int c = 0; c < 4; c++)
+            P->q[c][i] = in[c] / m / n;
+        break;
+    }
     case DEMILL_PARTICLE_FIXED:
         if (in[0] != 0.0) { /* at rest, for good */
             memset(P->v + D * i, 0, (size_t)D * sizeof *P->v);
@@ -406,7 +453,7 @@ DEMILL_API demill_status demill_particles_read(const demill_world *cw, int32_t f
         uint32_t i = w->ph.slot[h];
         if (i == DM_FREE)
             continue;
-        double v[3];
+        double v[4];
         get_one(w, i, field, v);
         memcpy(out + (size_t)size * k++, v, (size_t)size * sizeof *v);
     }
@@ -491,7 +538,7 @@ DEMILL_API demill_status demill_particle_get(const demill_world *cw, demill_id p
         return s;
     if (!out)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "particle_get: out is NULL");
-    double v[3];
+    double v[4];
     get_one(w, i, field, v);
     memcpy(out, v, (size_t)demill_particle_field_size(field) * sizeof *v);
     return DEMILL_OK;

@@ -23,9 +23,9 @@ typedef struct buffer {
     size_t bytes;
 } buffer;
 
-/* particles 16, handles 4 × 3, pairs, table, walls, bodies, clumps 4, spectrum 2, buckets 5
+/* particles 20, handles 4 × 3, pairs, table, walls, bodies, clumps 4, spectrum 2, buckets 5
  * each */
-#define MAX_BUFFERS (16 + 12 + 4 + 4 + 2 + 2 * DM_KERNELS * 5)
+#define MAX_BUFFERS (20 + 12 + 4 + 4 + 2 + 2 * DM_KERNELS * 5)
 
 /* The buffers of state s (its pointers and sizes), into b; returns how many. */
 static size_t buffers_of(demill_world *s, buffer *b)
@@ -44,6 +44,8 @@ static size_t buffers_of(demill_world *s, buffer *b)
     ADD(P->t, n * W * sizeof(double));
     ADD(P->wp, n * W * sizeof(double));
     ADD(P->theta, n * sizeof(double));
+    for (int c = 0; c < 4; c++) /* empty in 2D */
+        ADD(P->q[c], n * (dm_qdim(s) ? sizeof(double) : 0));
     ADD(P->r, n * sizeof(double));
     ADD(P->m, n * sizeof(double));
     ADD(P->im, n * sizeof(double));

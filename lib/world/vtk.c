@@ -18,7 +18,7 @@
 
 enum {
     P_ID, P_RADIUS, P_MASS, P_MATERIAL, P_VELOCITY, P_ANGULAR_VELOCITY, P_FORCE, P_TORQUE,
-    P_ANGLE, P_POINTS, P_CONNECTIVITY, P_OFFSETS, P_TYPES, P_COLUMNS
+    P_ANGLE, P_ORIENTATION, P_POINTS, P_CONNECTIVITY, P_OFFSETS, P_TYPES, P_COLUMNS
 };
 
 /* The particle field behind each dm_column that is one, 0 for the others. */
@@ -30,6 +30,7 @@ static const int32_t particle_field[P_COLUMNS] = {
     [P_FORCE] = DEMILL_PARTICLE_FORCE,
     [P_TORQUE] = DEMILL_PARTICLE_TORQUE,
     [P_ANGLE] = DEMILL_PARTICLE_ANGLE,
+    [P_ORIENTATION] = DEMILL_PARTICLE_ORIENTATION,
     [P_POINTS] = DEMILL_PARTICLE_POSITION};
 
 /* ctx: the dm_column numbers (P_*) of the file's columns. */
@@ -82,6 +83,7 @@ DEMILL_API demill_status demill_vtk_write_particles(demill_world *w, const char 
         [P_FORCE] = {"PointData", "force", "Float64", 3, 0},
         [P_TORQUE] = {"PointData", "torque", "Float64", 3, 0},
         [P_ANGLE] = {"PointData", "angle", "Float64", 1, 0},
+        [P_ORIENTATION] = {"PointData", "orientation", "Float64", 4, 0},
         [P_POINTS] = {"Points", "Points", "Float64", 3, 0},
         [P_CONNECTIVITY] = {"Cells", "connectivity", "Int64", 1, 0},
         [P_OFFSETS] = {"Cells", "offsets", "Int64", 1, 0},
@@ -89,7 +91,7 @@ DEMILL_API demill_status demill_vtk_write_particles(demill_world *w, const char 
     dm_column cols[P_COLUMNS];
     int which[P_COLUMNS], ncols = 0;
     for (int k = 0; k < P_COLUMNS; k++)
-        if (k != P_ANGLE || w->dim == 2) {
+        if ((k != P_ANGLE || w->dim == 2) && (k != P_ORIENTATION || w->dim == 3)) {
             which[ncols] = k;
             cols[ncols] = all[k];
             cols[ncols++].tuples = n;

@@ -96,7 +96,7 @@ def param_info(key):
 
 
 def particle_field_size(field):
-    """Doubles per particle of a particle field (1 or 3; 0 if unknown)."""
+    """Doubles per particle of a particle field (1, 3 or 4; 0 if unknown)."""
     return lib.demill_particle_field_size(int(field))
 
 

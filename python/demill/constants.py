@@ -197,7 +197,7 @@ class PairKey(IntEnum):
 
 
 class ParticleField(IntEnum):
-    """Particle fields of 1 or 3 doubles (``DEMILL_PARTICLE_*``)."""
+    """Particle fields of 1, 3 or 4 doubles (``DEMILL_PARTICLE_*``)."""
 
     POSITION = 1
     VELOCITY = 2
@@ -208,6 +208,7 @@ class ParticleField(IntEnum):
     TORQUE = 7
     ANGLE = 8
     FIXED = 9
+    ORIENTATION = 10
 
 
 class IdField(IntEnum):

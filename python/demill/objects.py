@@ -134,7 +134,8 @@ class Pair(Keyed):
 
 class Particle(Handle, Keyed):
     """One particle (:meth:`World.particle`); its properties are its fields.
-    Vector fields are NumPy arrays of 3, scalar fields floats."""
+    Vector fields are NumPy arrays of 3, the orientation of 4, scalar fields
+    floats."""
 
     __slots__ = ()
     kind = Kind.PARTICLE
@@ -150,6 +151,9 @@ class Particle(Handle, Keyed):
     torque = Param(ParticleField.TORQUE, None,
                    "Total torque at the last force evaluation, N m (3; read-only).")
     angle = Param(ParticleField.ANGLE, first, "2D only: rotation angle about z, rad.")
+    orientation = Param(ParticleField.ORIENTATION, None,
+                        "3D only: orientation, a unit quaternion (w, x, y, z) from the body "
+                        "frame to the world's (4; a write is normalised).")
     fixed = Param(ParticleField.FIXED, lambda v: bool(first(v)),
                   "True: the particle never moves; it touches the moving particles as an "
                   "infinitely heavy one.")
@@ -171,7 +175,7 @@ class Particles:
     """All particles of a world (``world.particles``), read and written as
     NumPy arrays in *id order* (the order of :meth:`ids`, which changes only
     when particles are added or removed). Vector fields are ``(n, 3)``
-    arrays, scalar fields ``(n,)``. The bulk properties (``positions``,
+    arrays, orientations ``(n, 4)``, scalar fields ``(n,)``. The bulk properties (``positions``,
     ``radii``, ...) read into new arrays; :meth:`read` can fill a
     preallocated one."""
 
@@ -186,6 +190,9 @@ class Particles:
     forces = Param(ParticleField.FORCE, None, "Forces, N (n x 3; read-only).")
     torques = Param(ParticleField.TORQUE, None, "Torques, N m (n x 3; read-only).")
     angles = Param(ParticleField.ANGLE, None, "2D only: rotation angles, rad (n).")
+    orientations = Param(ParticleField.ORIENTATION, None,
+                         "3D only: orientations, unit quaternions (w, x, y, z) (n x 4; a "
+                         "write is normalised).")
     fixed = Param(ParticleField.FIXED, None, "1 for a fixed particle, else 0 (n).")
 
     def __init__(self, world):
@@ -251,8 +258,8 @@ class Particles:
         return read_counted(call, width, np.float64, out)
 
     def write(self, field, values):
-        """Writes a field of every particle from an ``(n, 3)`` or ``(n,)``
-        array (n the number of particles)."""
+        """Writes a field of every particle from an ``(n, 3)``, ``(n, 4)``
+        or ``(n,)`` array (n the number of particles)."""
         width = max(lib.demill_particle_field_size(int(field)), 1)
         arr = doubles(values, (-1, width) if width > 1 else (-1,), "values")
         self.world._call("demill_particles_write", int(field), ptr(arr), arr.shape[0])

@@ -237,6 +237,24 @@ class Arrays(unittest.TestCase):
                 w.particle(pid).angular_velocity = (1, 0, 0)
             with self.assertRaises(ValueError):
                 w.particle(pid).position = (0, 0)
+            with self.assertRaises(demill.DimensionError):
+                w.particle(pid).orientation
+
+    def test_3d_orientations(self):
+        with demill.World(3) as w:
+            m = w.material()
+            ids = w.particles.add(m, [(0, 0, 0), (1, 0, 0)], 0.01)
+            np.testing.assert_array_equal(w.particles.orientations, [(1, 0, 0, 0)] * 2)
+            p = w.particle(ids[1])
+            p.orientation = (0, 0, 3, 4)  # normalised: (0, 0, 0.6, 0.8)
+            np.testing.assert_allclose(p.orientation, (0, 0, 0.6, 0.8), rtol=0, atol=1e-16)
+            w.particles.orientations = [(0.5, 0.5, 0.5, 0.5), (0, 1, 0, 0)]
+            np.testing.assert_array_equal(w.particles.orientations[1], (0, 1, 0, 0))
+            with self.assertRaises(ValueError):
+                p.orientation = (1, 0, 0)
+            with self.assertRaises(demill.InvalidValue):
+                p.orientation = (0, 0, 0, 0)
+            np.testing.assert_array_equal(p.orientation, (0, 1, 0, 0))
 
 
 class Parameters(unittest.TestCase):

@@ -1201,7 +1201,7 @@ static void bad_particles_write(scene *sc)
         BAD(sc, DEMILL_ERR_READ_ONLY, demill_particles_write(w, ro[k], cur, m), "read");
         free(cur);
     }
-    static const int32_t unknown[] = {0, 10, 99, 100, 101, -1};
+    static const int32_t unknown[] = {0, 11, 99, 100, 101, -1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -1275,7 +1275,7 @@ static void bad_particle_set(scene *sc)
         ctx(sc, "particle_set read-only field %d", (int)ro[k]);
         BAD(sc, DEMILL_ERR_READ_ONLY, demill_particle_set(w, p, ro[k], cur), "read");
     }
-    static const int32_t unknown[] = {0, 10, 99, 100, 101, -1};
+    static const int32_t unknown[] = {0, 11, 99, 100, 101, -1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown[k]);
@@ -1868,9 +1868,9 @@ static void bad_clumps(scene *sc)
         BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_clump_template_add(w, mat, 2, cen, br, &out),
             "radius 0");
     }
-    const double three[9] = {0, 0, 0, RAD, 0, 0, 0.5 * RAD, RAD, 0}, r3[3] = {RAD, RAD, RAD};
-    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_clump_template_add(w, mat, 3, three, r3, &out),
-        "three");
+    const double tiny[2] = {1e-110, 1e-110}; /* a mass that underflows to 0 */
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_clump_template_add(w, mat, 2, cen, tiny, &out),
+        "mass");
     BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_clump_template_add(w, t, 2, cen, rad, &out),
         "material");
     if (sc->dim == 2) {
@@ -2223,7 +2223,7 @@ static void bad_reads(scene *sc)
         ctx(sc, "particles_read_ids field %d, out and count NULL", (int)f);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_particles_read_ids(w, f, NULL, n, NULL), "NULL");
     }
-    static const int32_t unknown_p[] = {0, 10, 99, 100, -1};
+    static const int32_t unknown_p[] = {0, 11, 99, 100, -1};
     for (size_t k = 0; k < sizeof unknown_p / sizeof unknown_p[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown_p[k]);

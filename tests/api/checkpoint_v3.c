@@ -17,7 +17,10 @@
  *
  * Checked: the file is of format 3, today's library loads it with the same
  * energy terms (and 0 for the terms format 3 does not hold), the pairs'
- * laws and values, steps on, and saves and reloads in today's format. */
+ * laws and values, its particles at orientation (1, 0, 0, 0) (format 3
+ * holds none), steps on (the balls turn), and saves and reloads in today's
+ * format, orientations bit for bit. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -62,6 +65,11 @@ START_TEST(format_3_loads_with_its_account_and_pairs)
     double plastic;
     DM_OK(w, demill_world_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC, &plastic));
     ck_assert(plastic == 0.0);
+    double q[2][5 * 4];
+    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_ORIENTATION, q[0], 5, NULL));
+    for (int k = 0; k < 5; k++)
+        ck_assert(q[0][4 * k] == 1.0 && q[0][4 * k + 1] == 0.0 && q[0][4 * k + 2] == 0.0 &&
+                  q[0][4 * k + 3] == 0.0);
 
     demill_id mats[2];
     size_t n;
@@ -81,12 +89,20 @@ START_TEST(format_3_loads_with_its_account_and_pairs)
     double after;
     DM_OK(w, demill_world_energy(w, DEMILL_ENERGY_DISSIPATED_NORMAL, &after));
     ck_assert(after >= SAVED[0]);
+    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_ORIENTATION, q[0], 5, NULL));
+    double turned = 0.0; /* the largest |x|, |y|, |z| */
+    for (int k = 0; k < 5; k++)
+        for (int c = 1; c < 4; c++)
+            turned = fmax(turned, fabs(q[0][4 * k + c]));
+    ck_assert_msg(turned > 1e-6, "no ball turned (%g)", turned);
     uint32_t format;
     demill_world *v = dm_test_reloaded(w, &format);
     ck_assert_uint_gt(format, 3);
     double again;
     DM_OK(v, demill_world_energy(v, DEMILL_ENERGY_DISSIPATED_NORMAL, &again));
     ck_assert(again == after);
+    DM_OK(v, demill_particles_read(v, DEMILL_PARTICLE_ORIENTATION, q[1], 5, NULL));
+    ck_assert(!memcmp(q[0], q[1], sizeof q[0]));
     demill_world_destroy(v);
     demill_world_destroy(w);
 }

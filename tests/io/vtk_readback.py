@@ -6,7 +6,8 @@ vtkXMLUnstructuredGridReader and vtkXMLPolyDataReader (Debian's
 python3-vtk9), and the .pvd with xml.etree. Every expected value is derived
 here from the scenes' definitions (the formulas at the top of
 io_vtk_scene.c, repeated below), not taken from the library: positions,
-velocities, spins, radii and materials as set; masses 4/3 pi r^3 rho;
+velocities, spins, radii and materials as set; 3D orientations as set,
+normalised; masses 4/3 pi r^3 rho;
 forces m g (nothing touches); the shell's points on the circle of radius
 D/2; lifters at their polar angle plus the drum's angle (speed times the
 world's time); the plane's patch on the plane, facing its normal, as wide as
@@ -48,6 +49,7 @@ def particles3d():
             r=0.004 + 0.0001 * k,
             v=(0.1 * k, -0.2, 0.05 * (k % 2)),
             w=(1.0 + k, -k, 0.5 * k),
+            q=(1.0, 0.1 * k, -0.2, 0.05 * k),
             material=0 if k < 10 else 1,
             rho=7800.0 if k < 10 else 2500.0))
     return out
@@ -185,8 +187,15 @@ class ReadBack(unittest.TestCase):
                 self.assertEqual(x[k][2], 0.0)
         if dim == 2:
             self.assertEqual(array(data, "angle"), [0.0] * n)
+            self.assertIsNone(data.GetPointData().GetAbstractArray("orientation"))
         else:
             self.assertIsNone(data.GetPointData().GetAbstractArray("angle"))
+            self.assertEqual(data.GetPointData().GetArray("orientation").GetNumberOfComponents(), 4)
+            q = array(data, "orientation")
+            for k, p in enumerate(want):
+                norm = math.sqrt(sum(c * c for c in p["q"]))
+                for c in range(4):
+                    self.close(q[k][c], p["q"][c] / norm, 1e-15, "orientation of %d" % k)
 
     def test_particles_3d(self):
         data = read(self.path("3d_particles.vtu"))

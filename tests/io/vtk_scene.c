@@ -15,6 +15,7 @@
  *     radius            0.004 + 0.0001 k
  *     velocity          (0.1 k, -0.2, 0.05 (k mod 2))
  *     angular velocity  (1 + k, -k, 0.5 k)
+ *     orientation       (1, 0.1 k, -0.2, 0.05 k), normalised by the write
  *     material          0 for k < 10, else 1
  *   and forces evaluated (0 steps): 3d_particles.vtu, 3d_walls.vtp.
  *   Then a series series/mill: frames at that time and after 100 and 200
@@ -115,8 +116,12 @@ static void scene3d(void)
     plane(w, a, plane3_p, plane3_n);
     check(demill_world_step(w, 1000), "steps");
     enum { N = 16 };
-    double x[3 * N], r[N], v[3 * N], om[3 * N];
+    double x[3 * N], r[N], v[3 * N], om[3 * N], q[4 * N];
     for (int k = 0; k < N; k++) {
+        q[4 * k] = 1.0; /* (1, 0.1 k, -0.2, 0.05 k), which the write normalises */
+        q[4 * k + 1] = 0.1 * k;
+        q[4 * k + 2] = -0.2;
+        q[4 * k + 3] = 0.05 * k;
         x[3 * k] = -0.09 + 0.012 * k;
         x[3 * k + 1] = 0.02 * (k % 4) - 0.03;
         x[3 * k + 2] = 0.01 * (k % 3 - 1);
@@ -132,6 +137,7 @@ static void scene3d(void)
     check(demill_particles_add(w, b, N - 10, x + 30, r + 10, v + 30, DEMILL_ADD_NO_OVERLAP, NULL),
           "particles");
     check(demill_particles_write(w, DEMILL_PARTICLE_ANGULAR_VELOCITY, om, N), "spin");
+    check(demill_particles_write(w, DEMILL_PARTICLE_ORIENTATION, q, N), "orientation");
     check(demill_world_step(w, 0), "forces");
     check(demill_vtk_write_particles(w, path("3d_particles.vtu")), "3d particles");
     check(demill_vtk_write_walls(w, path("3d_walls.vtp")), "3d walls");

@@ -19,7 +19,8 @@
  *    accelerating at g (sin θ − μ cos θ) (Coulomb's law on a body that
  *    cannot roll: its two contacts share M g cos θ).
  *  - A flat clump dropped on a plane lands flat: every member touches and
- *    its orientation is kept (by symmetry the torques cancel).
+ *    its orientation is kept (by symmetry the torques cancel); its members'
+ *    orientations are its own.
  *  - The energy balance (DEMILL_ENERGY_TOTAL) closes to 1e-3 of the energy
  *    through in a turning drum charged with clumps, 2D and 3D. */
 #include <stdlib.h>
@@ -303,6 +304,12 @@ START_TEST(lands_flat)
                                    dm_test_get(w, ids[0], DEMILL_PARTICLE_POSITION, 1)));
     ck_assert_double_eq(wc, 3);
     ck_assert_msg(turn < 1e-12, "the orientation moved by %g", turn);
+    for (int k = 0; k < 3; k++) { /* a member's body frame is its clump's */
+        double qm[4];
+        DM_OK(w, demill_particle_get(w, ids[k], DEMILL_PARTICLE_ORIENTATION, qm));
+        for (int a = 0; a < 4; a++)
+            ck_assert_double_eq(qm[a], q[a]);
+    }
     ck_assert_msg(spread < 1e-15, "the members' heights differ by %g m", spread);
     demill_world_destroy(w);
 }

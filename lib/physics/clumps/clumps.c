@@ -103,6 +103,8 @@ double dm_clump_place(demill_world *w, uint32_t k)
         }
         if (D == 2)
             P->theta[i] = c->theta;
+        else /* a member's body frame is its clump's */
+            dm_quat_put(P->q, i, c->q);
         worst = fmax(worst, d2);
     }
     return worst;

@@ -23,8 +23,9 @@ void dm_clump_omega(const demill_world *w, const dm_clump *c, const double L[3],
 
 /* Places clump k's members from its motion: x_i = X + R b_i,
  * v_i = V + ω × (x_i − X), vp_i = Vp + ωp × (x_i − X), their angular
- * velocities ω and ωp, in 2D their angle θ. Returns the largest squared
- * displacement of a member since the last neighbour build. */
+ * velocities ω and ωp and their orientation (3D: q; 2D: θ). Returns the
+ * largest squared displacement of a member since the last neighbour
+ * build. */
 double dm_clump_place(demill_world *w, uint32_t k);
 
 /* The force F and the torque T (about the centre of mass; 2D: T[2]) on

@@ -28,6 +28,7 @@
 #include "physics/broadphase/broadphase.h"
 #include "physics/contact/contact.h"
 #include "physics/integrate/integrate.h"
+#include "physics/integrate/orient.h"
 #include "physics/mill/mill.h"
 
 #define DM_INLINE static inline __attribute__((always_inline))
@@ -68,7 +69,7 @@ DM_INLINE void verlet_drift(const int D, dm_particles *P, const step_args *a, ui
     const double dt = a->dt, h = a->h;
     const int kick = a->kick;
     uint64_t worst = 0;
-    for (uint32_t i = i0; i < i1; i++) {
+    for (size_t i = i0; i < i1; i++) {
         double d2 = 0.0;
         for (int c = 0; c < D; c++) {
             const double acc = f[D * i + c] * im[i];
@@ -95,7 +96,7 @@ DM_INLINE void euler_drift(const int D, dm_particles *P, const step_args *a, uin
     const double *restrict f = P->f, *restrict im = P->im, *restrict x0 = P->x0;
     const double dt = a->dt;
     uint64_t worst = 0;
-    for (uint32_t i = i0; i < i1; i++) {
+    for (size_t i = i0; i < i1; i++) {
         double d2 = 0.0;
         for (int c = 0; c < D; c++) {
             v[D * i + c] += dt * f[D * i + c] * im[i];
@@ -114,14 +115,59 @@ DM_INLINE void kick(const int D, dm_particles *P, const step_args *a, uint32_t i
     double *restrict v = P->v;
     const double *restrict f = P->f, *restrict im = P->im;
     const double h = a->h;
-    for (uint32_t i = i0; i < i1; i++)
+    for (size_t i = i0; i < i1; i++)
         for (int c = 0; c < D; c++)
             v[D * i + c] += h * (f[D * i + c] * im[i]);
 }
 
+/* Turns the orientations (the four arrays qw, qx, qy, qz) of particles i0
+ * to i1 - 1 by k ω (ω: 3 per particle), as dm_quat_turn() (orient.h) does
+ * each, in two passes: one without branches, which vectorises, turns the
+ * particles whose angle the series takes and leaves the others as they were
+ * (a blend of bit patterns); a second, taken only if the first met such a
+ * particle, turns those with libm. A function of its own, whose restrict
+ * arguments tell GCC that the arrays do not overlap: inlined, the loop does
+ * not vectorise. */
+DM_VECTOR_CLONES __attribute__((noinline)) static void
+turn(double *restrict qw, double *restrict qx, double *restrict qy, double *restrict qz,
+     const double *restrict om, double k, uint32_t i0, uint32_t i1)
+{
+    uint64_t far = 0;
+    for (size_t i = i0; i < i1; i++) { /* size_t: a uint32_t 3 i may wrap, which stops GCC */
+        const double hx = 0.5 * k * om[3 * i], hy = 0.5 * k * om[3 * i + 1],
+                     hz = 0.5 * k * om[3 * i + 2];
+        const double a2 = hx * hx + hy * hy + hz * hz;
+        const uint64_t keep = (uint64_t)0 - (uint64_t)(a2 <= DM_QUAT_SERIES_A2); /* all ones */
+        far |= ~keep;
+        double c, s, n[4] = {qw[i], qx[i], qy[i], qz[i]};
+        dm_quat_series(a2, &c, &s);
+        dm_quat_mul_turn(n, c, s, hx, hy, hz);
+        double *const d[4] = {qw, qx, qy, qz};
+        for (int j = 0; j < 4; j++) {
+            uint64_t un, uq;
+            memcpy(&un, &n[j], sizeof un);
+            memcpy(&uq, &d[j][i], sizeof uq);
+            uq = (un & keep) | (uq & ~keep);
+            memcpy(&d[j][i], &uq, sizeof uq);
+        }
+    }
+    if (!far)
+        return;
+    for (uint32_t i = i0; i < i1; i++) {
+        const double hx = 0.5 * k * om[3 * i], hy = 0.5 * k * om[3 * i + 1],
+                     hz = 0.5 * k * om[3 * i + 2];
+        if (hx * hx + hy * hy + hz * hz > DM_QUAT_SERIES_A2) {
+            double q[4] = {qw[i], qx[i], qy[i], qz[i]};
+            dm_quat_turn(q, om + 3 * (size_t)i, k);
+            qw[i] = q[0], qx[i] = q[1], qy[i] = q[2], qz[i] = q[3];
+        }
+    }
+}
+
 /* The rotational half steps: with kick, first ω += h α (the second half of
  * the step before); with predict, wp = ω + 2h α; then ω += h α, and in 2D
- * θ += hth ω. */
+ * θ += hth ω, in 3D the orientation turned by hth ω (orient.h) when hth is
+ * not 0. */
 DM_INLINE void spin(const int D, dm_particles *P, const step_args *a, uint32_t i0, uint32_t i1)
 {
     const int W = D == 3 ? 3 : 1;
@@ -129,7 +175,7 @@ DM_INLINE void spin(const int D, dm_particles *P, const step_args *a, uint32_t i
     const double *restrict t = P->t, *restrict ii = P->iinv;
     const double h = a->h, hth = a->hth;
     const int kick = a->kick, predict = a->predict;
-    for (uint32_t i = i0; i < i1; i++) {
+    for (size_t i = i0; i < i1; i++) {
         for (int c = 0; c < W; c++) {
             const double al = t[W * i + c] * ii[i];
             double o = om[W * i + c];
@@ -142,6 +188,8 @@ DM_INLINE void spin(const int D, dm_particles *P, const step_args *a, uint32_t i
         if (D == 2)
             theta[i] += hth * om[i];
     }
+    if (D == 3 && hth != 0.0)
+        turn(P->q[0], P->q[1], P->q[2], P->q[3], om, hth, i0, i1);
 }
 
 /* The loops for each dimension, as dm_parallel() ranges. */

@@ -55,6 +55,7 @@
 #include "physics/broadphase/broadphase.h"
 #include "physics/contact/contact.h"
 #include "physics/integrate/integrate.h"
+#include "physics/integrate/orient.h"
 #include "physics/mill/mill.h"
 
 #define DM_INLINE static inline __attribute__((always_inline))
@@ -83,8 +84,10 @@ static int reserve(demill_world *w)
     const size_t D = (size_t)w->dim * sizeof(double), W = (size_t)dm_wdim(w) * sizeof(double);
     void **const arrays[] = {(void **)&R->xn, (void **)&R->vn, (void **)&R->fn,
                              (void **)&R->fprev, (void **)&R->wn, (void **)&R->tn,
-                             (void **)&R->tprev, (void **)&R->thn};
-    const size_t sizes[] = {D, D, D, D, W, W, W, sizeof(double)};
+                             (void **)&R->tprev, (void **)&R->thn, (void **)&R->qn[0],
+                             (void **)&R->qn[1], (void **)&R->qn[2], (void **)&R->qn[3]};
+    const size_t Q = w->dim == 3 ? sizeof(double) : 0; /* each orientation array */
+    const size_t sizes[] = {D, D, D, D, W, W, W, sizeof(double), Q, Q, Q, Q};
     if (dm_grow_arrays(arrays, sizes, sizeof sizes / sizeof sizes[0], cap))
         return -1;
     R->cap = cap;
@@ -102,6 +105,8 @@ void dm_refine_free(demill_world *w)
     free(R->tn);
     free(R->tprev);
     free(R->thn);
+    for (int c = 0; c < 4; c++)
+        free(R->qn[c]);
     free(R->hist);
     free(R->on);
     free(R->wall_diss);
@@ -110,7 +115,7 @@ void dm_refine_free(demill_world *w)
 }
 
 /* Trades the start-of-step arrays with the world's: afterwards the refinement
- * holds x_n, v_n, F_n (and ω_n, T_n, θ_n) and the world's arrays are free for
+ * holds x_n, v_n, F_n (and ω_n, T_n, θ_n or q_n) and the world's arrays are free for
  * the iterates. Calling it again trades them back. */
 static void trade(demill_world *w)
 {
@@ -124,6 +129,9 @@ static void trade(demill_world *w)
         swap(&P->t, &R->tn);
         if (w->dim == 2)
             swap(&P->theta, &R->thn);
+        else
+            for (int c = 0; c < 4; c++)
+                swap(&P->q[c], &R->qn[c]);
     }
 }
 
@@ -227,7 +235,7 @@ DM_INLINE void taylor(double dt, double xn, double vn, double an, double db, dou
     *ve = vn + dt * (an + 0.5 * db);
 }
 
-/* The iterate: x, v (mean), vp (end); ω (mean), wp (end), θ. */
+/* The iterate: x, v (mean), vp (end); ω (mean), wp (end), θ or q. */
 DM_INLINE void predict(const int D, demill_world *w, refine_args *a, int t, uint32_t i0,
                        uint32_t i1)
 {
@@ -258,6 +266,7 @@ DM_INLINE void predict(const int D, demill_world *w, refine_args *a, int t, uint
     const double *restrict wn = R->wn, *restrict tn = R->tn, *restrict tq = P->t;
     const double *restrict thn = R->thn, *restrict ii = P->iinv;
     for (uint32_t i = i0; i < i1; i++) {
+        double phi[3]; /* 3D: the rotation vector of the step, Δt times the mean ω */
         for (int c = 0; c < W; c++) {
             const size_t q = (size_t)W * i + c;
             const double an = tn[q] * ii[i], db = jerk ? (tq[q] - tn[q]) * ii[i] : 0.0;
@@ -265,6 +274,14 @@ DM_INLINE void predict(const int D, demill_world *w, refine_args *a, int t, uint
             taylor(dt, D == 2 ? thn[i] : 0.0, wn[q], an, db, &th, &om[q], &wp[q]);
             if (D == 2)
                 theta[i] = th;
+            else
+                phi[c] = th;
+        }
+        if (D == 3) {
+            double q[4];
+            dm_quat_get(R->qn, i, q);
+            dm_quat_turn(q, phi, 1.0);
+            dm_quat_put(P->q, i, q);
         }
     }
 }

@@ -16,16 +16,18 @@ int dm_particles_reserve(demill_world *w, uint32_t need)
     size_t cap = dm_grown_capacity(P->cap, need);
     if (cap > UINT32_MAX)
         cap = need;
-    const size_t D = (size_t)w->dim * sizeof(double), W = (size_t)dm_wdim(w) * sizeof(double);
+    const size_t D = (size_t)w->dim * sizeof(double), W = (size_t)dm_wdim(w) * sizeof(double),
+                 Q = w->dim == 3 ? sizeof(double) : 0; /* each orientation array */
     void **const arrays[] = {(void **)&P->x,  (void **)&P->v,     (void **)&P->f,
                              (void **)&P->x0, (void **)&P->vp,    (void **)&P->wp,
                              (void **)&P->w,  (void **)&P->t,     (void **)&P->theta,
                              (void **)&P->r,  (void **)&P->m,     (void **)&P->im,
                              (void **)&P->iinv, (void **)&P->mat, (void **)&P->hid,
-                             (void **)&P->clump};
+                             (void **)&P->q[0], (void **)&P->q[1], (void **)&P->q[2],
+                             (void **)&P->q[3], (void **)&P->clump};
     const size_t sizes[] = {D, D, D, D, D, W, W, W, sizeof(double), sizeof(double),
                             sizeof(double), sizeof(double), sizeof(double), sizeof(uint16_t),
-                            sizeof(uint32_t), sizeof(uint32_t)};
+                            sizeof(uint32_t), Q, Q, Q, Q, sizeof(uint32_t)};
     if (dm_grow_arrays(arrays, sizes, sizeof sizes / sizeof sizes[0], cap))
         return -1;
     P->cap = (uint32_t)cap;
@@ -44,6 +46,8 @@ void dm_particles_free(demill_world *w)
     free(P->w);
     free(P->t);
     free(P->theta);
+    for (int c = 0; c < 4; c++)
+        free(P->q[c]);
     free(P->r);
     free(P->m);
     free(P->im);
@@ -75,8 +79,8 @@ void dm_particles_permute(demill_world *w, const uint32_t *order)
             memcpy(s + (size_t)W * k, ang[a] + (size_t)W * order[k], (size_t)W * sizeof *s);
         memcpy(ang[a], s, (size_t)W * n * sizeof *s);
     }
-    double *sc[] = {P->theta, P->r, P->m, P->im, P->iinv};
-    for (size_t a = 0; a < 5; a++) {
+    double *sc[] = {P->theta, P->r, P->m, P->im, P->iinv, P->q[0], P->q[1], P->q[2], P->q[3]};
+    for (size_t a = 0; a < (w->dim == 3 ? 9u : 5u); a++) {
         for (uint32_t k = 0; k < n; k++)
             s[k] = sc[a][order[k]];
         memcpy(sc[a], s, n * sizeof *s);

@@ -282,6 +282,9 @@ typedef struct dm_particles {
     double *vp;              /* D: predicted end-of-step velocity (velocity Verlet) */
     double *w, *t, *wp;      /* W per particle: angular velocity, torque, predicted ω */
     double *theta;           /* 2D rotation angle */
+    double *q[4];            /* 3D orientation, body to world frame: a unit quaternion
+                              * as four arrays w, x, y, z (none in 2D), which the
+                              * integrators' loops turn many at once */
     double *r, *m, *im, *iinv; /* radius, mass, 1/m, 1/I (both 0: a fixed particle) */
     uint16_t *mat;           /* material slot */
     uint32_t *hid;           /* handle index */
@@ -325,7 +328,7 @@ typedef struct dm_grid {
     size_t cap_cells;
     uint32_t *cell_of, *order, *inv, *row; /* per particle (row: n + 1) */
     uint32_t cap;
-    double *scratch;          /* 3 doubles per particle */
+    double *scratch;          /* 4 doubles per particle */
     /* contacts whose history is carried over a build */
     uint32_t *ci, *cj, *ct;   /* ct: mesh element (particle-wall), else 0 */
     uint16_t *ck;             /* kernel (pp) or kernel + DM_KERNELS (pw) */
@@ -471,6 +474,7 @@ typedef struct dm_refine {
     double *xn, *vn, *fn, *fprev;  /* D per particle */
     double *wn, *tn, *tprev;       /* W per particle */
     double *thn;                   /* 2D angle */
+    double *qn[4];                 /* 3D orientation (w, x, y, z) */
     double *hist;                  /* every bucket's history, bucket after bucket */
     uint8_t *on;                   /* and touch flags */
     size_t cap_hist, cap_on;
@@ -670,6 +674,26 @@ static inline double dm_gravity_magnitude(const demill_world *w)
 static inline int dm_wdim(const demill_world *w)
 {
     return w->dim == 3 ? 3 : 1;
+}
+
+/* Components of an orientation: 4 in 3D (a quaternion), 0 in 2D (the angle
+ * theta stands for it). */
+static inline int dm_qdim(const demill_world *w)
+{
+    return w->dim == 3 ? 4 : 0;
+}
+
+/* Particle i's orientation (3D) into q (w, x, y, z), and from q. */
+static inline void dm_quat_get(double *const qa[4], uint32_t i, double q[4])
+{
+    for (int c = 0; c < 4; c++)
+        q[c] = qa[c][i];
+}
+
+static inline void dm_quat_put(double *const qa[4], uint32_t i, const double q[4])
+{
+    for (int c = 0; c < 4; c++)
+        qa[c][i] = q[c];
 }
 
 /* ---- the particle store (particles.c) ----------------------------------------- */
