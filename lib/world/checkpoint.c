@@ -1435,7 +1435,7 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         return s;
     if (kind == DEMILL_KIND_PARTICLE)
         return demill_particles_read_ids(w, DEMILL_PARTICLE_ID, out, capacity, count);
-    if (kind < DEMILL_KIND_MATERIAL || kind > DEMILL_KIND_BODY)
+    if (kind < DEMILL_KIND_MATERIAL || kind > DEMILL_KIND_CLUMP)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_ids: %d is not a kind of object",
                        (int)kind);
     if (!out && !count)
@@ -1454,6 +1454,10 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
     else if (kind == DEMILL_KIND_BODY)
         for (uint32_t k = 0; k < w->nbodies; k++)
             n += dm_body_live(w, k);
+    else if (kind == DEMILL_KIND_TEMPLATE)
+        n = w->ntemplates;
+    else if (kind == DEMILL_KIND_CLUMP)
+        n = w->live_clumps;
     else
         for (uint32_t k = 0; k < w->nwalls; k++)
             n += user_wall(&w->walls[k]);
@@ -1483,6 +1487,13 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         for (uint32_t k = 0, q = 0; k < w->nbodies; k++)
             if (dm_body_live(w, k))
                 out[q++] = dm_body_id(w, k);
+    } else if (kind == DEMILL_KIND_TEMPLATE) {
+        for (uint32_t k = 0; k < w->ntemplates; k++)
+            out[k] = dm_template_id(w, k);
+    } else if (kind == DEMILL_KIND_CLUMP) {
+        for (uint32_t k = 0, q = 0; k < w->nclumps; k++)
+            if (dm_clump_live(w, k))
+                out[q++] = dm_clump_id(w, k);
     } else if (n) { /* the drum */
         out[0] = dm_drum_id(w);
     }

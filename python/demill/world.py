@@ -455,6 +455,11 @@ class World(Closable, Keyed):
         return [Body(self, i) for i in self.ids(Kind.BODY)]
 
     @property
+    def clumps(self):
+        """Every clump, as a list of :class:`Clump`."""
+        return [Clump(self, i) for i in self.ids(Kind.CLUMP)]
+
+    @property
     def drum(self):
         """The world's :class:`Drum`, or None."""
         ids = self.ids(Kind.DRUM)

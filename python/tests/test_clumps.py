@@ -43,6 +43,8 @@ class Clumps(unittest.TestCase):
             ids = c.members()
             self.assertEqual(len(ids), 2)
             self.assertEqual(w.clump_of(ids[1]), c)
+            self.assertEqual(w.clumps, [c])
+            np.testing.assert_array_equal(w.ids(demill.Kind.TEMPLATE), [t.id])
             np.testing.assert_array_equal(w.particles.clump_ids(), [c.id, c.id])
             w.step(steps)
             time = steps * dt
@@ -64,6 +66,7 @@ class Clumps(unittest.TestCase):
             np.testing.assert_array_equal(w.particle(ids[0]).position, x)
             c.remove()
             self.assertEqual(len(w.particles), 0)
+            self.assertEqual(w.clumps, [])
 
 
 if __name__ == "__main__":
