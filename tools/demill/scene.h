@@ -1,0 +1,60 @@
+/* scene.h: a scene file (docs/scene-files.md) checked and turned into a
+ * world through the public API, with what the runner needs to run it:
+ * when to turn the drum, when to stop and what to write. */
+#ifndef DEMILL_SCENE_H
+#define DEMILL_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <demill.h>
+
+#include "tree.h"
+
+#define SCENE_MAX_MATERIALS 256
+#define SCENE_MAX_COLUMNS 64
+#define SCENE_MAX_EDGES 16
+
+typedef struct scene {
+    demill_world *w;
+    int dim;
+    double dt;
+    size_t nmat;
+    const char *matname[SCENE_MAX_MATERIALS]; /* point into the tree */
+    demill_id mat[SCENE_MAX_MATERIALS];
+    demill_id drum;             /* DEMILL_ID_NONE without a drum */
+    double drum_start;          /* world time at which the drum's speed is set, s */
+    int32_t speed_key;          /* the drum's speed key given, 0 for none */
+    double speed_value;
+    int speed_set;              /* the speed was given with --set */
+    double stop_time, stop_revolutions; /* NAN when not given */
+    double every;               /* s between samples (time series, stop checks) */
+    char csv_file[256];         /* "" for none */
+    size_t ncol;
+    int32_t col_key[SCENE_MAX_COLUMNS];
+    double vtk_every, checkpoint_every; /* s, 0 for none */
+    int charge_png, power_png;
+    size_t nedges;              /* power by size class: nedges + 1 classes */
+    double edges[SCENE_MAX_EDGES];
+} scene;
+
+/* What scene_build() does with the world. */
+enum {
+    SCENE_BUILD = 0,   /* a new world from the file */
+    SCENE_CHECK = 1,   /* check everything, build materials, pairs and drum, but add no particles
+                          or walls (the fuzz target) */
+    SCENE_RESTART = 2  /* s->w holds a loaded checkpoint: map the file's names to its ids and
+                          apply only the entries set on the command line (--set) */
+};
+
+/* Checks the scene `root` (read from a file in folder `dir`, against which
+ * its relative paths are taken) and builds it: 0, or -1 with a message
+ * "FILE:LINE: KEY: what was wrong" in err and no world left (except in
+ * SCENE_RESTART mode, where s->w stays the caller's). */
+int scene_build(scene *s, const tree *root, const char *dir, int mode, char *err, size_t errlen);
+
+/* Every key a scene file accepts, one per line with its section, for the
+ * documentation's check (`demill keys`). */
+void scene_list_keys(FILE *f);
+
+#endif
