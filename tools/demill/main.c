@@ -270,7 +270,8 @@ static int run_one(const run_args *a, char **summary)
     double class_sum[SCENE_MAX_EDGES + 1] = {0}, class_now[SCENE_MAX_EDGES + 1];
     size_t class_samples = 0;
     double t_rev_start = NAN, t_rev_end = NAN;
-    int turning = drum && s.speed_key && t >= s.drum_start - 0.5 * s.dt;
+    /* a restart goes on with the checkpoint's speed unless --set gives one */
+    int turning = a->restart && drum && s.speed_key && t >= s.drum_start - 0.5 * s.dt;
     if (turning && s.speed_set)
         check(demill_drum_set(w, drum, s.speed_key, s.speed_value), "the drum's speed");
     uint64_t steps = 0;
@@ -382,8 +383,9 @@ static int run_one(const run_args *a, char **summary)
                     fprintf(sum, "class_%zu = diameter below %g m\n", k, s.edges[k]);
                 else
                     fprintf(sum, "class_%zu = diameter %g m and above\n", k, s.edges[k - 1]);
-                fprintf(sum, "class_%zu_power_W = %.6g\nclass_%zu_power_share = %.4f\n", k, p, k,
-                        p / total);
+                fprintf(sum, "class_%zu_power_W = %.6g\n", k, p);
+                if (total != 0)
+                    fprintf(sum, "class_%zu_power_share = %.4f\n", k, p / total);
             }
             fprintf(sum, "class_power_sum_W = %.6g\nclass_power_samples = %zu\n", total,
                     class_samples);
@@ -411,9 +413,8 @@ static int run_one(const run_args *a, char **summary)
                        isnan(t_rev_end) ? t : t_rev_end))
             rc = -1;
     }
-    printf("demill: done in %.1f s, t = %.4g s%s; results in %s/\n", now() - t_wall0, t,
-           drum ? "" : "", a->out);
-    if (drum)
+    printf("demill: done in %.1f s, t = %.4g s; results in %s/\n", now() - t_wall0, t, a->out);
+    if (isfinite(mean_power))
         printf("        mean power over the last revolution %.4f W\n", mean_power);
     series_free(&rows);
     demill_world_destroy(w);
