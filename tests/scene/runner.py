@@ -18,7 +18,8 @@ balls of 10 mm (1 kg) in the mill's drum, turning from t = 0.
   turns the drum at 0.9 of its critical speed sqrt(2 g / (D - d)).
 - A sweep of drum.speed_fraction=0.6,0.8 makes a folder per value and a
   table whose rows have those speeds.
-- A scene with an error runs nothing and writes no folder.
+- A scene with an error runs nothing and writes no folder; nor does a
+  sweep one of whose values is wrong (checked before the first runs).
 
 usage: runner.py DEMILL SCENE WORK_DIR"""
 
@@ -112,6 +113,12 @@ def main():
     want = f"{bad}:{line}: materials.steel.density: expected a number > 0 kg/m^3, got 'heavy'"
     assert want in p.stderr, p.stderr
     assert not os.path.exists(at("bad")), "a bad scene made its output folder"
+    p = subprocess.run([demill, "run", scene, *SHORT, "--set", "stop={time: 0.005}",
+                        "--set", "drum.speed_fraction=0.5,200",
+                        "--out", at("bad-sweep")], capture_output=True, text=True)
+    assert p.returncode != 0 and "--set drum.speed_fraction: expected a number in [-100, 100], " \
+        "got '200'" in p.stderr, p.stderr
+    assert not os.path.exists(at("bad-sweep")), "a sweep with a bad value ran"
     print("runner: run, power by size class, restart, sweep and error checked")
 
 

@@ -424,6 +424,24 @@ static int run_one(const run_args *a, char **summary)
     return rc;
 }
 
+/* Reads and checks the scene of a.scene_path with a's overrides, running
+ * nothing (SCENE_CHECK): 0, or -1 with a message on stderr. */
+static int check_scene(const run_args *a)
+{
+    tree *t = read_scene(a);
+    char err[1024], dir[4096];
+    scene s = {0};
+    if (!t)
+        return -1;
+    folder_of(a->scene_path, dir, sizeof dir);
+    const int bad = scene_build(&s, t, dir, SCENE_CHECK, err, sizeof err);
+    if (bad)
+        fprintf(stderr, "demill: %s\n", err);
+    demill_world_destroy(s.w);
+    tree_free(t);
+    return bad;
+}
+
 /* ---- sweeps ------------------------------------------------------------------ */
 
 /* A --set whose value is a comma list at the top level (not [..] or {..}). */
@@ -442,8 +460,25 @@ static int run_sweep(run_args *a, size_t which)
     char *vals[MAX_SWEEP];
     size_t nv = 0;
     int rc = 0;
-    if (!values || make_dir(base_out))
+    if (!values)
         return -1;
+    /* every value checked before any runs (a restart's scene is checked
+     * against its checkpoint as each run starts) */
+    for (char *v = strtok_r(values, ",", &save); v && !a->restart; v = strtok_r(NULL, ",", &save)) {
+        char one[4096];
+        snprintf(one, sizeof one, "%.*s=%s", (int)(eq - set), set, v);
+        run_args b = *a;
+        b.set[which] = one;
+        if (check_scene(&b)) {
+            free(values);
+            return -1;
+        }
+    }
+    strcpy(values, eq + 1);
+    if (make_dir(base_out)) {
+        free(values);
+        return -1;
+    }
     for (char *v = strtok_r(values, ",", &save); v && nv < MAX_SWEEP; v = strtok_r(NULL, ",", &save)) {
         char one[4096], out[4096];
         snprintf(one, sizeof one, "%.*s=%s", (int)(eq - set), set, v);
@@ -576,20 +611,10 @@ int main(int argc, char **argv)
     if (parse_run(argc - 2, argv + 2, &a, check_only))
         return EXIT_FAILURE;
     if (check_only) {
-        tree *t = read_scene(&a);
-        char err[1024], dir[4096];
-        scene s = {0};
-        if (!t)
+        if (check_scene(&a))
             return EXIT_FAILURE;
-        folder_of(a.scene_path, dir, sizeof dir);
-        const int bad = scene_build(&s, t, dir, SCENE_CHECK, err, sizeof err);
-        if (bad)
-            fprintf(stderr, "demill: %s\n", err);
-        else
-            printf("demill: %s is a valid scene\n", a.scene_path);
-        demill_world_destroy(s.w);
-        tree_free(t);
-        return bad ? EXIT_FAILURE : EXIT_SUCCESS;
+        printf("demill: %s is a valid scene\n", a.scene_path);
+        return EXIT_SUCCESS;
     }
     size_t sweep = MAX_SETS;
     for (size_t k = 0; k < a.nset; k++)
