@@ -219,7 +219,7 @@ START_TEST(test_bad)
         {"materials: {steel: {}}\npairs:\n  - materials: [steel, iron]\nstop: {time: 1}\n", NULL,
          "t.yaml:3: pairs.0.materials.1: expected a material of 'materials' (steel), got 'iron'"},
         {"wrld: {}\n", NULL, "t.yaml:1: wrld: unknown key (did you mean 'world'?)"},
-        {"world: {}\n", NULL, "t.yaml:1: missing 'stop' (time or revolutions)"},
+        {"world: {}\n", NULL, "t.yaml:1: missing 'stop' (time, revolutions, empty or steady)"},
         {"a: &x 1\nb: *x\n", NULL, "t.yaml:1: anchors, aliases and tags are not allowed in a scene file"},
         {"stop: {time: 1}\nstop: {time: 2}\n", NULL, "t.yaml:2: key 'stop' given twice"},
         {"stop: {time: -1}\n", NULL, "t.yaml:1: stop.time: expected a number > 0, got '-1'"},
@@ -260,7 +260,8 @@ START_TEST(test_bad)
 }
 END_TEST
 
-/* every key of the registry's groups is a scene key, under its own name */
+/* every key of the registry's groups is a scene key, under its own name,
+ * in its group's table */
 START_TEST(test_keys)
 {
     char *text = NULL;
@@ -271,21 +272,22 @@ START_TEST(test_keys)
     static const struct {
         int32_t first, last;
         const char *section;
-    } groups[] = {{100, 149, "\nworld:"}, {200, 299, "\nmaterial:"}, {300, 399, "\npair:"},
-                  {400, 449, "\ndrum:"}};
+    } groups[] = {{100, 149, "#### world\n"}, {200, 299, "#### materials.NAME\n"},
+                  {300, 399, "#### pairs[]\n"}, {400, 449, "#### drum\n"}};
     for (size_t g = 0; g < 4; g++) {
-        const char *line = strstr(text, groups[g].section);
-        ck_assert_ptr_nonnull(line);
-        const char *end = strchr(line + 1, '\n');
+        const char *table = strstr(text, groups[g].section);
+        ck_assert_ptr_nonnull(table);
+        const char *end = strstr(table + 1, "####");
         int count = 0;
         for (int32_t key = groups[g].first; key <= groups[g].last; key++) {
             const char *name = demill_param_name(key);
             if (!name)
                 continue;
-            char word[80];
-            snprintf(word, sizeof word, " %s", strchr(name, '.') + 1);
-            const char *at = strstr(line, word);
-            ck_assert_msg(at && at < end, "%s missing from `demill keys`", name);
+            char row[80];
+            snprintf(row, sizeof row, "\n| `%s` | %s |", strchr(name, '.') + 1,
+                     strcmp(demill_param_unit(key), "enum") ? demill_param_unit(key) : "choice");
+            const char *at = strstr(table, row);
+            ck_assert_msg(at && (!end || at < end), "%s missing from `demill keys`", name);
             count++;
         }
         ck_assert_int_gt(count, 0);

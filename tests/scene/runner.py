@@ -18,10 +18,17 @@ balls of 10 mm (1 kg) in the mill's drum, turning from t = 0.
   turns the drum at 0.9 of its critical speed sqrt(2 g / (D - d)).
 - A sweep of drum.speed_fraction=0.6,0.8 makes a folder per value and a
   table whose rows have those speeds.
+- tests/scene/hopper.yaml, a small conical hopper, stops when it is empty
+  (its first sample with no bead left in the hopper, before its 3 s limit):
+  its outlet then holds all 300 beads of 4 mm and their mass, 300 rho pi
+  d^3 / 6 (glass, 2500 kg/m^3), and the beads in the world never grew in
+  number. tests/scene/rest.yaml, a ball dropped on a floor, stops when its
+  count of wall contacts is steady: one, the ball resting, long before its
+  5 s limit.
 - A scene with an error runs nothing and writes no folder; nor does a
   sweep one of whose values is wrong (checked before the first runs).
 
-usage: runner.py DEMILL SCENE WORK_DIR"""
+usage: runner.py DEMILL SCENE WORK_DIR (the other scenes beside this file)"""
 
 import csv
 import math
@@ -102,6 +109,22 @@ def main():
     assert [float(r["speed_fraction_critical"]) for r in table] == [0.6, 0.8]
     for v in ("0.6", "0.8"):
         assert os.path.exists(os.path.join(at("sweep"), f"drum.speed_fraction={v}", "summary.txt"))
+
+    # stops: an emptied hopper, a steady count of contacts
+    here = os.path.dirname(os.path.abspath(__file__))
+    run(demill, os.path.join(here, "hopper.yaml"), "--out", at("hopper"))
+    s = summary(at("hopper"))
+    bead = 2500 * math.pi * 0.004 ** 3 / 6
+    assert float(s["emptied_s"]) < 3 - 1e-9, f"not emptied: {s['emptied_s']}"
+    assert int(s["outlet_0_particles"]) == 300, s["outlet_0_particles"]
+    assert abs(float(s["outlet_0_mass_kg"]) - 300 * bead) <= 1e-5 * 300 * bead
+    with open(os.path.join(at("hopper"), "flow.csv")) as f:
+        count = [float(r["world.particle_count"]) for r in csv.DictReader(f)]
+    assert all(b <= a for a, b in zip(count, count[1:])) and count[-1] == 0, count[-5:]
+    run(demill, os.path.join(here, "rest.yaml"), "--out", at("rest"))
+    s = summary(at("rest"))
+    assert s["steady"] == "yes" and float(s["steady_mean"]) == 1, s
+    assert float(s["simulated_s"]) < 1, s["simulated_s"]
 
     # an error: a message naming the file, the line and the key; nothing runs
     bad = at("bad.yaml")

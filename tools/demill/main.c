@@ -178,6 +178,70 @@ static void power_by_class(demill_world *w, demill_id drum, const double *edges,
     free(tr);
 }
 
+/* Whether any particle's centre is inside the region of a stop.empty. */
+static int region_holds_any(demill_world *w, size_t n, int32_t kind, const double *r, int dim)
+{
+    if (!n)
+        return 0;
+    double *x = malloc(3 * n * sizeof *x);
+    size_t got;
+    if (!x) {
+        fprintf(stderr, "demill: out of memory\n");
+        exit(EXIT_FAILURE);
+    }
+    check(demill_particles_read(w, DEMILL_PARTICLE_POSITION, x, n, &got), "positions");
+    int any = 0;
+    for (size_t k = 0; k < got && !any; k++) {
+        const double *p = x + 3 * k;
+        if (kind == DEMILL_REGION_BOX) {
+            any = 1;
+            for (int j = 0; j < dim; j++)
+                any &= p[j] >= r[j] && p[j] <= r[3 + j];
+        } else { /* a cylinder: within the radius of the axis, between its ends */
+            double axis[3], d[3], len2 = 0, along = 0, off = 0;
+            for (int j = 0; j < 3; j++) {
+                axis[j] = r[3 + j] - r[j];
+                d[j] = p[j] - r[j];
+                len2 += axis[j] * axis[j];
+                along += d[j] * axis[j];
+            }
+            along /= len2;
+            for (int j = 0; j < 3; j++)
+                off += (d[j] - along * axis[j]) * (d[j] - along * axis[j]);
+            any = along >= 0 && along <= 1 && off <= r[6] * r[6];
+        }
+    }
+    free(x);
+    return any;
+}
+
+/* A world or drum quantity of the registry. */
+static double quantity(demill_world *w, demill_id drum, int32_t key)
+{
+    double v;
+    check(key < 400 ? demill_world_get(w, key, &v) : demill_drum_get(w, drum, key, &v), "a quantity");
+    return v;
+}
+
+/* The mean of the samples q->b[from .. from + win). */
+static double window_mean(const series *q, size_t from, size_t win)
+{
+    double m = 0;
+    for (size_t k = from; k < from + win; k++)
+        m += q->b[k];
+    return m / win;
+}
+
+/* Whether the last 2 × win samples' two halves have means within tol
+ * (relative) of each other. */
+static int steady(const series *q, size_t win, double tol)
+{
+    if (!win || q->n < 2 * win)
+        return 0;
+    const double a = window_mean(q, q->n - 2 * win, win), b = window_mean(q, q->n - win, win);
+    return fabs(b - a) <= tol * fabs(b);
+}
+
 /* Runs one scene into a.out; the summary's text goes to *summary (the
  * caller frees it). 0, or -1 with a message on stderr. */
 static int run_one(const run_args *a, char **summary)
@@ -274,6 +338,9 @@ static int run_one(const run_args *a, char **summary)
     int turning = a->restart && drum && s.speed_key && t >= s.drum_start - 0.5 * s.dt;
     if (turning && s.speed_set)
         check(demill_drum_set(w, drum, s.speed_key, s.speed_value), "the drum's speed");
+    series watched = {0}; /* the steady stop's quantity */
+    const size_t steady_win = s.steady_key ? (size_t)fmax(1, round(s.steady_window / s.every)) : 0;
+    double emptied = NAN;
     uint64_t steps = 0;
     const double t_step0 = now();
     const int tty = isatty(fileno(stderr));
@@ -284,8 +351,17 @@ static int run_one(const run_args *a, char **summary)
     for (;;) {
         const double revs = drum ? drum_value(w, drum, DEMILL_DRUM_REVOLUTIONS) : 0;
         if ((!isnan(s.stop_time) && t >= s.stop_time - 0.5 * s.dt) ||
-            (!isnan(s.stop_revolutions) && revs >= s.stop_revolutions))
+            (!isnan(s.stop_revolutions) && revs >= s.stop_revolutions) ||
+            (s.steady_key && steady(&watched, steady_win, s.steady_tolerance)))
             break;
+        if (s.empty_kind && steps) {
+            double count;
+            check(demill_world_get(w, DEMILL_WORLD_PARTICLE_COUNT, &count), "particles");
+            if (!region_holds_any(w, (size_t)count, s.empty_kind, s.empty_params, s.dim)) {
+                emptied = t;
+                break;
+            }
+        }
         if (drum && s.speed_key && !turning && t >= s.drum_start - 0.5 * s.dt) {
             check(demill_drum_set(w, drum, s.speed_key, s.speed_value), "the drum's speed");
             turning = bar.turning = 1;
@@ -311,14 +387,11 @@ static int run_one(const run_args *a, char **summary)
                 class_samples++;
             }
         }
+        if (s.steady_key)
+            series_add(&watched, t, quantity(w, drum, s.steady_key));
         if (csv) {
-            for (size_t k = 0; k < s.ncol; k++) {
-                double v;
-                const int32_t key = s.col_key[k];
-                check(key < 400 ? demill_world_get(w, key, &v) : demill_drum_get(w, drum, key, &v),
-                      "a column");
-                fprintf(csv, "%s%.9g", k ? "," : "", v + 0.0);
-            }
+            for (size_t k = 0; k < s.ncol; k++)
+                fprintf(csv, "%s%.9g", k ? "," : "", quantity(w, drum, s.col_key[k]) + 0.0);
             fputc('\n', csv);
         }
         uint64_t step_count;
@@ -391,6 +464,25 @@ static int run_one(const run_args *a, char **summary)
                     class_samples);
         }
     }
+    for (size_t k = 0; k < s.noutlets; k++) {
+        uint64_t counts[32];
+        double masses[32], m = 0;
+        size_t nc;
+        unsigned long long c = 0;
+        check(demill_outlet_read(w, s.outlet[k], counts, masses, 32, &nc, NULL), "an outlet");
+        for (size_t j = 0; j < nc; j++) {
+            c += counts[j];
+            m += masses[j];
+        }
+        fprintf(sum, "outlet_%zu_particles = %llu\noutlet_%zu_mass_kg = %.6g\n", k, c, k, m);
+    }
+    if (s.empty_kind)
+        fprintf(sum, "emptied_s = %.6g\n", emptied);
+    if (s.steady_key)
+        fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
+                steady(&watched, steady_win, s.steady_tolerance) ? "yes" : "no",
+                watched.n >= steady_win ? window_mean(&watched, watched.n - steady_win, steady_win)
+                                        : NAN);
     fprintf(sum, "wall_s = %.2f\nparticle_steps_per_s = %.4g\n", now() - t_wall0,
             steps * (double)n / (t_step1 - t_step0));
     fclose(sum);
@@ -417,6 +509,7 @@ static int run_one(const run_args *a, char **summary)
     if (isfinite(mean_power))
         printf("        mean power over the last revolution %.4f W\n", mean_power);
     series_free(&rows);
+    series_free(&watched);
     demill_world_destroy(w);
     example_world = NULL;
     tree_free(doc);

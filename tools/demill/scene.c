@@ -302,7 +302,7 @@ static int applies(const ctx *c, const tree *n)
 /* ---- sections ------------------------------------------------------------------ */
 
 static const char *const top_keys[] = {"world", "materials", "pairs", "particles", "walls",
-                                       "drum", "outputs", "stop"};
+                                       "drum", "feeds", "outlets", "outputs", "stop"};
 
 static int material_index(ctx *c, const tree *n, size_t *at)
 {
@@ -556,9 +556,12 @@ static int sizes_of(ctx *c, const tree *t, int32_t *dist, double *params, size_t
     return numbers(c, e, 4, 4, params, NULL);
 }
 
-static int region_of(ctx *c, const tree *t, int32_t *kind, double *params, size_t *np)
+static const char *const k_region[] = {"box", "cylinder", "half_space"};
+
+/* A region: drum, {box: [6]}, {cylinder: [7]} or, where `half` allows it,
+ * {half_space: [point, normal]}. */
+static int region_of(ctx *c, const tree *t, int half, int32_t *kind, double *params, size_t *np)
 {
-    static const char *const names[] = {"box", "cylinder"};
     if (t->kind == TREE_SCALAR && !strcmp(t->text, "drum")) {
         if (!tree_get(c->root, "drum"))
             return fail(c, t, "the region drum needs a 'drum' section");
@@ -567,13 +570,15 @@ static int region_of(ctx *c, const tree *t, int32_t *kind, double *params, size_
         return 0;
     }
     if (t->kind != TREE_MAP || t->n != 1)
-        return fail(c, t, "expected drum, {box: [x_lo, y_lo, z_lo, x_hi, y_hi, z_hi]} or "
-                          "{cylinder: [x0, y0, z0, x1, y1, z1, radius]}");
-    if (check_keys(c, t, names, 2))
+        return fail(c, t, "expected drum, {box: [x_lo, y_lo, z_lo, x_hi, y_hi, z_hi]}, "
+                          "{cylinder: [x0, y0, z0, x1, y1, z1, radius]}%s",
+                    half ? " or {half_space: [x, y, z, nx, ny, nz]}" : "");
+    if (check_keys(c, t, k_region, half ? 3 : 2))
         return -1;
-    const int box = !strcmp(t->kid[0]->key, "box");
-    *kind = box ? DEMILL_REGION_BOX : DEMILL_REGION_CYLINDER;
-    *np = box ? 6 : 7;
+    const char *k = t->kid[0]->key;
+    *kind = !strcmp(k, "box") ? DEMILL_REGION_BOX
+            : !strcmp(k, "cylinder") ? DEMILL_REGION_CYLINDER : DEMILL_REGION_HALF_SPACE;
+    *np = *kind == DEMILL_REGION_CYLINDER ? 7 : 6;
     return numbers(c, t->kid[0], *np, *np, params, NULL);
 }
 
@@ -697,7 +702,7 @@ static int particles_section(ctx *c, const tree *t)
         double rp[7], sp[64], value = 0, seed = 1;
         size_t nr = 0, ns = 0;
         const tree *sz = need(c, p, "sizes");
-        if (region_of(c, region, &kind, rp, &nr) || !sz || sizes_of(c, sz, &dist, sp, &ns))
+        if (region_of(c, region, 0, &kind, rp, &nr) || !sz || sizes_of(c, sz, &dist, sp, &ns))
             return -1;
         static const char *const targets[] = {"count", "mass", "fraction"};
         for (int j = 0; j < 3; j++) {
@@ -777,10 +782,89 @@ static int motion_of(ctx *c, const tree *wall, demill_id id)
     return 0;
 }
 
+/* The wall shapes: their vectors (3 numbers each), then their numbers;
+ * keys past `required` are optional (0, or no caps). */
+typedef struct shape {
+    const char *name;
+    int nvec, nnum, required, caps;
+    const char *keys[6];
+} shape;
+
+static const shape shapes[] = {
+    {"plane", 2, 0, 2, 0, {"point", "normal"}},
+    {"rectangle", 3, 2, 5, 0, {"centre", "normal", "direction", "half_width", "half_height"}},
+    {"disc", 2, 2, 3, 0, {"centre", "normal", "outer_radius", "inner_radius"}},
+    {"cylinder", 2, 2, 4, 1, {"point", "axis", "radius", "length", "caps"}},
+    {"cone", 2, 3, 5, 1, {"point", "axis", "radius_start", "radius_end", "length", "caps"}},
+};
+#define NSHAPES (sizeof shapes / sizeof shapes[0])
+static const char *const k_caps[] = {"none", "start", "end", "both"};
+static const char *const k_stl[] = {"file", "scale", "transform"};
+static const char *const k_walls[] = {"material", "plane", "rectangle", "disc", "cylinder",
+                                      "cone", "stl", "motion", "harmonic", "surface_velocity"};
+
+static int add_shape(ctx *c, const shape *sh, const tree *t, demill_id mat, demill_id *id)
+{
+    double v[3][3] = {{0}}, x[3] = {0};
+    int32_t caps = DEMILL_CAPS_NONE;
+    const int nkeys = sh->nvec + sh->nnum + sh->caps;
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, sh->keys, (size_t)nkeys))
+        return -1;
+    for (int k = 0; k < nkeys; k++) {
+        const tree *e = k < sh->required ? need(c, t, sh->keys[k]) : tree_get(t, sh->keys[k]);
+        if (k < sh->required && !e)
+            return -1;
+        if (!e)
+            continue;
+        if (k < sh->nvec) {
+            if (numbers(c, e, 3, 3, v[k], NULL))
+                return -1;
+        } else if (k < sh->nvec + sh->nnum) {
+            if (number(c, e, -HUGE_VAL, HUGE_VAL, &x[k - sh->nvec]))
+                return -1;
+        } else {
+            while (caps < 4 && (e->kind != TREE_SCALAR || strcmp(e->text, k_caps[caps])))
+                caps++;
+            if (caps == 4)
+                return fail(c, e, "expected none, start, end or both, got '%s'", kind_name(e));
+        }
+    }
+    if (c->mode != SCENE_BUILD)
+        return 0;
+    demill_world *w = c->s->w;
+    demill_status st;
+    switch (sh - shapes) {
+    case 0: st = demill_wall_add_plane(w, mat, v[0], v[1], id); break;
+    case 1: st = demill_wall_add_rectangle(w, mat, v[0], v[1], v[2], x[0], x[1], id); break;
+    case 2: st = demill_wall_add_disc(w, mat, v[0], v[1], x[0], x[1], id); break;
+    case 3: st = demill_wall_add_cylinder(w, mat, v[0], v[1], x[0], x[1], caps, id); break;
+    default: st = demill_wall_add_cone(w, mat, v[0], v[1], x[0], x[1], x[2], caps, id); break;
+    }
+    return api(c, t, st);
+}
+
+static int add_stl(ctx *c, const tree *stl, demill_id mat, demill_id *id)
+{
+    double scale = 1, tr[12];
+    const tree *f, *sc, *tf;
+    if (need_kind(c, stl, TREE_MAP) || check_keys(c, stl, k_stl, 3) || !(f = need(c, stl, "file")))
+        return -1;
+    if (f->kind != TREE_SCALAR || !*f->text)
+        return fail(c, f, "expected a file name, got %s", kind_name(f));
+    if ((sc = tree_get(stl, "scale")) && positive(c, sc, &scale))
+        return -1;
+    if ((tf = tree_get(stl, "transform")) && numbers(c, tf, 12, 12, tr, NULL))
+        return -1;
+    char path[4096];
+    snprintf(path, sizeof path, "%s%s%s", f->text[0] == '/' ? "" : c->dir,
+             f->text[0] == '/' ? "" : "/", f->text);
+    if (c->mode != SCENE_BUILD)
+        return 0;
+    return api(c, stl, demill_wall_load_stl(c->s->w, mat, path, scale, tf ? tr : NULL, id));
+}
+
 static int walls_section(ctx *c, const tree *t)
 {
-    static const char *const names[] = {"material", "plane", "stl", "motion", "harmonic",
-                                        "surface_velocity"};
     if (!t)
         return 0;
     if (need_kind(c, t, TREE_SEQ))
@@ -788,46 +872,105 @@ static int walls_section(ctx *c, const tree *t)
     for (size_t k = 0; k < t->n; k++) {
         const tree *wl = t->kid[k];
         demill_id mat, id = DEMILL_ID_NONE;
-        if (need_kind(c, wl, TREE_MAP) || check_keys(c, wl, names, 6))
+        if (need_kind(c, wl, TREE_MAP) || check_keys(c, wl, k_walls, sizeof k_walls / sizeof k_walls[0]))
             return -1;
         if (c->mode == SCENE_RESTART && applies(c, wl))
             return fail(c, wl, "walls cannot change on a restart");
         if (material_of(c, wl, &mat))
             return -1;
-        const tree *pl = tree_get(wl, "plane"), *stl = tree_get(wl, "stl");
-        if (!!pl == !!stl)
-            return fail(c, wl, "expected either plane or stl");
-        if (pl) {
-            static const char *const pn[] = {"point", "normal"};
-            double pt[3], nm[3];
-            const tree *a, *b;
-            if (need_kind(c, pl, TREE_MAP) || check_keys(c, pl, pn, 2) || !(a = need(c, pl, "point")) ||
-                !(b = need(c, pl, "normal")) || numbers(c, a, 3, 3, pt, NULL) ||
-                numbers(c, b, 3, 3, nm, NULL))
-                return -1;
-            if (c->mode == SCENE_BUILD && api(c, pl, demill_wall_add_plane(c->s->w, mat, pt, nm, &id)))
-                return -1;
-        } else {
-            static const char *const sn[] = {"file", "scale", "transform"};
-            double scale = 1, tr[12];
-            const tree *f, *sc, *tf;
-            if (need_kind(c, stl, TREE_MAP) || check_keys(c, stl, sn, 3) || !(f = need(c, stl, "file")))
-                return -1;
-            if (f->kind != TREE_SCALAR || !*f->text)
-                return fail(c, f, "expected a file name, got %s", kind_name(f));
-            if ((sc = tree_get(stl, "scale")) && positive(c, sc, &scale))
-                return -1;
-            if ((tf = tree_get(stl, "transform")) && numbers(c, tf, 12, 12, tr, NULL))
-                return -1;
-            char path[4096];
-            snprintf(path, sizeof path, "%s%s%s", f->text[0] == '/' ? "" : c->dir,
-                     f->text[0] == '/' ? "" : "/", f->text);
-            if (c->mode == SCENE_BUILD &&
-                api(c, stl, demill_wall_load_stl(c->s->w, mat, path, scale, tf ? tr : NULL, &id)))
-                return -1;
+        const tree *geometry = NULL;
+        size_t which = NSHAPES; /* NSHAPES: stl */
+        for (size_t j = 0; j <= NSHAPES; j++) {
+            const tree *g = tree_get(wl, j < NSHAPES ? shapes[j].name : "stl");
+            if (g && geometry)
+                return fail(c, g, "a wall has one shape (plane, rectangle, disc, cylinder, cone or stl)");
+            if (g) {
+                geometry = g;
+                which = j;
+            }
         }
+        if (!geometry)
+            return fail(c, wl, "missing its shape: plane, rectangle, disc, cylinder, cone or stl");
+        if (which < NSHAPES ? add_shape(c, &shapes[which], geometry, mat, &id)
+                            : add_stl(c, geometry, mat, &id))
+            return -1;
         if (motion_of(c, wl, id))
             return -1;
+    }
+    return 0;
+}
+
+static const char *const k_feeds[] = {"material", "region", "sizes", "mass_rate", "velocity",
+                                      "start", "stop", "seed"};
+static const char *const k_outlets[] = {"region", "edges", "interval"};
+
+static int feeds_section(ctx *c, const tree *t)
+{
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_SEQ))
+        return -1;
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *f = t->kid[k], *e;
+        demill_id mat, id;
+        int32_t kind = 0, dist = 0;
+        double rp[7], sp[64], rate, vel[3] = {0, 0, 0}, start = 0, stop = INFINITY, seed = 1;
+        size_t nr = 0, ns = 0;
+        if (need_kind(c, f, TREE_MAP) || check_keys(c, f, k_feeds, sizeof k_feeds / sizeof k_feeds[0]))
+            return -1;
+        if (c->mode == SCENE_RESTART && applies(c, f))
+            return fail(c, f, "feeds cannot change on a restart");
+        const tree *region = need(c, f, "region"), *sz = region ? need(c, f, "sizes") : NULL,
+                   *mr = sz ? need(c, f, "mass_rate") : NULL;
+        if (!mr || material_of(c, f, &mat) || region_of(c, region, 0, &kind, rp, &nr) ||
+            sizes_of(c, sz, &dist, sp, &ns) || positive(c, mr, &rate))
+            return -1;
+        if ((e = tree_get(f, "velocity")) && numbers(c, e, 3, 3, vel, NULL))
+            return -1;
+        if ((e = tree_get(f, "start")) && number(c, e, -HUGE_VAL, HUGE_VAL, &start))
+            return -1;
+        if ((e = tree_get(f, "stop")) && number(c, e, start, HUGE_VAL, &stop))
+            return -1;
+        if ((e = tree_get(f, "seed")) && (number(c, e, 0, 9007199254740992.0, &seed) || seed != floor(seed)))
+            return fail(c, e, "expected a whole number >= 0, got '%s'", kind_name(e));
+        if (c->mode == SCENE_BUILD &&
+            api(c, f, demill_feed_create(c->s->w, kind, rp, nr, mat, dist, sp, ns, rate, vel, start,
+                                         stop, (uint64_t)seed, &id)))
+            return -1;
+    }
+    return 0;
+}
+
+static int outlets_section(ctx *c, const tree *t)
+{
+    c->s->noutlets = 0;
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_SEQ))
+        return -1;
+    if (t->n > SCENE_MAX_OUTLETS)
+        return fail(c, t, "expected at most %d outlets", SCENE_MAX_OUTLETS);
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *o = t->kid[k], *e;
+        int32_t kind = 0;
+        double rp[7], edges[31], interval = 0.1;
+        size_t nr = 0, ne = 0;
+        if (need_kind(c, o, TREE_MAP) || check_keys(c, o, k_outlets, 3))
+            return -1;
+        if (c->mode == SCENE_RESTART && applies(c, o))
+            return fail(c, o, "outlets cannot change on a restart");
+        const tree *region = need(c, o, "region");
+        if (!region || region_of(c, region, 1, &kind, rp, &nr))
+            return -1;
+        if ((e = tree_get(o, "edges")) && numbers(c, e, 0, 31, edges, &ne))
+            return -1;
+        if ((e = tree_get(o, "interval")) && positive(c, e, &interval))
+            return -1;
+        if (c->mode == SCENE_BUILD &&
+            api(c, o, demill_outlet_create(c->s->w, kind, rp, nr, ne, edges, interval,
+                                           &c->s->outlet[k])))
+            return -1;
+        c->s->noutlets = c->mode == SCENE_BUILD ? k + 1 : 0;
     }
     return 0;
 }
@@ -914,14 +1057,18 @@ static int outputs_section(ctx *c, const tree *t)
     return 0;
 }
 
+static const char *const k_stop[] = {"time", "revolutions", "empty", "steady"};
+static const char *const k_steady[] = {"quantity", "window", "tolerance"};
+
 static int stop_section(ctx *c, const tree *t)
 {
-    static const char *const names[] = {"time", "revolutions"};
     scene *s = c->s;
     s->stop_time = s->stop_revolutions = NAN;
+    s->empty_kind = 0;
+    s->steady_key = 0;
     if (!t)
-        return fail(c, c->root, "missing 'stop' (time or revolutions)");
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, names, 2))
+        return fail(c, c->root, "missing 'stop' (time, revolutions, empty or steady)");
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_stop, 4))
         return -1;
     const tree *e;
     if ((e = tree_get(t, "time")) && positive(c, e, &s->stop_time))
@@ -930,12 +1077,33 @@ static int stop_section(ctx *c, const tree *t)
         if (!tree_get(c->root, "drum"))
             return fail(c, e, "revolutions need a drum");
         if (positive(c, e, &s->stop_revolutions) || s->stop_revolutions != floor(s->stop_revolutions))
-            return fail(c, e, "expected a whole number > 0, got '%s'", e->text);
+            return fail(c, e, "expected a whole number > 0, got '%s'", kind_name(e));
         if (!s->speed_key)
             return fail(c, e, "the drum has no speed (speed, speed_rpm or speed_fraction)");
     }
-    if (isnan(s->stop_time) && isnan(s->stop_revolutions))
-        return fail(c, t, "expected time or revolutions");
+    if ((e = tree_get(t, "empty"))) {
+        size_t np;
+        if (region_of(c, e, 0, &s->empty_kind, s->empty_params, &np))
+            return -1;
+        if (s->empty_kind == DEMILL_REGION_DRUM)
+            return fail(c, e, "expected a box or a cylinder, got drum");
+    }
+    if ((e = tree_get(t, "steady"))) {
+        const tree *q, *wn, *tol;
+        if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_steady, 3) ||
+            !(q = need(c, e, "quantity")) || !(wn = need(c, e, "window")) ||
+            !(tol = need(c, e, "tolerance")))
+            return -1;
+        if (q->kind != TREE_SCALAR || column_key(q->text, &s->steady_key))
+            return fail(c, q, "expected a world.* or drum.* quantity of the parameter registry, got '%s'",
+                        kind_name(q));
+        if (s->steady_key >= 400 && !tree_get(c->root, "drum"))
+            return fail(c, q, "a drum quantity without a drum");
+        if (positive(c, wn, &s->steady_window) || positive(c, tol, &s->steady_tolerance))
+            return -1;
+    }
+    if (isnan(s->stop_time) && isnan(s->stop_revolutions) && !s->empty_kind && !s->steady_key)
+        return fail(c, t, "expected time, revolutions, empty or steady");
     return 0;
 }
 
@@ -954,6 +1122,7 @@ int scene_build(scene *s, const tree *root, const char *dir, int mode, char *err
         pairs_section(&c, tree_get(root, "pairs")) || drum_section(&c, tree_get(root, "drum")) ||
         walls_section(&c, tree_get(root, "walls")) ||
         particles_section(&c, tree_get(root, "particles")) ||
+        feeds_section(&c, tree_get(root, "feeds")) || outlets_section(&c, tree_get(root, "outlets")) ||
         outputs_section(&c, tree_get(root, "outputs")) || stop_section(&c, tree_get(root, "stop")))
         goto out;
     if (auto_dt) {
@@ -978,31 +1147,47 @@ out:
     return rc;
 }
 
+/* One group's table: key, unit, allowed values, default. */
+static void key_table(FILE *f, const char *title, const group *g)
+{
+    fprintf(f, "#### %s\n\n| key | unit | allowed | default |\n|---|---|---|---|\n", title);
+    for (size_t k = 0; k < g->n; k++) {
+        double lo, hi, def;
+        demill_param_bounds(g->key[k], &lo, &hi, &def);
+        const char *unit = demill_param_unit(g->key[k]);
+        const choice *ch = choice_of(g->key[k]);
+        char allowed[256] = "", dflt[64];
+        snprintf(dflt, sizeof dflt, "%g", def);
+        if (ch) {
+            for (int v = 0; v < 7; v++)
+                if (ch->names[v] && *ch->names[v])
+                    snprintf(allowed + strlen(allowed), sizeof allowed - strlen(allowed), "%s%s",
+                             *allowed ? ", " : "", ch->names[v]);
+            snprintf(dflt, sizeof dflt, "%s", ch->names[(int)def]);
+            unit = "choice";
+        } else if (!strcmp(unit, "bool")) {
+            snprintf(allowed, sizeof allowed, "true, false");
+            snprintf(dflt, sizeof dflt, "%s", def ? "true" : "false");
+        } else {
+            char a[48], b[48];
+            bound_text(lo, -HUGE_VAL, 1, a, sizeof a);
+            bound_text(hi, HUGE_VAL, 0, b, sizeof b);
+            snprintf(allowed, sizeof allowed, "%s, %s", a, b);
+        }
+        fprintf(f, "| `%s` | %s | %s | %s |\n", g->name[k], unit, allowed, dflt);
+    }
+    fputc('\n', f);
+}
+
 void scene_list_keys(FILE *f)
 {
     group g;
-    fputs("top:", f);
-    for (size_t k = 0; k < sizeof top_keys / sizeof top_keys[0]; k++)
-        fprintf(f, " %s", top_keys[k]);
-    fputs("\nworld:", f);
-    for (size_t k = 0; k < 3; k++)
-        fprintf(f, " %s", world_extra[k]);
     group_world(&g);
-    for (size_t k = 0; k < g.n; k++)
-        fprintf(f, " %s", g.name[k]);
+    key_table(f, "world", &g);
     group_material(&g);
-    fputs("\nmaterial:", f);
-    for (size_t k = 0; k < g.n; k++)
-        fprintf(f, " %s", g.name[k]);
+    key_table(f, "materials.NAME", &g);
     group_pair(&g);
-    fputs("\npair: materials", f);
-    for (size_t k = 0; k < g.n; k++)
-        fprintf(f, " %s", g.name[k]);
+    key_table(f, "pairs[]", &g);
     group_drum(&g);
-    fputs("\ndrum:", f);
-    for (size_t k = 0; k < 2; k++)
-        fprintf(f, " %s", drum_extra[k]);
-    for (size_t k = 0; k < g.n; k++)
-        fprintf(f, " %s", g.name[k]);
-    fputc('\n', f);
+    key_table(f, "drum", &g);
 }

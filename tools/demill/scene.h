@@ -14,6 +14,7 @@
 #define SCENE_MAX_MATERIALS 256
 #define SCENE_MAX_COLUMNS 64
 #define SCENE_MAX_EDGES 16
+#define SCENE_MAX_OUTLETS 16
 
 typedef struct scene {
     demill_world *w;
@@ -27,7 +28,14 @@ typedef struct scene {
     int32_t speed_key;          /* the drum's speed key given, 0 for none */
     double speed_value;
     int speed_set;              /* the speed was given with --set */
+    size_t noutlets;            /* the outlets made (none on a restart) */
+    demill_id outlet[SCENE_MAX_OUTLETS];
     double stop_time, stop_revolutions; /* NAN when not given */
+    int32_t empty_kind;         /* stop when this region holds no particle: DEMILL_REGION_BOX or
+                                   _CYLINDER, 0 for none */
+    double empty_params[7];
+    int32_t steady_key;         /* stop when this quantity is steady, 0 for none: */
+    double steady_window, steady_tolerance; /* two windows' means within tolerance (relative) */
     double every;               /* s between samples (time series, stop checks) */
     char csv_file[256];         /* "" for none */
     size_t ncol;
@@ -53,8 +61,9 @@ enum {
  * SCENE_RESTART mode, where s->w stays the caller's). */
 int scene_build(scene *s, const tree *root, const char *dir, int mode, char *err, size_t errlen);
 
-/* Every key a scene file accepts, one per line with its section, for the
- * documentation's check (`demill keys`). */
+/* The tables of the keys a scene file takes from the parameter registry
+ * (world, materials, pairs, drum: unit, allowed values, default), in
+ * Markdown, as docs/scene-files.md has them (`demill keys`). */
 void scene_list_keys(FILE *f);
 
 #endif
