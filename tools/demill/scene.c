@@ -331,6 +331,7 @@ static int material_of(ctx *c, const tree *item, demill_id *id)
 }
 
 static const char *const world_extra[] = {"dimension", "gravity", "steps_per_contact"};
+static const char *const k_pair_extra[] = {"materials"};
 
 /* world: before anything else; a time step of "auto" is set at the end. */
 static int world_section(ctx *c, const tree *t, const tree **auto_dt)
@@ -449,7 +450,7 @@ static int pairs_section(ctx *c, const tree *t)
         return -1;
     group g;
     group_pair(&g);
-    const char *names[MAX_NAMES + 1] = {"materials"};
+    const char *names[MAX_NAMES + 1] = {k_pair_extra[0]};
     for (size_t k = 0; k < g.n; k++)
         names[k + 1] = g.name[k];
     for (size_t k = 0; k < t->n; k++) {
@@ -531,12 +532,14 @@ static int drum_section(ctx *c, const tree *t)
     return 0;
 }
 
+static const char *const k_sizes[] = {"classes", "rosin_rammler", "normal"};
+
 /* sizes: one of classes: [[d, fraction], ...], rosin_rammler: [d63, n, d_min,
  * d_max], normal: [mean, sd, d_min, d_max]. */
 static int sizes_of(ctx *c, const tree *t, int32_t *dist, double *params, size_t *np)
 {
-    static const char *const names[] = {"classes", "rosin_rammler", "normal"};
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, names, 3))
+
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_sizes, 3))
         return -1;
     if (t->n != 1)
         return fail(c, t, "expected one of classes, rosin_rammler or normal");
@@ -671,10 +674,12 @@ out:
     return rc;
 }
 
+static const char *const k_particles[] = {"material", "csv",   "region",   "sizes",
+                                          "count",    "mass",  "fraction", "seed"};
+
 static int particles_section(ctx *c, const tree *t)
 {
-    static const char *const names[] = {"material", "csv", "region", "sizes", "count",
-                                        "mass", "fraction", "seed"};
+
     if (!t)
         return 0;
     if (need_kind(c, t, TREE_SEQ))
@@ -682,7 +687,7 @@ static int particles_section(ctx *c, const tree *t)
     for (size_t k = 0; k < t->n; k++) {
         const tree *p = t->kid[k];
         demill_id mat;
-        if (need_kind(c, p, TREE_MAP) || check_keys(c, p, names, 8))
+        if (need_kind(c, p, TREE_MAP) || check_keys(c, p, k_particles, 8))
             return -1;
         if (c->mode == SCENE_RESTART && applies(c, p) )
             return fail(c, p, "particles cannot change on a restart");
@@ -729,6 +734,10 @@ static int particles_section(ctx *c, const tree *t)
     return 0;
 }
 
+static const char *const k_motion[] = {"velocity", "angular_velocity", "centre"};
+
+static const char *const k_harmonic[] = {"mode", "axis", "amplitude", "frequency", "phase"};
+
 static int motion_of(ctx *c, const tree *wall, demill_id id)
 {
     const tree *m = tree_get(wall, "motion"), *h = tree_get(wall, "harmonic"),
@@ -736,13 +745,13 @@ static int motion_of(ctx *c, const tree *wall, demill_id id)
     if (m && h)
         return fail(c, h, "a wall has motion or harmonic, not both");
     if (m) {
-        static const char *const names[] = {"velocity", "angular_velocity", "centre"};
+
         double v[3][3];
         const tree *e[3];
-        if (need_kind(c, m, TREE_MAP) || check_keys(c, m, names, 3))
+        if (need_kind(c, m, TREE_MAP) || check_keys(c, m, k_motion, 3))
             return -1;
         for (int j = 0; j < 3; j++)
-            if ((e[j] = tree_get(m, names[j])) && numbers(c, e[j], 3, 3, v[j], NULL))
+            if ((e[j] = tree_get(m, k_motion[j])) && numbers(c, e[j], 3, 3, v[j], NULL))
                 return -1;
         if (c->mode == SCENE_BUILD &&
             api(c, m, demill_wall_set_motion(c->s->w, id, e[0] ? v[0] : NULL, e[1] ? v[1] : NULL,
@@ -750,9 +759,9 @@ static int motion_of(ctx *c, const tree *wall, demill_id id)
             return -1;
     }
     if (h) {
-        static const char *const names[] = {"mode", "axis", "amplitude", "frequency", "phase"};
+
         double axis[3], amp, freq, phase = 0;
-        if (need_kind(c, h, TREE_MAP) || check_keys(c, h, names, 5))
+        if (need_kind(c, h, TREE_MAP) || check_keys(c, h, k_harmonic, 5))
             return -1;
         const tree *mode = need(c, h, "mode"), *ax = need(c, h, "axis"),
                    *a = need(c, h, "amplitude"), *fr = need(c, h, "frequency"),
@@ -988,10 +997,12 @@ static int column_key(const char *name, int32_t *key)
     return -1;
 }
 
+static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
+                                        "checkpoint_every", "pictures", "power_by_size"};
+
 static int outputs_section(ctx *c, const tree *t)
 {
-    static const char *const names[] = {"every", "csv", "columns", "vtk_every",
-                                        "checkpoint_every", "pictures", "power_by_size"};
+
     scene *s = c->s;
     s->every = 1e-3;
     s->csv_file[0] = '\0';
@@ -1002,7 +1013,7 @@ static int outputs_section(ctx *c, const tree *t)
     if (!t)
         return 0;
     const tree *e;
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, names, 7))
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 7))
         return -1;
     if ((e = tree_get(t, "every")) && positive(c, e, &s->every))
         return -1;
@@ -1179,8 +1190,48 @@ static void key_table(FILE *f, const char *title, const group *g)
     fputc('\n', f);
 }
 
+/* The sections whose keys are the runner's own, with those keys. */
+#define KEYS(a) a, sizeof a / sizeof a[0]
+typedef struct section {
+    const char *name;
+    const char *const *keys;
+    size_t n;
+} section;
+
+static const section sections[] = {
+    {"(top level)", KEYS(top_keys)},
+    {"world (besides the registry's keys)", KEYS(world_extra)},
+    {"pairs[] (besides the registry's keys)", KEYS(k_pair_extra)},
+    {"drum (besides the registry's keys)", KEYS(drum_extra)},
+    {"particles[]", KEYS(k_particles)},
+    {"particles[].sizes, feeds[].sizes", KEYS(k_sizes)},
+    {"particles[].region, feeds[].region, outlets[].region, stop.empty", KEYS(k_region)},
+    {"walls[]", KEYS(k_walls)},
+    {"walls[].plane", shapes[0].keys, 2},
+    {"walls[].rectangle", shapes[1].keys, 5},
+    {"walls[].disc", shapes[2].keys, 4},
+    {"walls[].cylinder", shapes[3].keys, 5},
+    {"walls[].cone", shapes[4].keys, 6},
+    {"walls[].stl", KEYS(k_stl)},
+    {"walls[].motion", KEYS(k_motion)},
+    {"walls[].harmonic", KEYS(k_harmonic)},
+    {"feeds[]", KEYS(k_feeds)},
+    {"outlets[]", KEYS(k_outlets)},
+    {"outputs", KEYS(k_outputs)},
+    {"stop", KEYS(k_stop)},
+    {"stop.steady", KEYS(k_steady)},
+};
+
 void scene_list_keys(FILE *f)
 {
+    fputs("#### sections\n\n| section | keys |\n|---|---|\n", f);
+    for (size_t k = 0; k < sizeof sections / sizeof sections[0]; k++) {
+        fprintf(f, "| %s |", sections[k].name);
+        for (size_t j = 0; j < sections[k].n; j++)
+            fprintf(f, "%s `%s`", j ? "," : "", sections[k].keys[j]);
+        fputs(" |\n", f);
+    }
+    fputc('\n', f);
     group g;
     group_world(&g);
     key_table(f, "world", &g);
