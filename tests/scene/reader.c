@@ -147,7 +147,7 @@ START_TEST(test_good)
     ck_assert_double_eq(s.every, 1e-4);
     ck_assert_str_eq(s.csv_file, "t.csv");
     ck_assert_uint_eq(s.ncol, 2);
-    ck_assert_int_eq(s.col_key[1], DEMILL_WORLD_CONTACT_COUNT);
+    ck_assert_int_eq(s.col[1].key, DEMILL_WORLD_CONTACT_COUNT);
     ck_assert_uint_eq(s.drum, DEMILL_ID_NONE);
     demill_world_destroy(w);
     tree_free(t);

@@ -25,6 +25,10 @@ balls of 10 mm (1 kg) in the mill's drum, turning from t = 0.
   number. tests/scene/rest.yaml, a ball dropped on a floor, stops when its
   count of wall contacts is steady: one, the ball resting, long before its
   5 s limit.
+- tests/scene/spring.yaml, a 0.3 kg body on a spring of 9720 N/m, swings
+  at sqrt(k/m)/(2 pi) = 28.64789 Hz, measured over the zero crossings of its
+  body.box.position_y column (velocity Verlet's period error (w dt)^2/24 is
+  1.4e-7 at dt = 1e-5 s; 1e-5 allowed).
 - A scene with an error runs nothing and writes no folder; nor does a
   sweep one of whose values is wrong (checked before the first runs).
 
@@ -125,6 +129,17 @@ def main():
     s = summary(at("rest"))
     assert s["steady"] == "yes" and float(s["steady_mean"]) == 1, s
     assert float(s["simulated_s"]) < 1, s["simulated_s"]
+
+    # a body on a spring
+    run(demill, os.path.join(here, "spring.yaml"), "--out", at("spring"))
+    with open(os.path.join(at("spring"), "box.csv")) as f:
+        rows = [(float(r["world.time"]), float(r["body.box.position_y"]) - 0.001)
+                for r in csv.DictReader(f)]
+    crossings = [t0 + (t1 - t0) * -y0 / (y1 - y0) for (t0, y0), (t1, y1) in zip(rows, rows[1:])
+                 if (y0 < 0) != (y1 < 0)]
+    f = (len(crossings) - 1) / (2 * (crossings[-1] - crossings[0]))
+    want = math.sqrt(9720 / 0.3) / (2 * math.pi)
+    assert len(crossings) >= 10 and abs(f - want) <= 1e-5 * want, f"{f} Hz, {want} Hz analytic"
 
     # an error: a message naming the file, the line and the key; nothing runs
     bad = at("bad.yaml")

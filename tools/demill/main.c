@@ -215,11 +215,11 @@ static int region_holds_any(demill_world *w, size_t n, int32_t kind, const doubl
     return any;
 }
 
-/* A world or drum quantity of the registry. */
-static double quantity(demill_world *w, demill_id drum, int32_t key)
+/* A quantity of the scene (a column, the steady stop's). */
+static double quantity(const scene *s, const scene_quantity *q)
 {
     double v;
-    check(key < 400 ? demill_world_get(w, key, &v) : demill_drum_get(w, drum, key, &v), "a quantity");
+    check(scene_quantity_read(s, q, &v), q->name);
     return v;
 }
 
@@ -322,7 +322,7 @@ static int run_one(const run_args *a, char **summary)
     if (*s.csv_file) {
         csv = output_open(a->out, s.csv_file);
         for (size_t k = 0; k < s.ncol; k++)
-            fprintf(csv, "%s%s", k ? "," : "", demill_param_name(s.col_key[k]));
+            fprintf(csv, "%s%s", k ? "," : "", s.col[k].name);
         fputc('\n', csv);
     }
     demill_vtk_series *vtk = NULL;
@@ -339,7 +339,7 @@ static int run_one(const run_args *a, char **summary)
     if (turning && s.speed_set)
         check(demill_drum_set(w, drum, s.speed_key, s.speed_value), "the drum's speed");
     series watched = {0}; /* the steady stop's quantity */
-    const size_t steady_win = s.steady_key ? (size_t)fmax(1, round(s.steady_window / s.every)) : 0;
+    const size_t steady_win = s.steady_on ? (size_t)fmax(1, round(s.steady_window / s.every)) : 0;
     double emptied = NAN;
     uint64_t steps = 0;
     const double t_step0 = now();
@@ -352,7 +352,7 @@ static int run_one(const run_args *a, char **summary)
         const double revs = drum ? drum_value(w, drum, DEMILL_DRUM_REVOLUTIONS) : 0;
         if ((!isnan(s.stop_time) && t >= s.stop_time - 0.5 * s.dt) ||
             (!isnan(s.stop_revolutions) && revs >= s.stop_revolutions) ||
-            (s.steady_key && steady(&watched, steady_win, s.steady_tolerance)))
+            (s.steady_on && steady(&watched, steady_win, s.steady_tolerance)))
             break;
         if (s.empty_kind && steps) {
             double count;
@@ -387,11 +387,11 @@ static int run_one(const run_args *a, char **summary)
                 class_samples++;
             }
         }
-        if (s.steady_key)
-            series_add(&watched, t, quantity(w, drum, s.steady_key));
+        if (s.steady_on)
+            series_add(&watched, t, quantity(&s, &s.steady));
         if (csv) {
             for (size_t k = 0; k < s.ncol; k++)
-                fprintf(csv, "%s%.9g", k ? "," : "", quantity(w, drum, s.col_key[k]) + 0.0);
+                fprintf(csv, "%s%.9g", k ? "," : "", quantity(&s, &s.col[k]) + 0.0);
             fputc('\n', csv);
         }
         uint64_t step_count;
@@ -478,7 +478,7 @@ static int run_one(const run_args *a, char **summary)
     }
     if (s.empty_kind)
         fprintf(sum, "emptied_s = %.6g\n", emptied);
-    if (s.steady_key)
+    if (s.steady_on)
         fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
                 steady(&watched, steady_win, s.steady_tolerance) ? "yes" : "no",
                 watched.n >= steady_win ? window_mean(&watched, watched.n - steady_win, steady_win)

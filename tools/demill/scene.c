@@ -302,7 +302,7 @@ static int applies(const ctx *c, const tree *n)
 /* ---- sections ------------------------------------------------------------------ */
 
 static const char *const top_keys[] = {"world", "materials", "pairs", "particles", "walls",
-                                       "drum", "feeds", "outlets", "outputs", "stop"};
+                                       "drum", "bodies", "feeds", "outlets", "outputs", "stop"};
 
 static int material_index(ctx *c, const tree *n, size_t *at)
 {
@@ -791,6 +791,106 @@ static int motion_of(ctx *c, const tree *wall, demill_id id)
     return 0;
 }
 
+static const char *const k_bodies[] = {"mass", "centre", "free_axes", "gravity", "springs", "force"};
+static const char *const k_spring[] = {"axis", "stiffness", "damping", "rest"};
+static const char *const k_force[] = {"amplitude", "frequency", "phase"};
+static const char *const k_axes[] = {"x", "y", "z"};
+
+/* An axis's name: 0 for x, 1 for y, 2 for z; -1 with a message. */
+static int axis_of(ctx *c, const tree *n)
+{
+    for (int k = 0; k < 3; k++)
+        if (n->kind == TREE_SCALAR && !strcmp(n->text, k_axes[k]))
+            return k;
+    return fail(c, n, "expected x, y or z, got '%s'", kind_name(n));
+}
+
+/* bodies: a map of named bodies (demill/body.h), before the walls that
+ * name them. */
+static int bodies_section(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    s->nbody = 0;
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_MAP))
+        return -1;
+    if (t->n > SCENE_MAX_BODIES)
+        return fail(c, t, "expected at most %d bodies", SCENE_MAX_BODIES);
+    if (c->mode == SCENE_RESTART) {
+        size_t have = 0;
+        demill_world_ids(s->w, DEMILL_KIND_BODY, s->body, SCENE_MAX_BODIES, &have);
+        if (have != t->n)
+            return fail(c, t, "the checkpoint has %zu bodies, the scene %zu", have, t->n);
+    }
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *b = t->kid[k], *e;
+        double mass, centre[3] = {0, 0, 0};
+        int32_t axes = 0;
+        uint32_t flags = 0;
+        if (need_kind(c, b, TREE_MAP) || check_keys(c, b, k_bodies, sizeof k_bodies / sizeof k_bodies[0]))
+            return -1;
+        if (c->mode == SCENE_RESTART && applies(c, b))
+            return fail(c, b, "bodies cannot change on a restart");
+        s->bodyname[k] = b->key;
+        s->nbody = k + 1;
+        if (!(e = need(c, b, "mass")) || positive(c, e, &mass))
+            return -1;
+        if ((e = tree_get(b, "centre")) && numbers(c, e, 3, 3, centre, NULL))
+            return -1;
+        if ((e = tree_get(b, "free_axes"))) {
+            if (e->kind != TREE_SEQ)
+                return fail(c, e, "expected a list of axes (x, y, z), got %s", kind_name(e));
+            for (size_t j = 0; j < e->n; j++) {
+                const int ax = axis_of(c, e->kid[j]);
+                if (ax < 0)
+                    return -1;
+                axes |= DEMILL_BODY_AXIS_X << ax;
+            }
+        }
+        if ((e = tree_get(b, "gravity"))) {
+            if (e->kind != TREE_SCALAR || (strcmp(e->text, "true") && strcmp(e->text, "false")))
+                return fail(c, e, "expected true or false, got '%s'", kind_name(e));
+            flags = strcmp(e->text, "true") ? DEMILL_BODY_NO_GRAVITY : 0;
+        }
+        if (c->mode != SCENE_RESTART &&
+            api(c, b, demill_body_add(s->w, mass, centre, axes, flags, &s->body[k])))
+            return -1;
+        if ((e = tree_get(b, "springs"))) {
+            if (e->kind != TREE_SEQ)
+                return fail(c, e, "expected a list of springs, got %s", kind_name(e));
+            for (size_t j = 0; j < e->n; j++) {
+                const tree *sp = e->kid[j], *ax, *st, *dm, *rs;
+                double v[3] = {0, 0, 0};
+                int a;
+                if (need_kind(c, sp, TREE_MAP) || check_keys(c, sp, k_spring, 4) ||
+                    !(ax = need(c, sp, "axis")) || (a = axis_of(c, ax)) < 0 ||
+                    !(st = need(c, sp, "stiffness")) || number(c, st, 0, HUGE_VAL, &v[0]) ||
+                    ((dm = tree_get(sp, "damping")) && number(c, dm, 0, HUGE_VAL, &v[1])) ||
+                    ((rs = tree_get(sp, "rest")) && number(c, rs, -HUGE_VAL, HUGE_VAL, &v[2])))
+                    return -1;
+                if (c->mode != SCENE_RESTART &&
+                    api(c, sp, demill_body_set_spring(s->w, s->body[k], DEMILL_BODY_AXIS_X << a, v[0],
+                                                      v[1], v[2])))
+                    return -1;
+            }
+        }
+        if ((e = tree_get(b, "force"))) {
+            const tree *am, *fr, *ph;
+            double amp[3], freq, phase = 0;
+            if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_force, 3) ||
+                !(am = need(c, e, "amplitude")) || numbers(c, am, 3, 3, amp, NULL) ||
+                !(fr = need(c, e, "frequency")) || number(c, fr, 0, HUGE_VAL, &freq) ||
+                ((ph = tree_get(e, "phase")) && number(c, ph, -HUGE_VAL, HUGE_VAL, &phase)))
+                return -1;
+            if (c->mode != SCENE_RESTART &&
+                api(c, e, demill_body_set_force(s->w, s->body[k], amp, freq, phase)))
+                return -1;
+        }
+    }
+    return 0;
+}
+
 /* The wall shapes: their vectors (3 numbers each), then their numbers;
  * keys past `required` are optional (0, or no caps). */
 typedef struct shape {
@@ -810,7 +910,8 @@ static const shape shapes[] = {
 static const char *const k_caps[] = {"none", "start", "end", "both"};
 static const char *const k_stl[] = {"file", "scale", "transform"};
 static const char *const k_walls[] = {"material", "plane", "rectangle", "disc", "cylinder",
-                                      "cone", "stl", "motion", "harmonic", "surface_velocity"};
+                                      "cone", "stl", "motion", "harmonic", "surface_velocity",
+                                      "body"};
 
 static int add_shape(ctx *c, const shape *sh, const tree *t, demill_id mat, demill_id *id)
 {
@@ -905,6 +1006,16 @@ static int walls_section(ctx *c, const tree *t)
             return -1;
         if (motion_of(c, wl, id))
             return -1;
+        const tree *b = tree_get(wl, "body");
+        if (b) {
+            size_t j = 0;
+            while (j < c->s->nbody && (b->kind != TREE_SCALAR || strcmp(b->text, c->s->bodyname[j])))
+                j++;
+            if (j == c->s->nbody)
+                return fail(c, b, "expected a body of 'bodies', got '%s'", kind_name(b));
+            if (c->mode == SCENE_BUILD && api(c, b, demill_body_attach_wall(c->s->w, c->s->body[j], id)))
+                return -1;
+        }
     }
     return 0;
 }
@@ -984,17 +1095,65 @@ static int outlets_section(ctx *c, const tree *t)
     return 0;
 }
 
-/* The time series' columns: the registry's world and drum names. */
-static int column_key(const char *name, int32_t *key)
+/* The bodies' fields by name, with the components x, y and z. */
+static const struct {
+    const char *name;
+    int32_t field;
+} body_fields[] = {{"position", DEMILL_BODY_POSITION},
+                   {"velocity", DEMILL_BODY_VELOCITY},
+                   {"force_particles", DEMILL_BODY_FORCE_PARTICLES},
+                   {"force_spring", DEMILL_BODY_FORCE_SPRING},
+                   {"force_damper", DEMILL_BODY_FORCE_DAMPER},
+                   {"force_external", DEMILL_BODY_FORCE_EXTERNAL}};
+
+/* A quantity by name: a world.* or drum.* key of the registry, or
+ * body.NAME.FIELD_C (FIELD a body field, C x, y or z). */
+static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
 {
-    for (int32_t k = 100; k < 500; k++) {
-        const char *n = demill_param_name(k);
-        if (n && !strcmp(n, name) && (k < 200 || k >= 400)) {
-            *key = k;
+    *q = (scene_quantity){.body = -1};
+    if (n->kind == TREE_SCALAR) {
+        q->name = n->text;
+        for (int32_t k = 100; k < 500 && !q->key; k++) {
+            const char *name = demill_param_name(k);
+            if (name && !strcmp(name, n->text) && (k < 200 || k >= 400))
+                q->key = k;
+        }
+        if (q->key >= 400 && !tree_get(c->root, "drum"))
+            return fail(c, n, "a drum quantity without a drum");
+        if (q->key)
             return 0;
+        const char *dot = strrchr(n->text, '.'), *under = dot ? strrchr(dot, '_') : NULL;
+        if (!strncmp(n->text, "body.", 5) && dot > n->text + 5 && under && under[1] &&
+            !under[2] && strchr("xyz", under[1])) {
+            for (size_t b = 0; b < c->s->nbody; b++)
+                if (strlen(c->s->bodyname[b]) == (size_t)(dot - n->text - 5) &&
+                    !strncmp(c->s->bodyname[b], n->text + 5, (size_t)(dot - n->text - 5)))
+                    q->body = (int)b;
+            for (size_t f = 0; f < sizeof body_fields / sizeof body_fields[0]; f++)
+                if (strlen(body_fields[f].name) == (size_t)(under - dot - 1) &&
+                    !strncmp(body_fields[f].name, dot + 1, (size_t)(under - dot - 1)))
+                    q->field = body_fields[f].field;
+            q->comp = under[1] - 'x';
+            if (q->body >= 0 && q->field && q->comp < c->s->dim)
+                return 0;
         }
     }
-    return -1;
+    return fail(c, n, "expected a world.* or drum.* quantity of the parameter registry (e.g. "
+                      "world.time, drum.power) or body.NAME.FIELD_x (FIELD position, velocity, "
+                      "force_particles, force_spring, force_damper or force_external), got '%s'",
+                kind_name(n));
+}
+
+demill_status scene_quantity_read(const scene *s, const scene_quantity *q, double *value)
+{
+    if (q->body >= 0) {
+        double v[3];
+        const demill_status st = demill_body_get(s->w, s->body[q->body], q->field, v);
+        *value = v[q->comp];
+        return st;
+    }
+    return q->key < 400 ? demill_world_get(s->w, q->key, value)
+                        : demill_drum_get(s->w, s->drum, q->key, value);
 }
 
 static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
@@ -1029,15 +1188,9 @@ static int outputs_section(ctx *c, const tree *t)
     if ((e = tree_get(t, "columns"))) {
         if (e->kind != TREE_SEQ || e->n < 1 || e->n > SCENE_MAX_COLUMNS)
             return fail(c, e, "expected a list of 1 to %d quantities", SCENE_MAX_COLUMNS);
-        for (size_t k = 0; k < e->n; k++) {
-            const tree *q = e->kid[k];
-            if (q->kind != TREE_SCALAR || column_key(q->text, &s->col_key[k]))
-                return fail(c, q, "expected a world.* or drum.* quantity of the parameter registry "
-                                  "(e.g. world.time, drum.power), got '%s'",
-                            kind_name(q));
-            if (s->col_key[k] >= 400 && !tree_get(c->root, "drum"))
-                return fail(c, q, "a drum quantity without a drum");
-        }
+        for (size_t k = 0; k < e->n; k++)
+            if (quantity_of(c, e->kid[k], &s->col[k]))
+                return -1;
         s->ncol = e->n;
     }
     if ((e = tree_get(t, "pictures"))) {
@@ -1076,7 +1229,7 @@ static int stop_section(ctx *c, const tree *t)
     scene *s = c->s;
     s->stop_time = s->stop_revolutions = NAN;
     s->empty_kind = 0;
-    s->steady_key = 0;
+    s->steady_on = 0;
     if (!t)
         return fail(c, c->root, "missing 'stop' (time, revolutions, empty or steady)");
     if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_stop, 4))
@@ -1105,15 +1258,13 @@ static int stop_section(ctx *c, const tree *t)
             !(q = need(c, e, "quantity")) || !(wn = need(c, e, "window")) ||
             !(tol = need(c, e, "tolerance")))
             return -1;
-        if (q->kind != TREE_SCALAR || column_key(q->text, &s->steady_key))
-            return fail(c, q, "expected a world.* or drum.* quantity of the parameter registry, got '%s'",
-                        kind_name(q));
-        if (s->steady_key >= 400 && !tree_get(c->root, "drum"))
-            return fail(c, q, "a drum quantity without a drum");
+        if (quantity_of(c, q, &s->steady))
+            return -1;
+        s->steady_on = 1;
         if (positive(c, wn, &s->steady_window) || positive(c, tol, &s->steady_tolerance))
             return -1;
     }
-    if (isnan(s->stop_time) && isnan(s->stop_revolutions) && !s->empty_kind && !s->steady_key)
+    if (isnan(s->stop_time) && isnan(s->stop_revolutions) && !s->empty_kind && !s->steady_on)
         return fail(c, t, "expected time, revolutions, empty or steady");
     return 0;
 }
@@ -1131,6 +1282,7 @@ int scene_build(scene *s, const tree *root, const char *dir, int mode, char *err
         world_section(&c, tree_get(root, "world"), &auto_dt) ||
         materials_section(&c, tree_get(root, "materials")) ||
         pairs_section(&c, tree_get(root, "pairs")) || drum_section(&c, tree_get(root, "drum")) ||
+        bodies_section(&c, tree_get(root, "bodies")) ||
         walls_section(&c, tree_get(root, "walls")) ||
         particles_section(&c, tree_get(root, "particles")) ||
         feeds_section(&c, tree_get(root, "feeds")) || outlets_section(&c, tree_get(root, "outlets")) ||
@@ -1206,6 +1358,9 @@ static const section sections[] = {
     {"particles[]", KEYS(k_particles)},
     {"particles[].sizes, feeds[].sizes", KEYS(k_sizes)},
     {"particles[].region, feeds[].region, outlets[].region, stop.empty", KEYS(k_region)},
+    {"bodies.NAME", KEYS(k_bodies)},
+    {"bodies.NAME.springs[]", KEYS(k_spring)},
+    {"bodies.NAME.force", KEYS(k_force)},
     {"walls[]", KEYS(k_walls)},
     {"walls[].plane", shapes[0].keys, 2},
     {"walls[].rectangle", shapes[1].keys, 5},

@@ -15,6 +15,16 @@
 #define SCENE_MAX_COLUMNS 64
 #define SCENE_MAX_EDGES 16
 #define SCENE_MAX_OUTLETS 16
+#define SCENE_MAX_BODIES 64
+
+/* A quantity of the time series or of a steady stop: a world or drum key
+ * of the registry (key, body < 0), or a component of a body's field. */
+typedef struct scene_quantity {
+    const char *name;  /* as the scene gives it; points into the tree */
+    int32_t key;       /* DEMILL_WORLD_* or DEMILL_DRUM_*, or 0 */
+    int body, comp;    /* the body's index, -1 for none; the component 0-2 */
+    int32_t field;     /* DEMILL_BODY_* */
+} scene_quantity;
 
 typedef struct scene {
     demill_world *w;
@@ -24,6 +34,9 @@ typedef struct scene {
     const char *matname[SCENE_MAX_MATERIALS]; /* point into the tree */
     demill_id mat[SCENE_MAX_MATERIALS];
     demill_id drum;             /* DEMILL_ID_NONE without a drum */
+    size_t nbody;
+    const char *bodyname[SCENE_MAX_BODIES]; /* point into the tree */
+    demill_id body[SCENE_MAX_BODIES];
     double drum_start;          /* world time at which the drum's speed is set, s */
     int32_t speed_key;          /* the drum's speed key given, 0 for none */
     double speed_value;
@@ -34,12 +47,13 @@ typedef struct scene {
     int32_t empty_kind;         /* stop when this region holds no particle: DEMILL_REGION_BOX or
                                    _CYLINDER, 0 for none */
     double empty_params[7];
-    int32_t steady_key;         /* stop when this quantity is steady, 0 for none: */
+    int steady_on;              /* stop when this quantity is steady: */
+    scene_quantity steady;
     double steady_window, steady_tolerance; /* two windows' means within tolerance (relative) */
     double every;               /* s between samples (time series, stop checks) */
     char csv_file[256];         /* "" for none */
     size_t ncol;
-    int32_t col_key[SCENE_MAX_COLUMNS];
+    scene_quantity col[SCENE_MAX_COLUMNS];
     double vtk_every, checkpoint_every; /* s, 0 for none */
     int charge_png, power_png;
     size_t nedges;              /* power by size class: nedges + 1 classes */
@@ -60,6 +74,10 @@ enum {
  * "FILE:LINE: KEY: what was wrong" in err and no world left (except in
  * SCENE_RESTART mode, where s->w stays the caller's). */
 int scene_build(scene *s, const tree *root, const char *dir, int mode, char *err, size_t errlen);
+
+/* The value of a quantity in the scene's world: DEMILL_OK or the API's
+ * status. */
+demill_status scene_quantity_read(const scene *s, const scene_quantity *q, double *value);
 
 /* The tables of the keys a scene file takes from the parameter registry
  * (world, materials, pairs, drum: unit, allowed values, default), in
