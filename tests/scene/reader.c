@@ -222,6 +222,7 @@ START_TEST(test_bad)
         {"world: {}\n", NULL, "t.yaml:1: missing 'stop' (time, revolutions, empty or steady)"},
         {"a: &x 1\nb: *x\n", NULL, "t.yaml:1: anchors, aliases and tags are not allowed in a scene file"},
         {"stop: {time: 1}\nstop: {time: 2}\n", NULL, "t.yaml:2: key 'stop' given twice"},
+        {"{[1]: 2}\n", NULL, "t.yaml:1: a key must be a name, not a list"},
         {"stop: {time: -1}\n", NULL, "t.yaml:1: stop.time: expected a number > 0, got '-1'"},
         {"stop: {revolutions: 2}\n", NULL, "t.yaml:1: stop.revolutions: revolutions need a drum"},
         {"materials: {m: {}}\ndrum: {material: m, lifters: 100}\nstop: {time: 1}\n", NULL,

@@ -143,6 +143,13 @@ int tree_parse(const char *src, const unsigned char *buf, size_t len, tree **out
             yaml_event_delete(&e);
             continue;
         }
+        if (parent && parent->kind == TREE_MAP && !pending_key &&
+            (type == YAML_MAPPING_START_EVENT || type == YAML_SEQUENCE_START_EVENT)) {
+            say(err, errlen, "%s:%d: a key must be a name, not a %s", src, line,
+                type == YAML_MAPPING_START_EVENT ? "map" : "list");
+            yaml_event_delete(&e);
+            goto done;
+        }
         tree *node = NULL;
         if (type == YAML_SCALAR_EVENT) {
             node = node_new(TREE_SCALAR, src, line);
