@@ -29,7 +29,7 @@ static void usage(FILE *f)
           "       demill keys\n"
           "Runs a libdemill scene file (docs/scene-files.md). `demill run --help` for the\n"
           "options; `check` reads the file and reports its first error without running;\n"
-          "`keys` lists the keys of the world, materials, pairs and drum.\n",
+          "`keys` prints the tables of every key (docs/scene-files.md).\n",
           f);
 }
 
