@@ -500,7 +500,9 @@ static int run_one(const run_args *a, char **summary)
         if (s.charge_png && (drum_shape_read(w, drum, &shape) || draw_charge(path, w, &shape, title)))
             rc = -1;
         snprintf(path, sizeof path, "%s/power.png", a->out);
-        if (!rc && s.power_png &&
+        if (s.power_png && rows.n < 2)
+            fprintf(stderr, "demill: %zu sample of the power: no power.png\n", rows.n);
+        else if (!rc && s.power_png &&
             draw_power(path, rows.a, rows.b, rows.n, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
                        isnan(t_rev_end) ? t : t_rev_end))
             rc = -1;
