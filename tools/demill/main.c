@@ -591,28 +591,37 @@ static int run_sweep(run_args *a, size_t which)
         nv++;
     }
     if (!rc) {
-        /* the table: the sweep's value, then every summary entry but the text ones */
+        /* the table: the sweep's value, then every number of the first run's
+         * summary but the timings, looked up by name in each run's */
         FILE *f = output_open(base_out, "sweep.csv");
+        char *keys = strdup(sums[0]), *ls = NULL;
+        const char *col[256];
+        size_t ncol = 0;
+        for (char *line = strtok_r(keys, "\n", &ls); line && ncol < 256; line = strtok_r(NULL, "\n", &ls)) {
+            char *sep = strstr(line, " = "), *end;
+            if (!sep)
+                continue;
+            strtod(sep + 3, &end);
+            *sep = '\0';
+            if (!*end && end != sep + 3 && strcmp(line, "wall_s") && strcmp(line, "particle_steps_per_s"))
+                col[ncol++] = line;
+        }
         fprintf(f, "%.*s", (int)(eq - set), set);
-        for (int header = 1; header >= 0; header--)
-            for (size_t r = header ? 0 : 0; r < (header ? 1 : nv); r++) {
-                if (!header)
-                    fprintf(f, "%s", vals[r]);
-                char *copy = strdup(sums[r]), *ls = NULL;
-                for (char *line = strtok_r(copy, "\n", &ls); line; line = strtok_r(NULL, "\n", &ls)) {
-                    char *sep = strstr(line, " = "), *end;
-                    if (!sep)
-                        continue;
-                    strtod(sep + 3, &end);
-                    if (*end || end == sep + 3 || !strcmp(line, "wall_s") || !strncmp(line, "wall_s ", 7) ||
-                        !strncmp(line, "particle_steps_per_s ", 21))
-                        continue;
-                    *sep = '\0';
-                    fprintf(f, ",%s", header ? line : sep + 3);
-                }
-                fputc('\n', f);
-                free(copy);
+        for (size_t k = 0; k < ncol; k++)
+            fprintf(f, ",%s", col[k]);
+        fputc('\n', f);
+        for (size_t r = 0; r < nv; r++) {
+            fprintf(f, "%s", vals[r]);
+            for (size_t k = 0; k < ncol; k++) {
+                char key[256];
+                snprintf(key, sizeof key, "\n%s = ", col[k]);
+                const char *at = strstr(sums[r], key); /* the first line is the scene's name */
+                const size_t len = at ? strcspn(at + strlen(key), "\n") : 0;
+                fprintf(f, ",%.*s", (int)len, at ? at + strlen(key) : "");
             }
+            fputc('\n', f);
+        }
+        free(keys);
         output_close(f, "sweep.csv");
         printf("demill: sweep of %zu runs; table in %s/sweep.csv\n", nv, base_out);
     }
