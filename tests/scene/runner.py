@@ -27,8 +27,10 @@ balls of 10 mm (1 kg) in the mill's drum, turning from t = 0.
   5 s limit.
 - tests/scene/spring.yaml, a 0.3 kg body on a spring of 9720 N/m, swings
   at sqrt(k/m)/(2 pi) = 28.64789 Hz, measured over the zero crossings of its
-  body.box.position_y column (velocity Verlet's period error (w dt)^2/24 is
-  1.4e-7 at dt = 1e-5 s; 1e-5 allowed).
+  body.box.position_y column (velocity Verlet's frequency error (w dt)^2/24,
+  Hairer, Lubich and Wanner 2003, Geometric numerical integration
+  illustrated by the Stormer-Verlet method, is 1.4e-7 at dt = 1e-5 s; 1e-5
+  allowed).
 - A scene with an error runs nothing and writes no folder; nor does a
   sweep one of whose values is wrong (checked before the first runs).
 
