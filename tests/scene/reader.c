@@ -154,6 +154,31 @@ START_TEST(test_good)
 }
 END_TEST
 
+/* time_step: auto is the library's suggestion for the built scene, with
+ * its steps_per_contact */
+START_TEST(test_auto_time_step)
+{
+    write_file("ball.csv", "x,y,z,radius\n0,0.015,0,0.01\n");
+    tree *t = parse("world: {time_step: auto, steps_per_contact: 20}\n"
+                    "materials: {steel: {density: 7800, youngs_modulus: 2e8}}\n"
+                    "pairs: [{materials: [steel, steel], normal: hertz, damping: restitution}]\n"
+                    "walls: [{material: steel, plane: {point: [0, 0, 0], normal: [0, 1, 0]}}]\n"
+                    "particles: [{material: steel, csv: ball.csv}]\n"
+                    "stop: {time: 1}\n");
+    scene s;
+    char err[1024];
+    ck_assert_msg(!scene_build(&s, t, dir, SCENE_BUILD, err, sizeof err), "%s", err);
+    double dt, want;
+    DM_OK(s.w, demill_world_get(s.w, DEMILL_WORLD_TIME_STEP, &dt));
+    DM_OK(s.w, demill_world_suggest_time_step(s.w, 0, 20, &want, NULL, NULL));
+    ck_assert_double_eq(dt, want);
+    ck_assert_double_eq(s.dt, want);
+    ck_assert_double_ne(dt, 1e-5); /* not the default */
+    demill_world_destroy(s.w);
+    tree_free(t);
+}
+END_TEST
+
 /* --set replaces a scalar, a list item and a whole list, and adds a key */
 START_TEST(test_set)
 {
@@ -306,6 +331,7 @@ int main(void)
     TCase *tc = tcase_create("reader");
     tcase_add_test(tc, test_good);
     tcase_add_test(tc, test_set);
+    tcase_add_test(tc, test_auto_time_step);
     tcase_add_test(tc, test_bad);
     tcase_add_test(tc, test_keys);
     suite_add_tcase(s, tc);
