@@ -154,6 +154,39 @@ START_TEST(test_good)
 }
 END_TEST
 
+/* the drum: its keys by the registry's names, its parts' materials, its
+ * speed held back to start_time */
+START_TEST(test_drum)
+{
+    tree *t = parse("materials: {steel: {}, rubber: {density: 1100}}\n"
+                    "pairs: [{materials: [steel, rubber], normal: hertz}]\n"
+                    "drum: {material: steel, diameter: 0.5, length: 0.2, lifter_height: 0.02,\n"
+                    "       lifters: 6, speed_rpm: 40, start_time: 0.25, parts: {lifters: rubber}}\n"
+                    "stop: {revolutions: 3}\n");
+    scene s;
+    char err[1024];
+    ck_assert_msg(!scene_build(&s, t, dir, SCENE_BUILD, err, sizeof err), "%s", err);
+    double v;
+    DM_OK(s.w, demill_drum_get(s.w, s.drum, DEMILL_DRUM_DIAMETER, &v));
+    ck_assert_double_eq(v, 0.5);
+    DM_OK(s.w, demill_drum_get(s.w, s.drum, DEMILL_DRUM_LIFTER_COUNT, &v));
+    ck_assert_double_eq(v, 6);
+    DM_OK(s.w, demill_drum_get(s.w, s.drum, DEMILL_DRUM_SPEED_RPM, &v));
+    ck_assert_double_eq(v, 0); /* not before start_time */
+    ck_assert_int_eq(s.speed_key, DEMILL_DRUM_SPEED_RPM);
+    ck_assert_double_eq(s.speed_value, 40);
+    ck_assert_double_eq(s.drum_start, 0.25);
+    ck_assert_double_eq(s.stop_revolutions, 3);
+    demill_id m;
+    DM_OK(s.w, demill_drum_get_material(s.w, s.drum, DEMILL_DRUM_PART_LIFTERS, &m));
+    ck_assert_uint_eq(m, s.mat[1]);
+    DM_OK(s.w, demill_drum_get_material(s.w, s.drum, DEMILL_DRUM_PART_SHELL, &m));
+    ck_assert_uint_eq(m, s.mat[0]);
+    demill_world_destroy(s.w);
+    tree_free(t);
+}
+END_TEST
+
 /* time_step: auto is the library's suggestion for the built scene, with
  * its steps_per_contact */
 START_TEST(test_auto_time_step)
@@ -332,6 +365,7 @@ int main(void)
     tcase_add_test(tc, test_good);
     tcase_add_test(tc, test_set);
     tcase_add_test(tc, test_auto_time_step);
+    tcase_add_test(tc, test_drum);
     tcase_add_test(tc, test_bad);
     tcase_add_test(tc, test_keys);
     suite_add_tcase(s, tc);

@@ -479,7 +479,28 @@ static int pairs_section(ctx *c, const tree *t)
     return 0;
 }
 
-static const char *const drum_extra[] = {"material", "start_time"};
+static const char *const drum_extra[] = {"material", "start_time", "parts"};
+static const char *const k_parts[] = {"shell", "caps", "lifters"}; /* DEMILL_DRUM_PART_* 1-3 */
+
+/* parts: a material of their own for the shell, caps or lifters. */
+static int drum_parts(ctx *c, const tree *t)
+{
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_parts, 3))
+        return -1;
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *e = t->kid[k];
+        size_t m;
+        int32_t part = 1;
+        while (strcmp(e->key, k_parts[part - 1]))
+            part++;
+        if (material_index(c, e, &m))
+            return -1;
+        if (applies(c, e) &&
+            api(c, e, demill_drum_set_material(c->s->w, c->s->drum, part, c->s->mat[m])))
+            return -1;
+    }
+    return 0;
+}
 
 static int drum_section(ctx *c, const tree *t)
 {
@@ -491,10 +512,10 @@ static int drum_section(ctx *c, const tree *t)
         return 0;
     group g;
     group_drum(&g);
-    const char *names[MAX_NAMES + 2] = {drum_extra[0], drum_extra[1]};
+    const char *names[MAX_NAMES + 3] = {drum_extra[0], drum_extra[1], drum_extra[2]};
     for (size_t k = 0; k < g.n; k++)
-        names[k + 2] = g.name[k];
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, names, g.n + 2))
+        names[k + 3] = g.name[k];
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, names, g.n + 3))
         return -1;
     const tree *st = tree_get(t, "start_time");
     if (st && number(c, st, 0, HUGE_VAL, &s->drum_start))
@@ -513,6 +534,11 @@ static int drum_section(ctx *c, const tree *t)
         const tree *e = t->kid[k];
         if (!strcmp(e->key, "material") || !strcmp(e->key, "start_time"))
             continue;
+        if (!strcmp(e->key, "parts")) {
+            if (drum_parts(c, e))
+                return -1;
+            continue;
+        }
         const int32_t key = group_key(&g, e->key);
         double v;
         if (key_value(c, e, key, &v))
@@ -1355,6 +1381,7 @@ static const section sections[] = {
     {"world (besides the registry's keys)", KEYS(world_extra)},
     {"pairs[] (besides the registry's keys)", KEYS(k_pair_extra)},
     {"drum (besides the registry's keys)", KEYS(drum_extra)},
+    {"drum.parts", KEYS(k_parts)},
     {"particles[]", KEYS(k_particles)},
     {"particles[].sizes, feeds[].sizes", KEYS(k_sizes)},
     {"particles[].region, feeds[].region, outlets[].region, stop.empty", KEYS(k_region)},
