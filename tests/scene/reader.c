@@ -187,6 +187,36 @@ START_TEST(test_drum)
 }
 END_TEST
 
+/* a 2D scene: a polyline wall, discs filled into a rectangle */
+START_TEST(test_2d)
+{
+    tree *t = parse("world: {dimension: 2}\n"
+                    "materials: {m: {}}\n"
+                    "pairs: [{materials: [m, m], normal: linear}]\n"
+                    "walls:\n"
+                    "  - {material: m, polyline: {points: [[-0.1, 0.1, 0], [-0.1, 0, 0], [0.1, 0, 0]],\n"
+                    "                             closed: false}}\n"
+                    "particles:\n"
+                    "  - {material: m, region: {box: [-0.09, 0.01, 0, 0.09, 0.09, 0]},\n"
+                    "     sizes: {classes: [[0.01, 1]]}, count: 30}\n"
+                    "stop: {time: 1}\n");
+    scene s;
+    char err[1024];
+    ck_assert_msg(!scene_build(&s, t, dir, SCENE_BUILD, err, sizeof err), "%s", err);
+    double v;
+    DM_OK(s.w, demill_world_get(s.w, DEMILL_WORLD_DIMENSION, &v));
+    ck_assert_double_eq(v, 2);
+    ck_assert_int_eq(s.dim, 2);
+    DM_OK(s.w, demill_world_get(s.w, DEMILL_WORLD_PARTICLE_COUNT, &v));
+    ck_assert_double_eq(v, 30);
+    size_t n;
+    DM_OK(s.w, demill_world_ids(s.w, DEMILL_KIND_WALL, NULL, 0, &n));
+    ck_assert_uint_eq(n, 1);
+    demill_world_destroy(s.w);
+    tree_free(t);
+}
+END_TEST
+
 /* time_step: auto is the library's suggestion for the built scene, with
  * its steps_per_contact */
 START_TEST(test_auto_time_step)
@@ -366,6 +396,7 @@ int main(void)
     tcase_add_test(tc, test_set);
     tcase_add_test(tc, test_auto_time_step);
     tcase_add_test(tc, test_drum);
+    tcase_add_test(tc, test_2d);
     tcase_add_test(tc, test_bad);
     tcase_add_test(tc, test_keys);
     suite_add_tcase(s, tc);

@@ -935,9 +935,10 @@ static const shape shapes[] = {
 #define NSHAPES (sizeof shapes / sizeof shapes[0])
 static const char *const k_caps[] = {"none", "start", "end", "both"};
 static const char *const k_stl[] = {"file", "scale", "transform"};
-static const char *const k_walls[] = {"material", "plane", "rectangle", "disc", "cylinder",
-                                      "cone", "stl", "motion", "harmonic", "surface_velocity",
-                                      "body"};
+static const char *const k_polyline[] = {"points", "closed"};
+static const char *const k_walls[] = {"material", "plane",  "rectangle", "disc",
+                                      "cylinder", "cone",   "stl",       "polyline",
+                                      "motion",   "harmonic", "surface_velocity", "body"};
 
 static int add_shape(ctx *c, const shape *sh, const tree *t, demill_id mat, demill_id *id)
 {
@@ -999,6 +1000,32 @@ static int add_stl(ctx *c, const tree *stl, demill_id mat, demill_id *id)
     return api(c, stl, demill_wall_load_stl(c->s->w, mat, path, scale, tf ? tr : NULL, id));
 }
 
+/* A 2D polyline: points [[x, y, 0], ...], closed or not. */
+static int add_polyline(ctx *c, const tree *t, demill_id mat, demill_id *id)
+{
+    const tree *pts, *cl;
+    int closed = 0;
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_polyline, 2) || !(pts = need(c, t, "points")))
+        return -1;
+    if (pts->kind != TREE_SEQ || pts->n < 2 || pts->n > 100000)
+        return fail(c, pts, "expected a list of 2 to 100000 points [x, y, 0], got %s", kind_name(pts));
+    if ((cl = tree_get(t, "closed"))) {
+        if (cl->kind != TREE_SCALAR || (strcmp(cl->text, "true") && strcmp(cl->text, "false")))
+            return fail(c, cl, "expected true or false, got '%s'", kind_name(cl));
+        closed = !strcmp(cl->text, "true");
+    }
+    double *xyz = malloc(3 * pts->n * sizeof *xyz);
+    if (!xyz)
+        return fail(c, t, "out of memory");
+    int rc = 0;
+    for (size_t k = 0; k < pts->n && !rc; k++)
+        rc = numbers(c, pts->kid[k], 3, 3, xyz + 3 * k, NULL);
+    if (!rc && c->mode == SCENE_BUILD)
+        rc = api(c, t, demill_wall_add_polyline(c->s->w, mat, pts->n, xyz, closed, id));
+    free(xyz);
+    return rc;
+}
+
 static int walls_section(ctx *c, const tree *t)
 {
     if (!t)
@@ -1015,20 +1042,22 @@ static int walls_section(ctx *c, const tree *t)
         if (material_of(c, wl, &mat))
             return -1;
         const tree *geometry = NULL;
-        size_t which = NSHAPES; /* NSHAPES: stl */
-        for (size_t j = 0; j <= NSHAPES; j++) {
-            const tree *g = tree_get(wl, j < NSHAPES ? shapes[j].name : "stl");
+        size_t which = NSHAPES; /* NSHAPES: stl; NSHAPES + 1: polyline */
+        for (size_t j = 0; j <= NSHAPES + 1; j++) {
+            const tree *g = tree_get(wl, j < NSHAPES ? shapes[j].name : j == NSHAPES ? "stl" : "polyline");
             if (g && geometry)
-                return fail(c, g, "a wall has one shape (plane, rectangle, disc, cylinder, cone or stl)");
+                return fail(c, g, "a wall has one shape (plane, rectangle, disc, cylinder, cone, stl or "
+                                  "polyline)");
             if (g) {
                 geometry = g;
                 which = j;
             }
         }
         if (!geometry)
-            return fail(c, wl, "missing its shape: plane, rectangle, disc, cylinder, cone or stl");
+            return fail(c, wl, "missing its shape: plane, rectangle, disc, cylinder, cone, stl or polyline");
         if (which < NSHAPES ? add_shape(c, &shapes[which], geometry, mat, &id)
-                            : add_stl(c, geometry, mat, &id))
+            : which == NSHAPES ? add_stl(c, geometry, mat, &id)
+                               : add_polyline(c, geometry, mat, &id))
             return -1;
         if (motion_of(c, wl, id))
             return -1;
@@ -1395,6 +1424,7 @@ static const section sections[] = {
     {"walls[].cylinder", shapes[3].keys, 5},
     {"walls[].cone", shapes[4].keys, 6},
     {"walls[].stl", KEYS(k_stl)},
+    {"walls[].polyline", KEYS(k_polyline)},
     {"walls[].motion", KEYS(k_motion)},
     {"walls[].harmonic", KEYS(k_harmonic)},
     {"feeds[]", KEYS(k_feeds)},
