@@ -63,8 +63,9 @@ typedef struct scene {
 /* What scene_build() does with the world. */
 enum {
     SCENE_BUILD = 0,   /* a new world from the file */
-    SCENE_CHECK = 1,   /* check everything, build materials, pairs and drum, but add no particles
-                          or walls (the fuzz target) */
+    SCENE_CHECK = 1,   /* check everything, build the world's settings, materials, pairs, drum
+                          and bodies, but read no file and add no particle, wall, feed or
+                          outlet (demill check, sweeps before they run, the fuzz target) */
     SCENE_RESTART = 2  /* s->w holds a loaded checkpoint: map the file's names to its ids and
                           apply only the entries set on the command line (--set) */
 };
