@@ -41,6 +41,7 @@
 #include "demill/particles.h"
 #include "demill/wall.h"
 #include "demill/body.h"
+#include "demill/clump.h"
 #include "demill/query.h"
 #include "demill/drum.h"
 #include "demill/insert.h"

@@ -120,7 +120,8 @@ DEMILL_API const char *demill_strerror(demill_status code);
 
 /* ------------------------------------------------------------------------ */
 /** @name Ids
- * Materials, particles, walls, drums and bodies are named by 64-bit ids.
+ * Materials, particles, walls, drums, bodies, clump templates and clumps
+ * are named by 64-bit ids.
  * An id encodes the
  * kind of object, the world it belongs to and a generation counter, so an id
  * of a removed object, of another world or of the wrong kind is rejected with
@@ -135,7 +136,8 @@ DEMILL_API const char *demill_strerror(demill_status code);
  * An id of a destroyed world may name an object of a world created after
  * 4096 or more further worlds; do not keep ids past their world.
  * @{ */
-/** The id of a material, particle, wall, drum or body of a world. */
+/** The id of a material, particle, wall, drum, body, clump template or
+ *  clump of a world. */
 typedef uint64_t demill_id;
 /** The id that names nothing. */
 #define DEMILL_ID_NONE ((demill_id)0)
@@ -149,7 +151,9 @@ enum {
     DEMILL_KIND_DRUM = 4,     /**< a drum (demill_drum_create()) */
     DEMILL_KIND_FEED = 5,     /**< a feed (demill_feed_create()) */
     DEMILL_KIND_OUTLET = 6,   /**< an outlet (demill_outlet_create()) */
-    DEMILL_KIND_BODY = 7      /**< a body (demill_body_add()) */
+    DEMILL_KIND_BODY = 7,     /**< a body (demill_body_add()) */
+    DEMILL_KIND_TEMPLATE = 8, /**< a clump template (demill_clump_template_add()) */
+    DEMILL_KIND_CLUMP = 9     /**< a clump (demill_clump_add()) */
 };
 
 /** The kind of object an id names, without checking that the object still

@@ -276,7 +276,9 @@ DEMILL_API demill_status demill_material_create(demill_world *world, demill_id *
  *  @param key      a DEMILL_MATERIAL_* key.
  *  @param value    the new value, in the key's unit.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
- *          DEMILL_ERR_NOT_FINITE or DEMILL_ERR_INVALID_VALUE. */
+ *          DEMILL_ERR_NOT_FINITE or DEMILL_ERR_INVALID_VALUE (also: the
+ *          density of a material a clump template was made of,
+ *          demill/clump.h). */
 DEMILL_API demill_status demill_material_set(demill_world *world, demill_id material,
                                              int32_t key, double value);
 

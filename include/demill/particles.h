@@ -24,7 +24,7 @@ enum {
     DEMILL_PARTICLE_VELOCITY = 2,         /**< 3 doubles, m/s; read/write */
     DEMILL_PARTICLE_ANGULAR_VELOCITY = 3, /**< 3 doubles, rad/s; read/write (2D: x = y = 0) */
     DEMILL_PARTICLE_RADIUS = 4,           /**< 1 double, m, > 0; read/write (mass follows) */
-    DEMILL_PARTICLE_MASS = 5,             /**< 1 double, kg; read-only */
+    DEMILL_PARTICLE_MASS = 5,             /**< 1 double, kg; read-only (a clump's member: its clump's mass, which its contacts see) */
     DEMILL_PARTICLE_FORCE = 6,            /**< 3 doubles, N: total force (contacts, gravity and local damping, DEMILL_MATERIAL_LOCAL_DAMPING) at the last force evaluation; read-only */
     DEMILL_PARTICLE_TORQUE = 7,           /**< 3 doubles, N m: total torque (contacts and local damping) at the last force evaluation; read-only */
     DEMILL_PARTICLE_ANGLE = 8,            /**< 1 double, rad: 2D worlds only, rotation angle θ about z; read/write */
@@ -51,7 +51,8 @@ enum {
 /** Id fields, for demill_particles_read_ids(). */
 enum {
     DEMILL_PARTICLE_ID = 100,       /**< the particle's own id */
-    DEMILL_PARTICLE_MATERIAL = 101  /**< the id of the particle's material */
+    DEMILL_PARTICLE_MATERIAL = 101, /**< the id of the particle's material */
+    DEMILL_PARTICLE_CLUMP = 102     /**< the id of the clump it is a member of (demill/clump.h), DEMILL_ID_NONE for a particle of no clump */
 };
 
 /** Flags for demill_particles_add(). */
@@ -98,8 +99,9 @@ DEMILL_API demill_status demill_particles_add(demill_world *world, demill_id mat
  *  @param n     the number of ids.
  *  @param ids   n particle ids.
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (the message names the first
- *          bad id), DEMILL_ERR_INVALID_VALUE (an id listed twice),
- *          DEMILL_ERR_NULL_POINTER or DEMILL_ERR_OUT_OF_MEMORY. */
+ *          bad id), DEMILL_ERR_INVALID_VALUE (an id listed twice, or a
+ *          member of a clump: demill_clump_remove() removes it with its
+ *          clump), DEMILL_ERR_NULL_POINTER or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_particles_remove(demill_world *world, size_t n,
                                                  const demill_id *ids);
 
@@ -121,7 +123,8 @@ DEMILL_API demill_status demill_particles_read(const demill_world *world, int32_
 /** Reads the ids or the material ids of every particle, in id order (this
  *  function defines id order).
  *  @param world       the world.
- *  @param field       DEMILL_PARTICLE_ID or DEMILL_PARTICLE_MATERIAL.
+ *  @param field       DEMILL_PARTICLE_ID, DEMILL_PARTICLE_MATERIAL or
+ *                     DEMILL_PARTICLE_CLUMP.
  *  @param[out] out    capacity ids, or NULL to ask the count.
  *  @param capacity    number of particles out can hold.
  *  @param[out] count  receives the number of particles (may be NULL if out is
@@ -145,8 +148,10 @@ DEMILL_API demill_status demill_particles_read_ids(const demill_world *world, in
  *               their inverses (see demill_particles_add()).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NULL_POINTER,
- *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (a bad value, or n
- *          is not the number of particles) or DEMILL_ERR_DIMENSION. */
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (a bad value, n
+ *          is not the number of particles, or the world has clumps, whose
+ *          members only their clump moves: demill_clump_set()) or
+ *          DEMILL_ERR_DIMENSION. */
 DEMILL_API demill_status demill_particles_write(demill_world *world, int32_t field,
                                                 const double *in, size_t n);
 
@@ -171,8 +176,9 @@ DEMILL_API demill_status demill_particle_get(const demill_world *world, demill_i
  *                  demill_particles_write()).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NULL_POINTER,
- *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE or
- *          DEMILL_ERR_DIMENSION. */
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (a bad value, or
+ *          the particle is a member of a clump, which moves it:
+ *          demill_clump_set()) or DEMILL_ERR_DIMENSION. */
 DEMILL_API demill_status demill_particle_set(demill_world *world, demill_id particle,
                                              int32_t field, const double *in);
 

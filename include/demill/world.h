@@ -179,8 +179,9 @@ DEMILL_API const char *demill_world_last_error(const demill_world *world);
  *  @param value the new value, in the key's unit (demill_param_unit()).
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
  *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NOT_FINITE,
- *          DEMILL_ERR_INVALID_VALUE (out of bounds, or not a whole number for
- *          a choice), DEMILL_ERR_DIMENSION (e.g. gravity z in 2D) or
+ *          DEMILL_ERR_INVALID_VALUE (out of bounds, not a whole number for
+ *          a choice, or the disc thickness of a world with clump templates,
+ *          demill/clump.h), DEMILL_ERR_DIMENSION (e.g. gravity z in 2D) or
  *          DEMILL_ERR_UNSUPPORTED (more than one thread in a library built
  *          without threads). */
 DEMILL_API demill_status demill_world_set(demill_world *world, int32_t key, double value);
@@ -209,7 +210,7 @@ DEMILL_API demill_status demill_world_get(const demill_world *world, int32_t key
  *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NO_CONTACT_MODEL,
  *          DEMILL_ERR_INVALID_VALUE (also: the world's time is so large that
  *          a time step does not advance it, the iterative refinement is
- *          chosen in a world with bodies, or a pair that may touch combines
+ *          chosen in a world with bodies or clumps, or a pair that may touch combines
  *          an elasto-plastic normal law with DEMILL_DAMPING_RESTITUTION),
  *          DEMILL_ERR_OUT_OF_MEMORY,
  *          DEMILL_ERR_UNSTABLE or DEMILL_ERR_INTERRUPTED. If memory runs out

@@ -14,7 +14,7 @@ demill_id dm_id_make(uint16_t tag, int kind, uint16_t gen, uint32_t index)
 DEMILL_API int32_t demill_id_kind(demill_id id)
 {
     int k = DM_ID_KIND(id);
-    return k >= DEMILL_KIND_MATERIAL && k <= DEMILL_KIND_BODY ? k : DEMILL_KIND_NONE;
+    return k >= DEMILL_KIND_MATERIAL && k <= DEMILL_KIND_CLUMP ? k : DEMILL_KIND_NONE;
 }
 
 /* ---- world tags ------------------------------------------------------------ */

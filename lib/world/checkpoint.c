@@ -762,6 +762,8 @@ static void transfer(io *s, demill_world *w)
         io_f64_array(s, vec[k], n * per[k], n * per[k]);
     io_array(s, &P->mat, n, n, sizeof *P->mat);
     io_array(s, &P->hid, n, n, sizeof *P->hid);
+    if (s->reading && !s->status && !(P->clump = calloc(n ? n : 1, sizeof *P->clump)))
+        io_fail(s, DEMILL_ERR_OUT_OF_MEMORY, "out of memory"); /* no clumps: every particle free */
     transfer_handles(s, &w->ph, "particle handles");
     if (w->dim == 3)
         transfer_orientations(s, P, n);
@@ -1229,6 +1231,11 @@ static uint32_t crc32_of(const uint8_t *p, size_t n)
 /* The checkpoint of w, in a new buffer (*bytes of it). */
 static demill_status encode(demill_world *w, uint8_t **out, size_t *bytes)
 {
+    if (w->ntemplates)
+        return dm_fail(w, DEMILL_ERR_UNSUPPORTED,
+                       "checkpoint: the world has clump templates (%u) and clumps (%u), which "
+                       "checkpoints do not hold yet; a snapshot (demill_snapshot_take) does",
+                       w->ntemplates, w->live_clumps);
     io s = {.reading = false, .format = CK_FORMAT};
     uint8_t header[CK_HEADER] = {0};
     io_bytes(&s, header, sizeof header);
@@ -1428,7 +1435,7 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         return s;
     if (kind == DEMILL_KIND_PARTICLE)
         return demill_particles_read_ids(w, DEMILL_PARTICLE_ID, out, capacity, count);
-    if (kind < DEMILL_KIND_MATERIAL || kind > DEMILL_KIND_BODY)
+    if (kind < DEMILL_KIND_MATERIAL || kind > DEMILL_KIND_CLUMP)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "world_ids: %d is not a kind of object",
                        (int)kind);
     if (!out && !count)
@@ -1447,6 +1454,10 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
     else if (kind == DEMILL_KIND_BODY)
         for (uint32_t k = 0; k < w->nbodies; k++)
             n += dm_body_live(w, k);
+    else if (kind == DEMILL_KIND_TEMPLATE)
+        n = w->ntemplates;
+    else if (kind == DEMILL_KIND_CLUMP)
+        n = w->live_clumps;
     else
         for (uint32_t k = 0; k < w->nwalls; k++)
             n += user_wall(&w->walls[k]);
@@ -1476,6 +1487,13 @@ DEMILL_API demill_status demill_world_ids(const demill_world *cw, int32_t kind, 
         for (uint32_t k = 0, q = 0; k < w->nbodies; k++)
             if (dm_body_live(w, k))
                 out[q++] = dm_body_id(w, k);
+    } else if (kind == DEMILL_KIND_TEMPLATE) {
+        for (uint32_t k = 0; k < w->ntemplates; k++)
+            out[k] = dm_template_id(w, k);
+    } else if (kind == DEMILL_KIND_CLUMP) {
+        for (uint32_t k = 0, q = 0; k < w->nclumps; k++)
+            if (dm_clump_live(w, k))
+                out[q++] = dm_clump_id(w, k);
     } else if (n) { /* the drum */
         out[0] = dm_drum_id(w);
     }

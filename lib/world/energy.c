@@ -25,9 +25,10 @@ static void add_stored(void *ctx, const dm_contact_eval *c)
     e[DM_E_ROLLING] += c->e_rolling;
 }
 
-/* The energies of the current state (DM_E_*): kinetic, potential and, with
- * stored, the elastic energy of the contacts' springs (left 0 otherwise);
- * then the bodies' energies, each summed over the bodies. */
+/* The energies of the current state (DM_E_*): kinetic and potential (of the
+ * free particles and of the clumps, whose members count only as theirs)
+ * and, with stored, the elastic energy of the contacts' springs (left 0
+ * otherwise); then the bodies' energies, each summed over the bodies. */
 demill_status dm_energies(demill_world *w, int stored, double e[DM_ENERGIES])
 {
     const dm_particles *P = &w->p;
@@ -41,7 +42,18 @@ demill_status dm_energies(demill_world *w, int stored, double e[DM_ENERGIES])
         for (int q = 0; q < DM_BODY_ENERGIES; q++)
             e[DM_E_BODY + q] += b[q];
     }
+    for (uint32_t k = 0; k < w->nclumps; k++) {
+        double kt, kr, pot;
+        if (!dm_clump_live(w, k))
+            continue;
+        dm_clump_energies(w, k, &kt, &kr, &pot);
+        e[DM_E_KT] += kt;
+        e[DM_E_KR] += kr;
+        e[DM_E_POT] += pot;
+    }
     for (uint32_t i = 0; i < P->n; i++) {
+        if (P->clump[i]) /* its clump's energies hold it */
+            continue;
         for (int c = 0; c < D; c++) {
             e[0] += 0.5 * P->m[i] * P->v[D * i + c] * P->v[D * i + c];
             e[2] -= P->m[i] * w->g[c] * P->x[D * i + c];

@@ -324,7 +324,8 @@ static void close_intervals(dm_outlet *o, double time)
 }
 
 /* The particles whose centres are in an outlet, removed and counted (each
- * by the first outlet it is in); *removed counts them. */
+ * by the first outlet it is in); *removed counts them. Clumps' members are
+ * left alone (outlets do not remove clumps yet). */
 static demill_status outlets_act(demill_world *w, size_t *removed)
 {
     dm_flows *fl = &w->flows;
@@ -335,6 +336,8 @@ static demill_status outlets_act(demill_world *w, size_t *removed)
             close_intervals(&fl->outlets[q], w->time);
     uint32_t *map = NULL;
     for (uint32_t i = 0; i < P->n; i++) {
+        if (P->clump[i])
+            continue;
         double x[3] = {0, 0, 0};
         memcpy(x, P->x + (size_t)D * i, (size_t)D * sizeof *x);
         uint32_t q = 0;

@@ -14,6 +14,8 @@ static const char *kind_name(int kind)
     case DEMILL_KIND_FEED: return "feed";
     case DEMILL_KIND_OUTLET: return "outlet";
     case DEMILL_KIND_BODY: return "body";
+    case DEMILL_KIND_TEMPLATE: return "clump template";
+    case DEMILL_KIND_CLUMP: return "clump";
     default: return "unknown";
     }
 }
@@ -25,8 +27,8 @@ static const char *article(int kind)
 }
 
 /* Checks that `id` names a live object of `kind` in world w and returns its
- * storage slot (particles: storage index; walls: wall slot; bodies: body
- * slot; materials: index).
+ * storage slot (particles: storage index; walls: wall slot; bodies and
+ * clumps: their slot; materials and clump templates: index).
  * `what` names the argument in the error message. */
 demill_status dm_resolve(const demill_world *cw, demill_id id, int kind, const char *what,
                          uint32_t *slot)
@@ -52,10 +54,11 @@ demill_status dm_resolve(const demill_world *cw, demill_id id, int kind, const c
         *slot = 0;
         return DEMILL_OK;
     }
-    if (kind == DEMILL_KIND_MATERIAL) {
-        if (index >= w->nmat || DM_ID_GEN(id) != 0)
-            return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: no material with id 0x%llx", what,
-                           (unsigned long long)id);
+    if (kind == DEMILL_KIND_MATERIAL || kind == DEMILL_KIND_TEMPLATE) {
+        if (index >= (kind == DEMILL_KIND_MATERIAL ? w->nmat : w->ntemplates) ||
+            DM_ID_GEN(id) != 0)
+            return dm_fail(w, DEMILL_ERR_INVALID_HANDLE, "%s: no %s with id 0x%llx", what,
+                           kind_name(kind), (unsigned long long)id);
         *slot = index;
         return DEMILL_OK;
     }
@@ -74,6 +77,7 @@ demill_status dm_resolve(const demill_world *cw, demill_id id, int kind, const c
     }
     const dm_handles *h = kind == DEMILL_KIND_PARTICLE ? &w->ph
                           : kind == DEMILL_KIND_BODY   ? &w->bh
+                          : kind == DEMILL_KIND_CLUMP  ? &w->clh
                                                        : &w->wh;
     if (index >= h->n || h->slot[index] == DM_FREE || h->gen[index] != DM_ID_GEN(id))
         return dm_fail(w, DEMILL_ERR_INVALID_HANDLE,
@@ -105,6 +109,17 @@ demill_id dm_body_id(const demill_world *w, uint32_t slot)
 {
     uint32_t h = w->bodies[slot].handle;
     return dm_id_make(w->tag, DEMILL_KIND_BODY, w->bh.gen[h], h);
+}
+
+demill_id dm_clump_id(const demill_world *w, uint32_t slot)
+{
+    uint32_t h = w->clumps[slot].handle;
+    return dm_id_make(w->tag, DEMILL_KIND_CLUMP, w->clh.gen[h], h);
+}
+
+demill_id dm_template_id(const demill_world *w, uint32_t index)
+{
+    return dm_id_make(w->tag, DEMILL_KIND_TEMPLATE, 0, index);
 }
 
 demill_id dm_drum_id(const demill_world *w)

@@ -64,6 +64,12 @@ demill_status dm_masses_update(demill_world *w, uint32_t mat, const char *who)
 {
     dm_particles *p = &w->p;
     demill_status s = DEMILL_OK;
+    for (uint32_t k = 0; k < w->ntemplates; k++)
+        if (mat == DM_ALL_MATERIALS || w->templates[k].material == mat)
+            return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                           "%s: clump template 0x%llx weighed its spheres with it when it was "
+                           "made; it cannot change while the world has clump templates",
+                           who, (unsigned long long)dm_template_id(w, k));
     for (uint32_t i = 0; i < p->n && !s; i++)
         if (mat == DM_ALL_MATERIALS || p->mat[i] == mat) {
             double m, inv_i;

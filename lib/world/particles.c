@@ -134,6 +134,7 @@ demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const
             dm_quat_put(P->q, i, (const double[4]){1.0, 0.0, 0.0, 0.0});
         P->r[i] = radii[k];
         P->mat[i] = (uint16_t)mat;
+        P->clump[i] = 0;
         dm_particle_set_mass(w, i, false);
         P->hid[i] = dm_handles_issue(&w->ph, i);
         if (ids)
@@ -194,6 +195,7 @@ void dm_particles_compact(demill_world *w, uint32_t *map)
             P->iinv[m] = P->iinv[i];
             P->mat[m] = P->mat[i];
             P->hid[m] = P->hid[i];
+            P->clump[m] = P->clump[i];
             w->ph.slot[P->hid[m]] = m;
         }
         m++;
@@ -233,6 +235,11 @@ DEMILL_API demill_status demill_particles_remove(demill_world *w, size_t n, cons
         if (map[slot] == DM_FREE)
             return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "particles_remove: ids[%zu] is listed twice",
                            k);
+        if (P->clump[slot])
+            return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                           "particles_remove: ids[%zu] is a member of clump 0x%llx; remove the "
+                           "clump (demill_clump_remove)",
+                           k, (unsigned long long)dm_clump_id(w, P->clump[slot] - 1));
         map[slot] = DM_FREE;
     }
     dm_particles_compact(w, map);
@@ -343,6 +350,11 @@ static demill_status check_one(demill_world *w, uint32_t i, int32_t field, const
 {
     const int flat = w->dim == 2;
     demill_status s;
+    if (w->p.clump[i])
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "%s: the particle is a member of clump 0x%llx, which moves it; set the "
+                       "clump (demill_clump_set)",
+                       who, (unsigned long long)dm_clump_id(w, w->p.clump[i] - 1));
     switch (field) {
     case DEMILL_PARTICLE_POSITION: return check_vec(w, in, "position", who, flat);
     case DEMILL_PARTICLE_VELOCITY:
@@ -455,7 +467,8 @@ DEMILL_API demill_status demill_particles_read_ids(const demill_world *cw, int32
     demill_status s = dm_check_world(w);
     if (s)
         return s;
-    if (field != DEMILL_PARTICLE_ID && field != DEMILL_PARTICLE_MATERIAL)
+    if (field != DEMILL_PARTICLE_ID && field != DEMILL_PARTICLE_MATERIAL &&
+        field != DEMILL_PARTICLE_CLUMP)
         return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "%d is not a particle id field", (int)field);
     if (!out && !count)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER,
@@ -472,8 +485,11 @@ DEMILL_API demill_status demill_particles_read_ids(const demill_world *cw, int32
         uint32_t i = w->ph.slot[h];
         if (i == DM_FREE)
             continue;
-        out[k++] = field == DEMILL_PARTICLE_ID ? dm_particle_id(w, i)
-                                               : dm_material_id(w, w->p.mat[i]);
+        const uint32_t c = w->p.clump[i];
+        out[k++] = field == DEMILL_PARTICLE_ID         ? dm_particle_id(w, i)
+                   : field == DEMILL_PARTICLE_MATERIAL ? dm_material_id(w, w->p.mat[i])
+                   : c                                 ? dm_clump_id(w, c - 1)
+                                                       : DEMILL_ID_NONE;
     }
     return DEMILL_OK;
 }

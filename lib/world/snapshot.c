@@ -2,8 +2,9 @@
  * state (watchdog.c), snapshots and checkpoints (checkpoint.c).
  *
  * The copy holds everything a world is: parameters, materials and pairs,
- * particles in storage order, handles, walls with their meshes, bodies, the
- * drum, the contact lists with their histories, tallies and counters. It leaves out what is derived
+ * particles in storage order, handles, walls with their meshes, bodies,
+ * clumps and their templates, the drum, the contact lists with their
+ * histories, tallies and counters. It leaves out what is derived
  * again before use (the neighbour grid's scratch, the per-pair results, the
  * wall-contact geometry, the refinement's scratch): the destination keeps its
  * own of those, and its results are marked stale; dm_state_restore() makes
@@ -22,8 +23,9 @@ typedef struct buffer {
     size_t bytes;
 } buffer;
 
-/* particles 19, handles 3 × 3, pairs, table, walls, bodies, spectrum 2, buckets 5 each */
-#define MAX_BUFFERS (19 + 9 + 4 + 2 + 2 * DM_KERNELS * 5)
+/* particles 20, handles 4 × 3, pairs, table, walls, bodies, clumps 4, spectrum 2, buckets 5
+ * each */
+#define MAX_BUFFERS (20 + 12 + 4 + 4 + 2 + 2 * DM_KERNELS * 5)
 
 /* The buffers of state s (its pointers and sizes), into b; returns how many. */
 static size_t buffers_of(demill_world *s, buffer *b)
@@ -50,8 +52,9 @@ static size_t buffers_of(demill_world *s, buffer *b)
     ADD(P->iinv, n * sizeof(double));
     ADD(P->mat, n * sizeof(uint16_t));
     ADD(P->hid, n * sizeof(uint32_t));
-    dm_handles *h[3] = {&s->ph, &s->wh, &s->bh};
-    for (int c = 0; c < 3; c++) {
+    ADD(P->clump, n * sizeof(uint32_t));
+    dm_handles *h[4] = {&s->ph, &s->wh, &s->bh, &s->clh};
+    for (int c = 0; c < 4; c++) {
         ADD(h[c]->slot, h[c]->cap * sizeof(uint32_t));
         ADD(h[c]->gen, h[c]->cap * sizeof(uint16_t));
         ADD(h[c]->free, h[c]->cap * sizeof(uint32_t));
@@ -60,6 +63,10 @@ static size_t buffers_of(demill_world *s, buffer *b)
     ADD(s->ptab, nm * nm * sizeof *s->ptab);
     ADD(s->walls, s->cap_walls * sizeof *s->walls);
     ADD(s->bodies, s->cap_bodies * sizeof *s->bodies);
+    ADD(s->templates, s->cap_templates * sizeof *s->templates);
+    ADD(s->tmem, s->cap_tmem * sizeof *s->tmem);
+    ADD(s->clumps, s->cap_clumps * sizeof *s->clumps);
+    ADD(s->cmem, s->cap_cmem * sizeof *s->cmem);
     dm_spectrum *sp = &s->drum.spectrum;
     ADD(sp->edges, (sp->nclasses ? sp->nclasses - 1 : 0) * sizeof(double));
     ADD(sp->counts, (sp->counts ? dm_spectrum_counters(sp) : 0) * sizeof(uint64_t));

@@ -61,9 +61,14 @@ DEMILL_API void demill_world_destroy(demill_world *w)
     dm_watch_free(w);
     dm_handles_free(&w->wh);
     dm_handles_free(&w->bh);
+    dm_handles_free(&w->clh);
     dm_walls_free_owned(w);
     free(w->walls);
     free(w->bodies);
+    free(w->templates);
+    free(w->tmem);
+    free(w->clumps);
+    free(w->cmem);
     free(w->pairs);
     free(w->ptab);
     dm_tag_release(w->tag);

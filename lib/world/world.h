@@ -13,10 +13,12 @@
 #include "base/threads.h"
 #include "physics/bodies/bodies.h"
 #include "physics/broadphase/broadphase.h"
+#include "physics/clumps/clumps.h"
 #include "physics/contact/contact.h"
 #include "physics/geometry/geometry.h"
 #include "physics/integrate/integrate.h"
 #include "physics/mill/mill.h"
+#include "physics/shapes/shapes.h"
 #include "physics/state/state.h"
 
 /* ---- ids (ids.c) --------------------------------------------------------------- */
@@ -45,6 +47,8 @@ demill_status dm_walls_add_mesh(demill_world *w, uint32_t mat, int nel, size_t n
 demill_id dm_material_id(const demill_world *w, uint32_t material);
 demill_id dm_drum_id(const demill_world *w);
 demill_id dm_body_id(const demill_world *w, uint32_t slot);
+demill_id dm_clump_id(const demill_world *w, uint32_t slot);
+demill_id dm_template_id(const demill_world *w, uint32_t index);
 demill_id dm_feed_id(const demill_world *w, uint32_t slot);
 demill_id dm_outlet_id(const demill_world *w, uint32_t slot);
 
@@ -59,7 +63,8 @@ demill_status dm_particle_mass_checked(demill_world *w, uint32_t mat, double r, 
 /* After a change of what masses depend on (a material's density, the disc
  * thickness): the masses of the particles of material mat (DM_ALL_MATERIALS:
  * of every particle) computed again, if every one passes
- * dm_particle_mass_checked(); otherwise its error, and no mass changed. */
+ * dm_particle_mass_checked(); otherwise its error, and no mass changed.
+ * Refused while a clump template weighed with them exists. */
 #define DM_ALL_MATERIALS UINT32_MAX
 demill_status dm_masses_update(demill_world *w, uint32_t mat, const char *who);
 /* Removes the particles whose entry of map (one per particle, from
@@ -149,8 +154,8 @@ demill_status dm_check_time_step(demill_world *w);
 demill_status dm_state_copy(demill_world *dst, const demill_world *src);
 demill_status dm_state_restore(demill_world *w, const demill_world *src);
 void dm_state_free(demill_world *s);
-/* The energies of the state (energy.c), by index: the particles' kinetic
- * (translational, rotational) and potential energy, the elastic energy
+/* The energies of the state (energy.c), by index: the particles' and the
+ * clumps' kinetic (translational, rotational) and potential energy, the elastic energy
  * stored in the contacts' normal, tangential and rolling springs, then the
  * bodies' summed (DM_E_BODY + DM_BODY_*). */
 enum { DM_E_KT, DM_E_KR, DM_E_POT, DM_E_NORMAL, DM_E_TANGENTIAL, DM_E_ROLLING, DM_E_BODY };

@@ -25,6 +25,7 @@ from ._core import check, strerror
 from ._lib import lib
 from .constants import *  # noqa: F403 - the constants and enums
 from .constants import VERSION_NUMBER, VERSION_STRING, Kind, Status
+from .clumps import Clump, Template
 from .drum import Drum, Lifter
 from .errors import *  # noqa: F403 - the exceptions
 from .flows import Feed, FeedTotals, Outlet, OutletTotals
@@ -35,7 +36,8 @@ from .world import Progress, TimeStep, World
 
 __version__ = VERSION_STRING
 __all__ = (constants.__all__ + errors.__all__ + [
-    "World", "Material", "Pair", "Particle", "Particles", "Wall", "WallLoads", "Body", "Contacts",
+    "World", "Material", "Pair", "Particle", "Particles", "Wall", "WallLoads", "Body", "Clump",
+    "Template", "Contacts",
     "Drum", "Lifter", "Feed", "FeedTotals", "Outlet", "OutletTotals",
     "Snapshot", "VtkSeries", "Grinding", "Progress", "TimeStep", "ParamInfo", "library_path",
     "version", "version_number", "check_version", "id_kind", "param_info", "particle_field_size",

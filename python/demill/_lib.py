@@ -120,9 +120,10 @@ PROTOTYPES = {
     "demill_world_settle": (status, (WorldP, c_double, c_double, POINTER(c_int32))),
 }
 
-#: Functions newer than the oldest library this binding supports (progress,
-#: VTK output, snapshots and checkpoints, object listing, mesh walls, finite
-#: walls and wall motions, wall loads, grinding): bound when the library has them.
+#: Functions newer than the oldest library this binding supports (bodies,
+#: clumps, progress, VTK output, snapshots and checkpoints, object listing,
+#: mesh walls, finite walls and wall motions, wall loads, grinding): bound when
+#: the library has them.
 OPTIONAL_PROTOTYPES = {
     # body.h
     "demill_body_add": (status, (WorldP, c_double, dptr, c_int32, c_uint32, idptr)),
@@ -132,6 +133,17 @@ OPTIONAL_PROTOTYPES = {
     "demill_body_attach_wall": (status, (WorldP, id_t, id_t)),
     "demill_body_get": (status, (WorldP, id_t, c_int32, dptr)),
     "demill_body_energy": (status, (WorldP, id_t, c_int32, dptr)),
+    # clump.h
+    "demill_clump_template_field_size": (c_int32, (c_int32,)),
+    "demill_clump_field_size": (c_int32, (c_int32,)),
+    "demill_clump_template_add": (status, (WorldP, id_t, c_size_t, dptr, dptr, idptr)),
+    "demill_clump_template_get": (status, (WorldP, id_t, c_int32, dptr)),
+    "demill_clump_add": (status, (WorldP, id_t, dptr, dptr, idptr)),
+    "demill_clump_remove": (status, (WorldP, id_t)),
+    "demill_clump_get": (status, (WorldP, id_t, c_int32, dptr)),
+    "demill_clump_set": (status, (WorldP, id_t, c_int32, dptr)),
+    "demill_clump_members": (status, (WorldP, id_t, idptr, c_size_t, sizeptr)),
+    "demill_particle_clump": (status, (WorldP, id_t, idptr)),
     "demill_world_set_progress": (status, (WorldP, ProgressFn, c_void_p, c_uint64)),
     "demill_vtk_write_particles": (status, (WorldP, c_char_p)),
     "demill_vtk_write_walls": (status, (WorldP, c_char_p)),

@@ -13,7 +13,8 @@ __all__ = ["VERSION_MAJOR", "VERSION_MINOR", "VERSION_PATCH", "VERSION_NUMBER",
            "VERSION_STRING", "ID_NONE", "Status", "Kind", "Integrator", "WorldKey",
            "MaterialKey", "Normal", "Damping", "Tangential", "Rolling", "Cohesion",
            "PairKey", "ParticleField", "IdField", "AddFlag", "WallField", "Caps", "Harmonic",
-           "BodyAxis", "BodyFlag", "BodyField", "ContactField", "Energy", "DrumKey",
+           "BodyAxis", "BodyFlag", "BodyField", "TemplateField", "ClumpField",
+           "ContactField", "Energy", "DrumKey",
            "DrumPart", "LifterField", "Sizes", "Fill", "Region", "Spectrum"]
 
 VERSION_MAJOR = 0
@@ -63,6 +64,8 @@ class Kind(IntEnum):
     FEED = 5
     OUTLET = 6
     BODY = 7
+    TEMPLATE = 8
+    CLUMP = 9
 
 
 class Integrator(IntEnum):
@@ -209,10 +212,12 @@ class ParticleField(IntEnum):
 
 
 class IdField(IntEnum):
-    """Id fields of particles (``DEMILL_PARTICLE_ID``, ``DEMILL_PARTICLE_MATERIAL``)."""
+    """Id fields of particles (``DEMILL_PARTICLE_ID``, ``DEMILL_PARTICLE_MATERIAL``,
+    ``DEMILL_PARTICLE_CLUMP``)."""
 
     ID = 100
     MATERIAL = 101
+    CLUMP = 102
 
 
 class AddFlag(IntFlag):
@@ -273,6 +278,30 @@ class BodyField(IntEnum):
     FORCE_SPRING = 4
     FORCE_DAMPER = 5
     FORCE_EXTERNAL = 6
+
+
+class TemplateField(IntEnum):
+    """Clump template fields (``DEMILL_TEMPLATE_*``)."""
+
+    MASS = 1
+    VOLUME = 2
+    CENTRE = 3
+    PRINCIPAL_MOMENTS = 4
+    PRINCIPAL_AXES = 5
+    COUNT = 6
+
+
+class ClumpField(IntEnum):
+    """Clump fields (``DEMILL_CLUMP_*``)."""
+
+    POSITION = 1
+    ORIENTATION = 2
+    VELOCITY = 3
+    ANGULAR_VELOCITY = 4
+    ANGULAR_MOMENTUM = 5
+    FORCE = 6
+    TORQUE = 7
+    MASS = 8
 
 
 class ContactField(IntEnum):
@@ -441,6 +470,8 @@ C_PREFIXES = {
     BodyAxis: "DEMILL_BODY_AXIS_",
     BodyFlag: "DEMILL_BODY_",
     BodyField: "DEMILL_BODY_",
+    TemplateField: "DEMILL_TEMPLATE_",
+    ClumpField: "DEMILL_CLUMP_",
     Caps: "DEMILL_CAPS_",
     Harmonic: "DEMILL_HARMONIC_",
     ContactField: "DEMILL_CONTACT_",

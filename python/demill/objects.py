@@ -243,6 +243,11 @@ class Particles:
         """The ids of the particles' materials, in id order (uint64 array)."""
         return self._read_ids(IdField.MATERIAL, out)
 
+    def clump_ids(self, out=None):
+        """The ids of the particles' clumps, 0 for a particle of none, in id
+        order (uint64 array)."""
+        return self._read_ids(IdField.CLUMP, out)
+
     def read(self, field, out=None):
         """A field (:class:`~demill.ParticleField`) of every particle, into
         ``out`` if given (a float64 array of the right shape, no copy)."""

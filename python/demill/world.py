@@ -11,6 +11,7 @@ from ._core import (Closable, Keyed, Param, VectorParam, as_id, check, configure
                     read_counted, strerror, vector)
 from ._lib import ProgressFn, WorldP, lib
 from .constants import BodyFlag, Caps, Energy, Integrator, Kind, Status, WorldKey
+from .clumps import Clump, Template, particle_clump
 from .drum import Drum
 from .errors import BufferTooSmall, WorldClosed
 from .flows import Feed, Outlet
@@ -345,6 +346,30 @@ class World(Closable, Keyed):
                    0 if gravity else int(BodyFlag.NO_GRAVITY), ctypes.byref(out))
         return Body(self, out.value)
 
+    def clump_template(self, material, centres, radii):
+        """A clump template (:class:`Template`) of spheres of ``material``
+        at ``centres`` (n x 3, m; z = 0 in 2D) with ``radii`` (n, m)."""
+        c = doubles(centres, (-1, 3), "centres")
+        r = doubles(radii, (c.shape[0],), "radii")
+        out = ctypes.c_uint64()
+        self._call("demill_clump_template_add", as_id(material), c.shape[0], ptr(c), ptr(r),
+                   ctypes.byref(out))
+        return Template(self, out.value)
+
+    def add_clump(self, template, position, orientation=None):
+        """Adds a clump of ``template`` at rest, its centre of mass at
+        ``position`` and its body axes turned by the unit quaternion
+        ``orientation`` (w, x, y, z; None: the identity). A :class:`Clump`."""
+        q = None if orientation is None else doubles(orientation, (4,), "orientation")
+        out = ctypes.c_uint64()
+        self._call("demill_clump_add", as_id(template), ptr(vector(position, "position")),
+                   None if q is None else ptr(q), ctypes.byref(out))
+        return Clump(self, out.value)
+
+    def clump_of(self, particle):
+        """The :class:`Clump` a particle belongs to, or None."""
+        return particle_clump(self, particle)
+
     def add_drum(self, material, **params):
         """Creates the world's drum of the given wall material with
         parameters by name, e.g. ``world.add_drum(steel, diameter=0.3)``."""
@@ -428,6 +453,11 @@ class World(Closable, Keyed):
     def bodies(self):
         """Every body, as a list of :class:`Body`."""
         return [Body(self, i) for i in self.ids(Kind.BODY)]
+
+    @property
+    def clumps(self):
+        """Every clump, as a list of :class:`Clump`."""
+        return [Clump(self, i) for i in self.ids(Kind.CLUMP)]
 
     @property
     def drum(self):

@@ -79,6 +79,7 @@ typedef struct scene {
     size_t np;
     demill_id gone_p[2], gone_wall; /* removed ids (setup_removed) */
     demill_id body;                 /* a body the snapshot reads (setup_body) */
+    demill_id tmpl, clump;          /* a clump template and a clump (setup_clump) */
     unsigned nsnaps;
     int calls, failures;
     char ctx[256];
@@ -116,6 +117,10 @@ static uint64_t id_code(const scene *sc, demill_id id)
     for (int k = 0; k < sc->nwall; k++)
         if (sc->wall[k] == id)
             return (3ull << 60) | (uint64_t)k;
+    if (id && id == sc->tmpl)
+        return 4ull << 60;
+    if (id && id == sc->clump)
+        return 5ull << 60;
     return id == DEMILL_ID_NONE ? 0 : (0xfull << 60) ^ id;
 }
 
@@ -160,7 +165,7 @@ static void snap_take(scene *sc, snap *s)
         for (size_t i = 0; i < size * n; i++)
             put_d(s, "particle field", f, i, st, buf[i]);
     }
-    for (int32_t f = DEMILL_PARTICLE_ID; f <= DEMILL_PARTICLE_MATERIAL; f++) {
+    for (int32_t f = DEMILL_PARTICLE_ID; f <= DEMILL_PARTICLE_CLUMP; f++) {
         memset(ids, 0, (n + 1) * sizeof *ids);
         cnt = 0;
         st = demill_particles_read_ids(w, f, ids, n, &cnt);
@@ -211,6 +216,28 @@ static void snap_take(scene *sc, snap *s)
             st = demill_body_energy(w, sc->body, t, &v);
             put_d(s, "body energy", t, 0, st, v);
         }
+    }
+
+    /* clumps */
+    if (sc->clump) {
+        for (int32_t f = DEMILL_CLUMP_POSITION; f <= DEMILL_CLUMP_MASS; f++) {
+            double v[4] = {0, 0, 0, 0};
+            st = demill_clump_get(w, sc->clump, f, v);
+            for (int c = 0; c < 4; c++)
+                put_d(s, "clump", f, (size_t)c, st, v[c]);
+        }
+        for (int32_t f = DEMILL_TEMPLATE_MASS; f <= DEMILL_TEMPLATE_COUNT; f++) {
+            double v[9] = {0};
+            st = demill_clump_template_get(w, sc->tmpl, f, v);
+            for (int c = 0; c < 9; c++)
+                put_d(s, "template", f, (size_t)c, st, v[c]);
+        }
+        demill_id m[4] = {0};
+        size_t nm = 0;
+        st = demill_clump_members(w, sc->clump, m, 4, &nm);
+        put(s, "clump members", 0, 0, st, nm);
+        for (size_t k = 0; k < 4; k++)
+            put(s, "clump member", 0, k, st, id_code(sc, m[k]));
     }
 
     /* energies */
@@ -1789,6 +1816,175 @@ START_TEST(body_values)
 END_TEST
 
 /* ------------------------------------------------------------------------ */
+/* Clumps                                                                     */
+
+/* A clump of two overlapping spheres of material A above the stack, turning
+ * and falling onto it, its members among the scene's particles. */
+static void setup_clump(scene *sc)
+{
+    demill_world *w = sc->w;
+    const double c[6] = {0, 0, 0, 1.2 * RAD, 0, 0}, r[2] = {RAD, RAD};
+    const double at[3] = {0, 0.04, 0}, v[3] = {0.01, -0.2, 0};
+    const double spin[3] = {0, 0, 3};
+    DM_OK(w, demill_clump_template_add(w, sc->mat[0], 2, c, r, &sc->tmpl));
+    DM_OK(w, demill_clump_add(w, sc->tmpl, at, NULL, &sc->clump));
+    DM_OK(w, demill_clump_set(w, sc->clump, DEMILL_CLUMP_VELOCITY, v));
+    DM_OK(w, demill_clump_set(w, sc->clump, DEMILL_CLUMP_ANGULAR_VELOCITY, spin));
+    size_t n;
+    DM_OK(w, demill_clump_members(w, sc->clump, sc->pid + sc->np, 2, &n));
+    sc->np += n;
+    DM_OK(w, demill_world_step(w, 10));
+}
+
+static void bad_clumps(scene *sc)
+{
+    demill_world *w = sc->w;
+    const demill_id t = sc->tmpl, c = sc->clump, mat = sc->mat[0];
+    const double cen[6] = {0, 0, 0, 3 * RAD, 0, 0}, rad[2] = {RAD, RAD};
+    const double at[3] = {0, 0.2, 0}, q1[4] = {1, 0, 0, 0}, zero4[4] = {0, 0, 0, 0};
+    demill_id out;
+    double o[9];
+
+    ctx(sc, "clump_template_add");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_clump_template_add(w, mat, 0, cen, rad, &out), "n = 0");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_template_add(w, mat, 2, NULL, rad, &out),
+        "centres");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_template_add(w, mat, 2, cen, NULL, &out),
+        "radii");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_template_add(w, mat, 2, cen, rad, NULL), "out");
+    for (int k = 0; k < 3; k++) {
+        double bad[6];
+        memcpy(bad, cen, sizeof bad);
+        bad[3 + k] = nonfinite[k];
+        BAD(sc, DEMILL_ERR_NOT_FINITE, demill_clump_template_add(w, mat, 2, bad, rad, &out),
+            "centre 1", NONFINITE);
+        double br[2] = {RAD, nonfinite[k]};
+        BAD(sc, DEMILL_ERR_NOT_FINITE, demill_clump_template_add(w, mat, 2, cen, br, &out),
+            "radius 1", NONFINITE);
+    }
+    const double nonpositive[2] = {0.0, -RAD};
+    for (int k = 0; k < 2; k++) {
+        double br[2] = {nonpositive[k], RAD};
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_clump_template_add(w, mat, 2, cen, br, &out),
+            "radius 0");
+    }
+    const double tiny[2] = {1e-110, 1e-110}; /* a mass that underflows to 0 */
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_clump_template_add(w, mat, 2, cen, tiny, &out),
+        "mass");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_clump_template_add(w, t, 2, cen, rad, &out),
+        "material");
+    if (sc->dim == 2) {
+        const double cz[6] = {0, 0, 0, 3 * RAD, 0, RAD};
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_clump_template_add(w, mat, 2, cz, rad, &out), "2D");
+    }
+
+    ctx(sc, "clump_template_get");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_clump_template_get(w, t, 0, o), "template field");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_clump_template_get(w, t, 7, o), "template field");
+    BAD(sc, DEMILL_ERR_NULL_POINTER,
+        demill_clump_template_get(w, t, DEMILL_TEMPLATE_MASS, NULL), "out");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_clump_template_get(w, c, DEMILL_TEMPLATE_MASS, o),
+        "template");
+
+    ctx(sc, "clump_add");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_add(w, t, NULL, NULL, &out), "position");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_add(w, t, at, NULL, NULL), "out");
+    for (int k = 0; k < 3; k++) {
+        double bad[3] = {0, 0.2, 0}, bq[4] = {1, 0, 0, 0};
+        bad[k] = nonfinite[k];
+        bq[k == 0 ? 0 : 3] = nonfinite[k];
+        BAD(sc, DEMILL_ERR_NOT_FINITE, demill_clump_add(w, t, bad, NULL, &out), "position",
+            NONFINITE);
+        BAD(sc, DEMILL_ERR_NOT_FINITE, demill_clump_add(w, t, at, bq, &out), "orientation",
+            NONFINITE);
+    }
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_clump_add(w, t, at, zero4, &out), "orientation",
+        "norm");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_clump_add(w, mat, at, q1, &out), "template");
+    if (sc->dim == 2) {
+        const double az[3] = {0, 0.2, 0.1}, qx[4] = {1, 0.1, 0, 0};
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_clump_add(w, t, az, NULL, &out), "2D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_clump_add(w, t, at, qx, &out), "about z");
+    }
+
+    ctx(sc, "clump_get, clump_set");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_clump_get(w, c, 0, o), "clump field");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_clump_get(w, c, 9, o), "clump field");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_get(w, c, DEMILL_CLUMP_POSITION, NULL), "out");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_clump_get(w, t, DEMILL_CLUMP_POSITION, o), "clump");
+    const int32_t readonly[4] = {DEMILL_CLUMP_ANGULAR_MOMENTUM, DEMILL_CLUMP_FORCE,
+                                 DEMILL_CLUMP_TORQUE, DEMILL_CLUMP_MASS};
+    for (int k = 0; k < 4; k++)
+        BAD(sc, DEMILL_ERR_READ_ONLY, demill_clump_set(w, c, readonly[k], q1), "read-only");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_clump_set(w, c, 9, q1), "clump field");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_set(w, c, DEMILL_CLUMP_POSITION, NULL), "in");
+    const int32_t vectors[3] = {DEMILL_CLUMP_POSITION, DEMILL_CLUMP_VELOCITY,
+                                DEMILL_CLUMP_ANGULAR_VELOCITY};
+    for (int f = 0; f < 3; f++)
+        for (int k = 0; k < 3; k++) {
+            double bad[3] = {0, 0, 0};
+            bad[2 - k] = nonfinite[k];
+            BAD(sc, DEMILL_ERR_NOT_FINITE, demill_clump_set(w, c, vectors[f], bad), NONFINITE);
+        }
+    const double bq[4] = {NAN, 0, 0, 1};
+    BAD(sc, DEMILL_ERR_NOT_FINITE, demill_clump_set(w, c, DEMILL_CLUMP_ORIENTATION, bq),
+        "orientation", NONFINITE);
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_clump_set(w, c, DEMILL_CLUMP_ORIENTATION, zero4),
+        "norm");
+    if (sc->dim == 2) {
+        const double vz[3] = {0, 0, 1}, wx[3] = {1, 0, 0}, qy[4] = {1, 0, 0.1, 0};
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_clump_set(w, c, DEMILL_CLUMP_VELOCITY, vz), "2D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_clump_set(w, c, DEMILL_CLUMP_POSITION, vz), "2D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_clump_set(w, c, DEMILL_CLUMP_ANGULAR_VELOCITY, wx),
+            "2D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_clump_set(w, c, DEMILL_CLUMP_ORIENTATION, qy),
+            "about z");
+    }
+
+    ctx(sc, "clump_members, particle_clump, clump_remove");
+    demill_id ids[2];
+    size_t n;
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_members(w, c, NULL, 0, NULL), "NULL");
+    BAD(sc, DEMILL_ERR_BUFFER_TOO_SMALL, demill_clump_members(w, c, ids, 1, &n), "capacity");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_clump_members(w, mat, ids, 2, &n), "clump");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_particle_clump(w, sc->pid[0], NULL), "clump");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_particle_clump(w, c, &out), "particle");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_clump_remove(w, t), "clump");
+
+    ctx(sc, "members through the particle API");
+    DM_OK(w, demill_clump_members(w, c, ids, 2, &n));
+    const double p[3] = {0, 0.3, 0}, one = 1.0;
+    const int32_t fields[4] = {DEMILL_PARTICLE_POSITION, DEMILL_PARTICLE_VELOCITY,
+                               DEMILL_PARTICLE_ANGULAR_VELOCITY, DEMILL_PARTICLE_RADIUS};
+    for (int k = 0; k < 4; k++)
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_particle_set(w, ids[1], fields[k], p), "clump");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_particle_set(w, ids[0], DEMILL_PARTICLE_FIXED, &one),
+        "clump");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_particles_remove(w, 1, ids + 1), "clump");
+    double *pos = read_field(sc, DEMILL_PARTICLE_POSITION, &n);
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_particles_write(w, DEMILL_PARTICLE_POSITION, pos, n),
+        "clump");
+    free(pos);
+
+    ctx(sc, "what clumps do not support yet");
+    BAD(sc, DEMILL_ERR_INVALID_VALUE,
+        demill_material_set(w, mat, DEMILL_MATERIAL_DENSITY, 3000), "template");
+    if (sc->dim == 2)
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_world_set(w, DEMILL_WORLD_DISC_THICKNESS, 0.01), "template");
+    size_t bytes = 0;
+    BAD(sc, DEMILL_ERR_UNSUPPORTED, demill_world_save_buffer(w, NULL, 0, &bytes), "clump");
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT));
+    BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_world_step(w, 1), "refinement", "clumps");
+}
+
+START_TEST(clump_values)
+{
+    both_dims(setup_clump, bad_clumps, fix_integrator);
+}
+END_TEST
+
+/* ------------------------------------------------------------------------ */
 /* Handles: removed, foreign, wrong kind, none                                */
 
 /* Removes particles 3 and 7 (id order) and a wall, then adds particles and a
@@ -2015,7 +2211,7 @@ static void bad_reads(scene *sc)
         ctx(sc, "particles_read field %d, out and count NULL", (int)f);
         BAD(sc, DEMILL_ERR_NULL_POINTER, demill_particles_read(w, f, NULL, n, NULL), "NULL");
     }
-    for (int32_t f = DEMILL_PARTICLE_ID; f <= DEMILL_PARTICLE_MATERIAL; f++) {
+    for (int32_t f = DEMILL_PARTICLE_ID; f <= DEMILL_PARTICLE_CLUMP; f++) {
         const size_t bytes = (n + 1) * sizeof *ib;
         memset(ib, SENTINEL, bytes);
         cnt = 12345;
@@ -2035,7 +2231,7 @@ static void bad_reads(scene *sc)
         BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_particles_read(w, unknown_p[k], buf, n, &cnt),
             num);
     }
-    static const int32_t unknown_i[] = {0, 1, 99, 102, -1};
+    static const int32_t unknown_i[] = {0, 1, 99, 103, -1};
     for (size_t k = 0; k < sizeof unknown_i / sizeof unknown_i[0]; k++) {
         char num[16];
         snprintf(num, sizeof num, "%d", (int)unknown_i[k]);
@@ -2565,6 +2761,7 @@ int main(void)
     tcase_add_test(tc, particle_set_values);
     tcase_add_test(tc, wall_values);
     tcase_add_test(tc, body_values);
+    tcase_add_test(tc, clump_values);
     tcase_add_test(tc, finite_wall_values);
     tcase_add_test(tc, mesh_values);
     tcase_add_test(tc, wall_loads_values);

@@ -413,7 +413,11 @@ START_TEST(listing_ids)
                      DEMILL_ERR_BUFFER_TOO_SMALL);
     ck_assert_uint_eq(n, 3);
     ck_assert_ptr_nonnull(strstr(demill_world_last_error(w), "capacity"));
-    ck_assert_int_eq(demill_world_ids(w, 9, &one, 1, &n), DEMILL_ERR_UNKNOWN_KEY);
+    ck_assert_int_eq(demill_world_ids(w, 10, &one, 1, &n), DEMILL_ERR_UNKNOWN_KEY);
+    for (int32_t kind = DEMILL_KIND_TEMPLATE; kind <= DEMILL_KIND_CLUMP; kind++) {
+        DM_OK(w, demill_world_ids(w, kind, NULL, 0, &n));
+        ck_assert_uint_eq(n, 0);
+    }
     ck_assert_int_eq(demill_world_ids(w, DEMILL_KIND_NONE, &one, 1, &n), DEMILL_ERR_UNKNOWN_KEY);
     ck_assert_int_eq(demill_world_ids(w, DEMILL_KIND_DRUM, NULL, 0, NULL), DEMILL_ERR_NULL_POINTER);
     DM_OK(w, demill_world_ids(w, DEMILL_KIND_DRUM, NULL, 0, &n));

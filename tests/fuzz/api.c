@@ -1381,7 +1381,7 @@ static void op_stateless(call *c)
     if (demill_param_bounds(key, NULL, NULL, NULL) != st)
         fail("demill_param_bounds(%d) with NULL outputs gave another status", (int)key);
     const int kind = demill_id_kind(id);
-    if (kind < DEMILL_KIND_NONE || kind > DEMILL_KIND_BODY)
+    if (kind < DEMILL_KIND_NONE || kind > DEMILL_KIND_CLUMP)
         fail("demill_id_kind(0x%llx) = %d", (unsigned long long)id, kind);
     const int32_t ps = demill_particle_field_size(key), cs = demill_contact_field_size(key);
     if ((ps != 0 && ps != 1 && ps != 3) || (cs != 0 && cs != 1 && cs != 3))

@@ -2,8 +2,9 @@
  * of a uniform grid, then every pair closer than the sum of radii plus the
  * skin is listed once (i < j in storage order) in the bucket of its contact
  * kernel, with the history of contacts that were already touching carried
- * over. Cost O(N); the lists stay valid until some particle has moved half
- * the skin (or a wall has moved so far that a gap could close). */
+ * over; members of one clump are never paired. Cost O(N); the lists stay
+ * valid until some particle has moved half the skin (or a wall has moved so
+ * far that a gap could close). */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -197,8 +198,12 @@ static void pairbuf_push(dm_pairbuf *pb, uint32_t i, uint32_t j, uint32_t t, int
     pb->next[k]++;
 }
 
-/* Lists the pairs of particle i with particles j0..j1-1 that are within reach. */
-static void scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t j0, uint32_t j1)
+/* Lists the pairs of particle i with particles j0..j1-1 that are within
+ * reach; with clumps, not those of two members of one clump (compiled
+ * twice, so that a world without clumps pays nothing for the test). */
+static inline __attribute__((always_inline)) void
+scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t j0, uint32_t j1,
+         const bool clumps)
 {
     const int D = w->dim;
     const dm_particles *P = &w->p;
@@ -206,6 +211,7 @@ static void scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t
     const double ri = r[i] + w->skin + w->cohesion_reach;
     const dm_pairparam *row = w->ptab + P->mat[i] * w->nmat_tab;
     const bool fixed = dm_particle_fixed(P, i);
+    const uint32_t clump = clumps ? P->clump[i] : 0;
     uint32_t near[SCAN_BLOCK];
     for (uint32_t b0 = j0; b0 < j1; b0 += SCAN_BLOCK) {
         const uint32_t b1 = j1 - b0 < SCAN_BLOCK ? j1 : b0 + SCAN_BLOCK;
@@ -222,11 +228,23 @@ static void scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t
         }
         for (uint32_t q = 0; q < m; q++) {
             const int kern = row[P->mat[near[q]]].kernel;
-            /* two fixed particles do not touch */
-            if (kern >= 0 && (!fixed || !dm_particle_fixed(P, near[q])))
+            /* two fixed particles do not touch, nor two members of one clump */
+            if (kern >= 0 && (!fixed || !dm_particle_fixed(P, near[q])) &&
+                (!clumps || !clump || P->clump[near[q]] != clump))
                 pairbuf_push(pb, i, near[q], 0, kern);
         }
     }
+}
+
+/* The pairs of a cell's particles b0..b1-1 with the rows lo[q]..hi[q]-1 of
+ * the stencil (its own row from the particle on). */
+static inline __attribute__((always_inline)) void
+scan_cell(const demill_world *w, dm_pairbuf *pb, uint32_t b0, uint32_t b1, int nr,
+          const uint32_t *lo, const uint32_t *hi, const bool clumps)
+{
+    for (uint32_t i = b0; i < b1; i++)
+        for (int q = 0; q < nr; q++)
+            scan_row(w, pb, i, q ? lo[q] : i + 1, hi[q], clumps);
 }
 
 /* A mesh element near a particle: a candidate pair (dm_mesh_near). */
@@ -297,9 +315,10 @@ static void search_range(demill_world *w, void *arg, int t, uint32_t begin, uint
             lo[nr] = start[base + x0];
             hi[nr++] = start[base + x1 + 1];
         }
-        for (uint32_t i = b0; i < b1; i++)
-            for (int q = 0; q < nr; q++)
-                scan_row(w, pb, i, q ? lo[q] : i + 1, hi[q]);
+        if (w->live_clumps)
+            scan_cell(w, pb, b0, b1, nr, lo, hi, true);
+        else
+            scan_cell(w, pb, b0, b1, nr, lo, hi, false);
     }
 
     const int D = w->dim;

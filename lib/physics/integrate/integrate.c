@@ -4,7 +4,8 @@
  * moves the particles, advances the walls, rebuilds the neighbour lists when
  * the skin is used up, evaluates the forces of the new state and adds them
  * to the loads the walls record. Bodies
- * (bodies.c) take the same half steps as the particles.
+ * (bodies.c) and clumps (clumps.c) take the same half steps as the
+ * particles, and the clumps then put their members in place.
  *
  * Velocity Verlet here differs from the usual DEM form in one respect: the
  * dashpots and friction see the predicted end-of-step velocity v + a Δt rather
@@ -23,6 +24,7 @@
 #include "base/status.h"
 #include "base/threads.h"
 #include "physics/bodies/bodies.h"
+#include "physics/clumps/clumps.h"
 #include "physics/broadphase/broadphase.h"
 #include "physics/contact/contact.h"
 #include "physics/integrate/integrate.h"
@@ -259,7 +261,9 @@ static double drift(demill_world *w, dm_range_fn fn, step_args *a)
  * for the spin), a the damped acceleration: with either integrator that is
  * exactly the change of kinetic energy the force F_d makes over the kicks it
  * enters (velocity Verlet's two half kicks from v(t - Δt/2) to v(t + Δt/2),
- * symplectic Euler's step from v to v + Δt a). Serial, in storage order, so
+ * symplectic Euler's step from v to v + Δt a). Clumps' members are left
+ * alone too (their clump moves them: local damping does not act on clumps
+ * yet). Serial, in storage order, so
  * that the sum does not depend on the threads; a world with local damping
  * is a quasi-static one, whose cost the contacts dominate. */
 static double local_damping(demill_world *w)
@@ -270,7 +274,7 @@ static double local_damping(demill_world *w)
     double work = 0.0;
     for (uint32_t i = 0; i < P->n; i++) {
         const double alpha = w->mats[P->mat[i]].local_damping;
-        if (alpha == 0.0 || dm_particle_fixed(P, i))
+        if (alpha == 0.0 || dm_particle_fixed(P, i) || P->clump[i])
             continue;
         for (int c = 0; c < D; c++) {
             const double f = P->f[D * i + c], v = P->v[D * i + c];
@@ -328,7 +332,9 @@ static demill_status verlet(demill_world *w, uint64_t steps)
         return DEMILL_OK;
     for (uint64_t s = 0; s < steps; s++) {
         a.kick = s > 0;
-        const double d2 = drift(w, d3 ? verlet_drift3 : verlet_drift2, &a);
+        double d2 = drift(w, d3 ? verlet_drift3 : verlet_drift2, &a);
+        if (w->live_clumps)
+            d2 = fmax(d2, dm_clumps_drift(w, w->dt, a.kick, 1));
         if (w->nbodies)
             dm_bodies_drift(w, w->dt, a.kick, 1);
         demill_status st = finish_step(w, d2, P->vp, P->wp, 0.5);
@@ -338,6 +344,8 @@ static demill_status verlet(demill_world *w, uint64_t steps)
     a.kick = a.predict = 0;
     a.hth = 0.0;
     dm_parallel(w, P->n, d3 ? kick3 : kick2, &a);
+    if (w->live_clumps)
+        dm_clumps_kick(w, a.h);
     if (w->nbodies)
         dm_bodies_kick(w, a.h);
     return DEMILL_OK;
@@ -349,7 +357,9 @@ static demill_status euler(demill_world *w, uint64_t steps)
     dm_particles *P = &w->p;
     step_args a = {.dt = w->dt, .h = w->dt, .hth = w->dt, .rotation = w->rotation};
     for (uint64_t s = 0; s < steps; s++) {
-        const double d2 = drift(w, d3 ? euler_drift3 : euler_drift2, &a);
+        double d2 = drift(w, d3 ? euler_drift3 : euler_drift2, &a);
+        if (w->live_clumps)
+            d2 = fmax(d2, dm_clumps_drift(w, w->dt, 0, 0));
         if (w->nbodies)
             dm_bodies_drift(w, w->dt, 0, 0);
         demill_status st = finish_step(w, d2, P->v, P->w, 1.0);
@@ -376,6 +386,11 @@ demill_status dm_prepare_step(demill_world *w)
                        "world_step: the iterative refinement does not integrate bodies (the "
                        "world has %u); use velocity Verlet or symplectic Euler",
                        bodies);
+    if (w->live_clumps && w->integrator == DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "world_step: the iterative refinement does not integrate clumps (the "
+                       "world has %u); use velocity Verlet or symplectic Euler",
+                       w->live_clumps);
     demill_status s = dm_resolve_pairs(w, true);
     if (s)
         return s;

@@ -24,10 +24,10 @@ int dm_particles_reserve(demill_world *w, uint32_t need)
                              (void **)&P->r,  (void **)&P->m,     (void **)&P->im,
                              (void **)&P->iinv, (void **)&P->mat, (void **)&P->hid,
                              (void **)&P->q[0], (void **)&P->q[1], (void **)&P->q[2],
-                             (void **)&P->q[3]};
+                             (void **)&P->q[3], (void **)&P->clump};
     const size_t sizes[] = {D, D, D, D, D, W, W, W, sizeof(double), sizeof(double),
                             sizeof(double), sizeof(double), sizeof(double), sizeof(uint16_t),
-                            sizeof(uint32_t), Q, Q, Q, Q};
+                            sizeof(uint32_t), Q, Q, Q, Q, sizeof(uint32_t)};
     if (dm_grow_arrays(arrays, sizes, sizeof sizes / sizeof sizes[0], cap))
         return -1;
     P->cap = (uint32_t)cap;
@@ -54,6 +54,7 @@ void dm_particles_free(demill_world *w)
     free(P->iinv);
     free(P->mat);
     free(P->hid);
+    free(P->clump);
     dm_handles_free(&w->ph);
 }
 
@@ -89,9 +90,13 @@ void dm_particles_permute(demill_world *w, const uint32_t *order)
         m16[k] = P->mat[order[k]];
     memcpy(P->mat, m16, n * sizeof *m16);
     uint32_t *h32 = (uint32_t *)s;
-    for (uint32_t k = 0; k < n; k++)
-        h32[k] = P->hid[order[k]];
-    memcpy(P->hid, h32, n * sizeof *h32);
+    uint32_t *u32[] = {P->hid, P->clump};
+    /* without clumps every clump slot is 0, and stays so unmoved */
+    for (size_t a = 0; a < (w->live_clumps ? 2u : 1u); a++) {
+        for (uint32_t k = 0; k < n; k++)
+            h32[k] = u32[a][order[k]];
+        memcpy(u32[a], h32, n * sizeof *h32);
+    }
     for (uint32_t k = 0; k < n; k++)
         w->ph.slot[P->hid[k]] = k;
 }

@@ -241,6 +241,38 @@ typedef struct dm_body {
     double work, dissipated;
 } dm_body;
 
+/* ---- clumps (clumps/clumps.c) ------------------------------------------- */
+/* A clump template: a rigid shape of n spheres (discs in 2D) of one
+ * material, kept in its principal frame: member k's offset from the centre
+ * of mass along the principal axes and its radius are tmem[4 (first + k)
+ * .. + 3]. 2D: the frame is the input's, shifted to the centre of mass
+ * (a 2D world turns only about z). */
+typedef struct dm_template {
+    uint32_t material, n, first;
+    double mass, im;        /* mass and its inverse, 1/M */
+    double volume;          /* mass / density */
+    double inertia[3];      /* principal moments, increasing (2D: 0, 0, I_z) */
+    double axes[9];         /* the principal axes in the input frame, one per row */
+    double centre[3];       /* the centre of mass in the input frame */
+} dm_template;
+#define DM_TMEM 4 /* doubles per template member: body-frame offset (3), radius */
+
+/* A clump: a rigid body whose members are particles that follow it. Its
+ * members' particle handles are cmem[first .. first + n - 1], n its
+ * template's. */
+typedef struct dm_clump {
+    uint32_t handle;        /* handle index; DM_FREE for a free slot */
+    uint32_t tmpl, first;
+    double x[3], v[3];      /* centre of mass and its velocity */
+    double q[4];            /* orientation (w, x, y, z): body frame to world */
+    double theta;           /* 2D: the angle about z (q follows it) */
+    double L[3];            /* angular momentum about the centre of mass, world frame
+                               (2D: L[2]) */
+    double om[3];           /* angular velocity, world frame */
+    double vp[3], wp[3];    /* the velocities the dashpots see (velocity Verlet: the
+                               predicted end-of-step ones) */
+} dm_clump;
+
 /* ---- particles (state/particles.c) ------------------------------------- */
 /* Structure of arrays in storage order (sorted by cell at each neighbour
  * build). Vectors have D = dim components, angular ones W = 1 (2D) or 3. */
@@ -256,6 +288,7 @@ typedef struct dm_particles {
     double *r, *m, *im, *iinv; /* radius, mass, 1/m, 1/I (both 0: a fixed particle) */
     uint16_t *mat;           /* material slot */
     uint32_t *hid;           /* handle index */
+    uint32_t *clump;         /* the clump slot + 1 of a clump's member, 0: a free particle */
 } dm_particles;
 
 /* ---- contact lists (contact/lists.c; filled by broadphase/nlist.c) ------ */
@@ -597,6 +630,18 @@ struct demill_world {
     dm_body *bodies;
     uint32_t nbodies, cap_bodies; /* slots in use (some may be free), room */
     dm_handles bh;
+
+    /* clump templates (never removed: ids by index, as materials) and clumps */
+    dm_template *templates;
+    uint32_t ntemplates, cap_templates;
+    double *tmem;            /* DM_TMEM doubles per member of every template */
+    uint32_t ntmem, cap_tmem;
+    dm_clump *clumps;
+    uint32_t nclumps, cap_clumps; /* slots in use (some may be free), room */
+    uint32_t live_clumps;
+    uint32_t *cmem;          /* the members' particle handles of every clump */
+    uint32_t ncmem, cap_cmem;
+    dm_handles clh;
 
     /* the mill drum (at most one) */
     dm_drum drum;

@@ -1,0 +1,195 @@
+/** @file demill/clump.h
+ * @brief Clumps: rigid bodies made of overlapping spheres (discs in 2D).
+ *
+ * A clump template is a rigid shape of n spheres of one material; its mass,
+ * centre of mass and inertia are those of the union of the spheres, each
+ * point counted once however many spheres cover it. A clump is a body of
+ * that shape placed in the world. Its spheres, its members, are particles
+ * (ids of kind DEMILL_KIND_PARTICLE, read with the particle API): they
+ * touch other particles and walls with the pair's contact model, the
+ * contact's reduced mass m* being the clump's mass, and the forces and
+ * torques on them move the clump, which carries them along. Members of one
+ * clump never touch each other. A clump translates with the world's
+ * integrator and turns by Euler's equations in its principal frame, with a
+ * splitting that keeps the angular momentum of a free body (Dullweber,
+ * Leimkuhler and McLachlan 1997); its energies join the kinetic and
+ * potential terms of demill_world_energy(). docs/shapes.md, Clumps,
+ * describes them.
+ *
+ * What clumps do not do yet: the iterative refinement refuses a world with
+ * clumps (DEMILL_ERR_INVALID_VALUE from demill_world_step()), checkpoints
+ * refuse to save one (DEMILL_ERR_UNSUPPORTED; snapshots keep them), local
+ * damping leaves members alone, and outlets do not remove members.
+ */
+#ifndef DEMILL_CLUMP_H
+#define DEMILL_CLUMP_H
+
+#include "world.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Template fields, read with demill_clump_template_get(). */
+enum {
+    DEMILL_TEMPLATE_MASS = 1,              /**< 1 double, kg */
+    DEMILL_TEMPLATE_VOLUME = 2,            /**< 1 double: the mass over the density, m³ (2D: the discs' area times the world's disc thickness, or the spheres' volume when it is 0) */
+    DEMILL_TEMPLATE_CENTRE = 3,            /**< 3 doubles: the centre of mass in the frame of the centres given, m */
+    /** 3 doubles, kg m²: the principal moments of inertia, increasing. 2D:
+     *  0, 0 and the moment about z through the centre of mass (a 2D world
+     *  turns only about z). */
+    DEMILL_TEMPLATE_PRINCIPAL_MOMENTS = 4,
+    /** 9 doubles: the three principal axes, unit vectors in the frame of the
+     *  centres given, in the order of the moments, right-handed. They are
+     *  the clump's body axes: a clump of orientation (1, 0, 0, 0) has them
+     *  along x, y and z. 2D: x, y and z. */
+    DEMILL_TEMPLATE_PRINCIPAL_AXES = 5,
+    DEMILL_TEMPLATE_COUNT = 6              /**< 1 double: the number of spheres */
+};
+
+/** Clump fields, for demill_clump_get() and demill_clump_set(). */
+enum {
+    DEMILL_CLUMP_POSITION = 1,         /**< 3 doubles: the centre of mass, m; read/write */
+    /** 4 doubles (w, x, y, z): the unit quaternion that turns the body axes
+     *  (DEMILL_TEMPLATE_PRINCIPAL_AXES) onto the world's; read/write (a
+     *  written one is normalised; 2D: a turn about z, x = y = 0). */
+    DEMILL_CLUMP_ORIENTATION = 2,
+    DEMILL_CLUMP_VELOCITY = 3,         /**< 3 doubles: of the centre of mass, m/s; read/write */
+    DEMILL_CLUMP_ANGULAR_VELOCITY = 4, /**< 3 doubles, world frame, rad/s; read/write (2D: x = y = 0) */
+    DEMILL_CLUMP_ANGULAR_MOMENTUM = 5, /**< 3 doubles: about the centre of mass, world frame, kg m²/s; read-only */
+    DEMILL_CLUMP_FORCE = 6,            /**< 3 doubles: the total force (contacts and gravity) at the last force evaluation, N; read-only */
+    DEMILL_CLUMP_TORQUE = 7,           /**< 3 doubles: the total torque about the centre of mass at the last force evaluation, N m; read-only */
+    DEMILL_CLUMP_MASS = 8              /**< 1 double, kg; read-only */
+};
+
+/** The size of a template field.
+ *  @param field a DEMILL_TEMPLATE_* field.
+ *  @return the number of doubles of the field (1, 3 or 9), or 0 for an
+ *          unknown field. */
+DEMILL_API int32_t demill_clump_template_field_size(int32_t field);
+
+/** The size of a clump field.
+ *  @param field a DEMILL_CLUMP_* field.
+ *  @return the number of doubles of the field (1, 3 or 4), or 0 for an
+ *          unknown field. */
+DEMILL_API int32_t demill_clump_field_size(int32_t field);
+
+/** Adds a clump template: a rigid shape of n spheres (2D: discs, z = 0) of
+ *  one material, whose mass properties are those of the union of the
+ *  spheres (exact to round-off where no three spheres overlap pairwise,
+ *  else to 1e-13 of the spheres' volume times the shape's size to the
+ *  power of each moment). The material's density and, in 2D, the
+ *  world's disc thickness are read now: neither can change afterwards
+ *  (demill_material_set() and demill_world_set() refuse it). Templates are
+ *  never removed.
+ *  @param world    the world.
+ *  @param material the spheres' material.
+ *  @param n        the number of spheres, >= 1.
+ *  @param centres  3 n doubles: the spheres' centres, m, in any frame.
+ *  @param radii    n doubles: their radii, m, > 0.
+ *  @param[out] out receives the template's id (of kind
+ *                  DEMILL_KIND_TEMPLATE).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (material),
+ *          DEMILL_ERR_NULL_POINTER, DEMILL_ERR_NOT_FINITE (a centre or a
+ *          radius), DEMILL_ERR_INVALID_VALUE (n = 0, a radius <= 0, or a
+ *          mass or principal moment that is not finite and positive, nor
+ *          its inverse),
+ *          DEMILL_ERR_DIMENSION (a centre with z != 0 in a 2D world) or
+ *          DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_clump_template_add(demill_world *world, demill_id material,
+                                                   size_t n, const double *centres,
+                                                   const double *radii, demill_id *out);
+
+/** Reads a template field.
+ *  @param world    the world.
+ *  @param tmpl     the template's id.
+ *  @param field    a DEMILL_TEMPLATE_* field.
+ *  @param[out] out receives the field's doubles
+ *                  (demill_clump_template_field_size()).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY or
+ *          DEMILL_ERR_NULL_POINTER. */
+DEMILL_API demill_status demill_clump_template_get(const demill_world *world, demill_id tmpl,
+                                                   int32_t field, double *out);
+
+/** Adds a clump of a template at rest: its spheres become particles, at
+ *  x_i = position + R(orientation) b_i, b_i the sphere's place in the
+ *  principal frame. No overlap with what is already there is checked.
+ *  @param world       the world.
+ *  @param tmpl        the template's id.
+ *  @param position    3 doubles: the centre of mass, m (2D: z = 0).
+ *  @param orientation 4 doubles (w, x, y, z), normalised here; NULL: the
+ *                     identity, the body axes along x, y and z (2D: a turn
+ *                     about z, x = y = 0).
+ *  @param[out] out    receives the clump's id (of kind DEMILL_KIND_CLUMP).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (tmpl),
+ *          DEMILL_ERR_NULL_POINTER (position or out), DEMILL_ERR_NOT_FINITE,
+ *          DEMILL_ERR_INVALID_VALUE (an orientation of norm 0, or too many
+ *          particles), DEMILL_ERR_DIMENSION (2D: z != 0, or an orientation
+ *          that is not a turn about z) or DEMILL_ERR_OUT_OF_MEMORY. */
+DEMILL_API demill_status demill_clump_add(demill_world *world, demill_id tmpl,
+                                          const double position[3], const double orientation[4],
+                                          demill_id *out);
+
+/** Removes a clump and its members; their ids become invalid.
+ *  @param world the world.
+ *  @param clump the clump's id.
+ *  @return DEMILL_OK or DEMILL_ERR_INVALID_HANDLE. */
+DEMILL_API demill_status demill_clump_remove(demill_world *world, demill_id clump);
+
+/** Reads a clump field.
+ *  @param world    the world.
+ *  @param clump    the clump's id.
+ *  @param field    a DEMILL_CLUMP_* field.
+ *  @param[out] out receives the field's doubles (demill_clump_field_size()).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY or
+ *          DEMILL_ERR_NULL_POINTER. */
+DEMILL_API demill_status demill_clump_get(const demill_world *world, demill_id clump,
+                                          int32_t field, double *out);
+
+/** Writes a clump field, and moves its members with it: the position, the
+ *  orientation (the angular velocity is kept; the angular momentum
+ *  follows), the velocity or the angular velocity (the angular momentum
+ *  follows).
+ *  @param world the world.
+ *  @param clump the clump's id.
+ *  @param field DEMILL_CLUMP_POSITION, _ORIENTATION, _VELOCITY or
+ *               _ANGULAR_VELOCITY.
+ *  @param in    the field's doubles.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_UNKNOWN_KEY,
+ *          DEMILL_ERR_READ_ONLY, DEMILL_ERR_NULL_POINTER,
+ *          DEMILL_ERR_NOT_FINITE, DEMILL_ERR_INVALID_VALUE (an orientation
+ *          of norm 0) or DEMILL_ERR_DIMENSION (2D: a position or velocity
+ *          with z != 0, an angular velocity with x or y != 0, an
+ *          orientation that is not a turn about z). */
+DEMILL_API demill_status demill_clump_set(demill_world *world, demill_id clump, int32_t field,
+                                          const double *in);
+
+/** Lists a clump's members, the particles of its spheres, in the
+ *  template's order.
+ *  @param world    the world.
+ *  @param clump    the clump's id.
+ *  @param ids      capacity ids, or NULL to ask the count.
+ *  @param capacity ids the buffer holds.
+ *  @param count    receives the number of members (may be NULL if ids is
+ *                  not).
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE, DEMILL_ERR_NULL_POINTER
+ *          (ids and count both NULL) or DEMILL_ERR_BUFFER_TOO_SMALL
+ *          (nothing written, *count set). */
+DEMILL_API demill_status demill_clump_members(const demill_world *world, demill_id clump,
+                                              demill_id *ids, size_t capacity, size_t *count);
+
+/** The clump a particle belongs to (also the field DEMILL_PARTICLE_CLUMP of
+ *  demill_particles_read_ids()).
+ *  @param world     the world.
+ *  @param particle  a particle's id.
+ *  @param[out] clump receives its clump's id, DEMILL_ID_NONE for a particle
+ *                   of no clump.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE or DEMILL_ERR_NULL_POINTER. */
+DEMILL_API demill_status demill_particle_clump(const demill_world *world, demill_id particle,
+                                               demill_id *clump);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DEMILL_CLUMP_H */
