@@ -13,7 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "mill.h"
+#include "drum_plot.h"
 #include "run.h"
 #include "scene.h"
 
@@ -330,7 +330,7 @@ static int run_one(const run_args *a, char **summary)
         snprintf(path, sizeof path, "%s/scene", a->out);
         check(demill_vtk_series_open(w, path, &vtk), "demill_vtk_series_open");
     }
-    series rows = {0}; /* time, drum power */
+    series rows = {0}, turns = {0}; /* time, drum power; time, revolutions */
     double class_sum[SCENE_MAX_EDGES + 1] = {0}, class_now[SCENE_MAX_EDGES + 1];
     size_t class_samples = 0;
     double t_rev_start = NAN, t_rev_end = NAN;
@@ -380,6 +380,7 @@ static int run_one(const run_args *a, char **summary)
             if (!isnan(s.stop_revolutions) && rev >= s.stop_revolutions)
                 t_rev_end = t;
             series_add(&rows, t, drum_value(w, drum, DEMILL_DRUM_POWER));
+            series_add(&turns, t, rev);
             if (s.nedges && !isnan(t_rev_start)) {
                 power_by_class(w, drum, s.edges, s.nedges, class_now);
                 for (size_t k = 0; k <= s.nedges; k++)
@@ -497,20 +498,25 @@ static int run_one(const run_args *a, char **summary)
         snprintf(title, sizeof title, "libdemill %s: %zu particles, %.0f %% of critical, t = %.2f s, mean power %.2f W",
                  a->scene_path, n, 100 * omega / critical, t, mean_power);
         snprintf(path, sizeof path, "%s/charge.png", a->out);
-        if (s.charge_png && (drum_shape_read(w, drum, &shape) || draw_charge(path, w, &shape, title)))
+        if (s.charge_png && (drum_shape_read(w, drum, &shape) || draw_charge(path, w, &shape, title, "demill")))
             rc = -1;
         snprintf(path, sizeof path, "%s/power.png", a->out);
         if (s.power_png && rows.n < 2)
             fprintf(stderr, "demill: %zu sample of the power: no power.png\n", rows.n);
-        else if (!rc && s.power_png &&
-            draw_power(path, rows.a, rows.b, rows.n, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
-                       isnan(t_rev_end) ? t : t_rev_end))
-            rc = -1;
+        else if (!rc && s.power_png) {
+            const power_trace trace = {rows.a,     rows.b,     turns.b,
+                                       rows.n,     s.drum_start, mean_power,
+                                       isnan(t_rev_start) ? 0 : t_rev_start,
+                                       isnan(t_rev_end) ? t : t_rev_end};
+            if (draw_power(path, &trace, "demill"))
+                rc = -1;
+        }
     }
     printf("demill: done in %.1f s, t = %.4g s; results in %s/\n", now() - t_wall0, t, a->out);
     if (isfinite(mean_power))
         printf("        mean power over the last revolution %.4f W\n", mean_power);
     series_free(&rows);
+    series_free(&turns);
     series_free(&watched);
     demill_world_destroy(w);
     example_world = NULL;
