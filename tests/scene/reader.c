@@ -332,6 +332,18 @@ START_TEST(test_bad)
          NULL, "t.yaml:3: walls.0.plane: normal has zero length"},
         {"outputs: {columns: [drum.power]}\nstop: {time: 1}\n", NULL,
          "t.yaml:1: outputs.columns.0: a drum quantity without a drum"},
+        {"outputs: {columns: [outlet.0.mass]}\nstop: {time: 1}\n", NULL,
+         "t.yaml:1: outputs.columns.0: 'outlet.0.mass': the scene has 0 outlets"},
+        {"outputs: {columns: [outlet.0.weight]}\nstop: {time: 1}\n", NULL,
+         "t.yaml:1: outputs.columns.0: expected a world.* or drum.* quantity of the parameter "
+         "registry (e.g. world.time, drum.power), body.NAME.FIELD_x (FIELD position, velocity, "
+         "force_particles, force_spring, force_damper or force_external) or outlet.N.mass or "
+         "outlet.N.count, got 'outlet.0.weight'"},
+        {"outputs: {discharge: {outlet: 0, orifice_diameter: 0.04, bulk_region: {box: [0, 0, 0, 1, "
+         "1, 1]}}}\nstop: {time: 1}\n",
+         NULL,
+         "t.yaml:1: outputs.discharge.outlet: expected the index of one of the scene's 0 outlets, "
+         "got '0'"},
         {"materials: {m: {}}\nstop: {time: 1}\n", "materials.m.restitution=high",
          "--set materials.m.restitution: expected a number in [0, 1], got 'high'"},
         {"world: {}\nstop: {time: 1}\n", "world.gravity=[0, x, 0]",

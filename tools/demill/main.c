@@ -13,7 +13,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "discharge.h"
 #include "drum_plot.h"
+#include "plot.h"
 #include "run.h"
 #include "scene.h"
 
@@ -191,26 +193,8 @@ static int region_holds_any(demill_world *w, size_t n, int32_t kind, const doubl
     }
     check(demill_particles_read(w, DEMILL_PARTICLE_POSITION, x, n, &got), "positions");
     int any = 0;
-    for (size_t k = 0; k < got && !any; k++) {
-        const double *p = x + 3 * k;
-        if (kind == DEMILL_REGION_BOX) {
-            any = 1;
-            for (int j = 0; j < dim; j++)
-                any &= p[j] >= r[j] && p[j] <= r[3 + j];
-        } else { /* a cylinder: within the radius of the axis, between its ends */
-            double axis[3], d[3], len2 = 0, along = 0, off = 0;
-            for (int j = 0; j < 3; j++) {
-                axis[j] = r[3 + j] - r[j];
-                d[j] = p[j] - r[j];
-                len2 += axis[j] * axis[j];
-                along += d[j] * axis[j];
-            }
-            along /= len2;
-            for (int j = 0; j < 3; j++)
-                off += (d[j] - along * axis[j]) * (d[j] - along * axis[j]);
-            any = along >= 0 && along <= 1 && off <= r[6] * r[6];
-        }
-    }
+    for (size_t k = 0; k < got && !any; k++)
+        any = scene_region_contains(kind, r, dim, x + 3 * k);
     free(x);
     return any;
 }
@@ -339,6 +323,27 @@ static int run_one(const run_args *a, char **summary)
     if (turning && s.speed_set)
         check(demill_drum_set(w, drum, s.speed_key, s.speed_value), "the drum's speed");
     series watched = {0}; /* the steady stop's quantity */
+    /* outputs.discharge: time and the outlet's mass; time and the bed's
+     * solid fraction; the particles' mean diameter and density now */
+    series discharged = {0}, bulk = {0};
+    const scene_quantity out_mass = {.name = "outlet mass", .body = -1,
+                                     .outlet = s.discharge_outlet};
+    double mean_diameter = NAN, density = NAN;
+    if (s.discharge_on && n) {
+        size_t nm, nr;
+        double *m = plot_read_field(w, DEMILL_PARTICLE_MASS, &nm);
+        double *r = plot_read_field(w, DEMILL_PARTICLE_RADIUS, &nr);
+        double sd = 0, sm = 0, sv = 0;
+        for (size_t k = 0; m && r && k < nm && k < nr; k++) {
+            sd += 2 * r[k];
+            sm += m[k];
+            sv += 4.0 / 3.0 * PI * r[k] * r[k] * r[k];
+        }
+        mean_diameter = sd / (double)nr;
+        density = sm / sv;
+        free(m);
+        free(r);
+    }
     const size_t steady_win = s.steady_on ? (size_t)fmax(1, round(s.steady_window / s.every)) : 0;
     double emptied = NAN;
     uint64_t steps = 0;
@@ -390,6 +395,10 @@ static int run_one(const run_args *a, char **summary)
         }
         if (s.steady_on)
             series_add(&watched, t, quantity(&s, &s.steady));
+        if (s.discharge_on) {
+            series_add(&discharged, t, quantity(&s, &out_mass));
+            series_add(&bulk, t, discharge_solid_fraction(&s));
+        }
         if (csv) {
             for (size_t k = 0; k < s.ncol; k++)
                 fprintf(csv, "%s%.9g", k ? "," : "", quantity(&s, &s.col[k]) + 0.0);
@@ -479,6 +488,12 @@ static int run_one(const run_args *a, char **summary)
     }
     if (s.empty_kind)
         fprintf(sum, "emptied_s = %.6g\n", emptied);
+    int rc = 0;
+    if (s.discharge_on) {
+        const discharge_trace trace = {discharged.a, discharged.b, bulk.b, discharged.n,
+                                       mean_diameter, density};
+        rc = discharge_report(&s, &trace, sum, a->out);
+    }
     if (s.steady_on)
         fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
                 steady(&watched, steady_win, s.steady_tolerance) ? "yes" : "no",
@@ -491,7 +506,6 @@ static int run_one(const run_args *a, char **summary)
     fputs(text, f);
     output_close(f, "summary.txt");
 
-    int rc = 0;
     if (drum && (s.charge_png || s.power_png)) {
         drum_shape shape;
         char title[512];
@@ -518,6 +532,8 @@ static int run_one(const run_args *a, char **summary)
     series_free(&rows);
     series_free(&turns);
     series_free(&watched);
+    series_free(&discharged);
+    series_free(&bulk);
     demill_world_destroy(w);
     example_world = NULL;
     tree_free(doc);
