@@ -344,6 +344,9 @@ START_TEST(test_bad)
          NULL,
          "t.yaml:1: outputs.discharge.outlet: expected the index of one of the scene's 0 outlets, "
          "got '0'"},
+        {"outputs: {amplitude: {of: [world.time], window: 1}}\nstop: {steady: {quantity: "
+         "world.time, window: 1, tolerance: 1}}\n",
+         NULL, "t.yaml:2: stop: outputs.amplitude needs a stop.time (its window ends there)"},
         {"materials: {m: {}}\nstop: {time: 1}\n", "materials.m.restitution=high",
          "--set materials.m.restitution: expected a number in [0, 1], got 'high'"},
         {"world: {}\nstop: {time: 1}\n", "world.gravity=[0, x, 0]",

@@ -329,6 +329,12 @@ static int run_one(const run_args *a, char **summary)
     const scene_quantity out_mass = {.name = "outlet mass", .body = -1,
                                      .outlet = s.discharge_outlet};
     double mean_diameter = NAN, density = NAN;
+    /* outputs.amplitude: the least and largest values in its window */
+    double amp_lo[SCENE_MAX_COLUMNS], amp_hi[SCENE_MAX_COLUMNS];
+    for (size_t k = 0; k < s.namp; k++) {
+        amp_lo[k] = INFINITY;
+        amp_hi[k] = -INFINITY;
+    }
     if (s.discharge_on && n) {
         size_t nm, nr;
         double *m = plot_read_field(w, DEMILL_PARTICLE_MASS, &nm);
@@ -395,6 +401,11 @@ static int run_one(const run_args *a, char **summary)
         }
         if (s.steady_on)
             series_add(&watched, t, quantity(&s, &s.steady));
+        for (size_t k = 0; k < s.namp && t >= s.stop_time - s.amp_window - 0.5 * s.dt; k++) {
+            const double v = quantity(&s, &s.amp[k]);
+            amp_lo[k] = fmin(amp_lo[k], v);
+            amp_hi[k] = fmax(amp_hi[k], v);
+        }
         if (s.discharge_on) {
             series_add(&discharged, t, quantity(&s, &out_mass));
             series_add(&bulk, t, discharge_solid_fraction(&s));
@@ -488,6 +499,10 @@ static int run_one(const run_args *a, char **summary)
     }
     if (s.empty_kind)
         fprintf(sum, "emptied_s = %.6g\n", emptied);
+    for (size_t k = 0; k < s.namp; k++)
+        fprintf(sum, "amplitude_%s = %.6g\n", s.amp[k].name, 0.5 * (amp_hi[k] - amp_lo[k]));
+    if (s.namp)
+        fprintf(sum, "amplitude_window_s = %g\n", s.amp_window);
     int rc = 0;
     if (s.discharge_on) {
         const discharge_trace trace = {discharged.a, discharged.b, bulk.b, discharged.n,

@@ -1275,7 +1275,8 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
 
 static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
                                         "checkpoint_every", "pictures", "power_by_size",
-                                        "discharge"};
+                                        "discharge", "amplitude"};
+static const char *const k_amplitude[] = {"of", "window"};
 static const char *const k_discharge[] = {"outlet", "orifice_diameter", "half_angle",
                                           "stagnant_angle", "bulk_region"};
 
@@ -1330,10 +1331,11 @@ static int outputs_section(ctx *c, const tree *t)
     s->charge_png = s->power_png = 0;
     s->nedges = 0;
     s->discharge_on = 0;
+    s->namp = 0;
     if (!t)
         return 0;
     const tree *e;
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 8))
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 9))
         return -1;
     if ((e = tree_get(t, "every")) && positive(c, e, &s->every))
         return -1;
@@ -1385,6 +1387,19 @@ static int outputs_section(ctx *c, const tree *t)
         if (discharge_of(c, e))
             return -1;
     }
+    if ((e = tree_get(t, "amplitude"))) {
+        const tree *of, *win;
+        if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_amplitude, 2) ||
+            !(of = need(c, e, "of")) || !(win = need(c, e, "window")) ||
+            positive(c, win, &s->amp_window))
+            return -1;
+        if (of->kind != TREE_SEQ || of->n < 1 || of->n > SCENE_MAX_COLUMNS)
+            return fail(c, of, "expected a list of 1 to %d quantities", SCENE_MAX_COLUMNS);
+        for (size_t k = 0; k < of->n; k++)
+            if (quantity_of(c, of->kid[k], &s->amp[k]))
+                return -1;
+        s->namp = of->n;
+    }
     return 0;
 }
 
@@ -1433,6 +1448,8 @@ static int stop_section(ctx *c, const tree *t)
     }
     if (isnan(s->stop_time) && isnan(s->stop_revolutions) && !s->empty_kind && !s->steady_on)
         return fail(c, t, "expected time, revolutions, empty or steady");
+    if (s->namp && isnan(s->stop_time))
+        return fail(c, t, "outputs.amplitude needs a stop.time (its window ends there)");
     return 0;
 }
 
@@ -1545,6 +1562,7 @@ static const section sections[] = {
     {"outlets[]", KEYS(k_outlets)},
     {"outputs", KEYS(k_outputs)},
     {"outputs.discharge", KEYS(k_discharge)},
+    {"outputs.amplitude", KEYS(k_amplitude)},
     {"stop", KEYS(k_stop)},
     {"stop.steady", KEYS(k_steady)},
 };

@@ -69,6 +69,9 @@ typedef struct scene {
     int32_t bulk_kind;          /* where the bed's solid fraction is measured: DEMILL_REGION_BOX
                                    or _CYLINDER */
     double bulk_params[7];
+    size_t namp;                /* outputs.amplitude: half the peak-to-peak of these */
+    scene_quantity amp[SCENE_MAX_COLUMNS];
+    double amp_window;          /* over the last amp_window s before stop.time */
 } scene;
 
 /* What scene_build() does with the world. */
