@@ -4,7 +4,8 @@
 stops comes first) and must run to it, writing summary.txt whose
 simulated_s is that time or later by less than one sample (the run stops at
 a sample: outputs.every, at most 1 ms in these scenes), with particles in
-the world.
+the world; the progress bar of a scene without a drum shows no
+revolutions.
 
 usage: shipped.py DEMILL SCENES_DIR WORK_DIR"""
 
@@ -22,9 +23,13 @@ def main():
     assert names, f"no scene in {scenes}"
     for name in names:
         out = os.path.join(work, name[:-5])
-        subprocess.run([demill, "run", os.path.join(scenes, name), "--out", out,
-                        "--set", "stop={time: 0.002}", "--set", "outputs.vtk_every=0"],
-                       check=True, stdout=subprocess.DEVNULL)
+        with open(os.path.join(scenes, name)) as f:
+            has_drum = any(line.startswith("drum:") for line in f)
+        run = subprocess.run([demill, "run", os.path.join(scenes, name), "--out", out,
+                              "--set", "stop={time: 0.002}", "--set", "outputs.vtk_every=0"],
+                             check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                             text=True)
+        assert has_drum or "revolution" not in run.stderr, f"{name}: revolutions without a drum"
         s = {}
         with open(os.path.join(out, "summary.txt")) as f:
             for line in f:
