@@ -337,8 +337,8 @@ START_TEST(test_bad)
         {"outputs: {columns: [outlet.0.weight]}\nstop: {time: 1}\n", NULL,
          "t.yaml:1: outputs.columns.0: expected a world.* or drum.* quantity of the parameter "
          "registry (e.g. world.time, drum.power), body.NAME.FIELD_x (FIELD position, velocity, "
-         "force_particles, force_spring, force_damper or force_external) or outlet.N.mass or "
-         "outlet.N.count, got 'outlet.0.weight'"},
+         "force_particles, force_spring, force_damper or force_external), outlet.N.mass, "
+         "outlet.N.count or particles.centre_x, got 'outlet.0.weight'"},
         {"outputs: {discharge: {outlet: 0, orifice_diameter: 0.04, bulk_region: {box: [0, 0, 0, 1, "
          "1, 1]}}}\nstop: {time: 1}\n",
          NULL,

@@ -1201,8 +1201,9 @@ static int outlet_quantity(const char *n, int *index, int *count)
 }
 
 /* A quantity by name: a world.* or drum.* key of the registry,
- * body.NAME.FIELD_C (FIELD a body field, C x, y or z) or outlet.N.mass and
- * outlet.N.count (what outlets[N] has removed since it was made). */
+ * body.NAME.FIELD_C (FIELD a body field, C x, y or z), outlet.N.mass and
+ * outlet.N.count (what outlets[N] has removed since it was made) or
+ * particles.centre_C (the particles' centre of mass). */
 static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
 {
     *q = (scene_quantity){.body = -1, .outlet = -1};
@@ -1217,6 +1218,12 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
             return fail(c, n, "a drum quantity without a drum");
         if (q->key)
             return 0;
+        if (!strncmp(n->text, "particles.centre_", 17) && n->text[17] && !n->text[18] &&
+            strchr("xyz", n->text[17]) && n->text[17] - 'x' < c->s->dim) {
+            q->centre = 1;
+            q->comp = n->text[17] - 'x';
+            return 0;
+        }
         if (!outlet_quantity(n->text, &q->outlet, &q->outlet_count)) {
             const tree *o = tree_get(c->root, "outlets");
             if (c->mode == SCENE_RESTART)
@@ -1245,8 +1252,8 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
     }
     return fail(c, n, "expected a world.* or drum.* quantity of the parameter registry (e.g. "
                       "world.time, drum.power), body.NAME.FIELD_x (FIELD position, velocity, "
-                      "force_particles, force_spring, force_damper or force_external) or "
-                      "outlet.N.mass or outlet.N.count, got '%s'",
+                      "force_particles, force_spring, force_damper or force_external), "
+                      "outlet.N.mass, outlet.N.count or particles.centre_x, got '%s'",
                 kind_name(n));
 }
 
@@ -1256,6 +1263,27 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
         double v[3];
         const demill_status st = demill_body_get(s->w, s->body[q->body], q->field, v);
         *value = v[q->comp];
+        return st;
+    }
+    if (q->centre) {
+        double n, mx = 0, m = 0;
+        demill_status st = demill_world_get(s->w, DEMILL_WORLD_PARTICLE_COUNT, &n);
+        const size_t cap = st == DEMILL_OK && n > 0 ? (size_t)n : 1;
+        double *x = malloc(3 * cap * sizeof *x), *mass = malloc(cap * sizeof *mass);
+        size_t got = 0;
+        if (!x || !mass)
+            st = DEMILL_ERR_OUT_OF_MEMORY;
+        if (st == DEMILL_OK && n > 0)
+            st = demill_particles_read(s->w, DEMILL_PARTICLE_POSITION, x, cap, &got);
+        if (st == DEMILL_OK && n > 0)
+            st = demill_particles_read(s->w, DEMILL_PARTICLE_MASS, mass, cap, &got);
+        for (size_t k = 0; st == DEMILL_OK && k < got; k++) {
+            mx += mass[k] * x[3 * k + q->comp];
+            m += mass[k];
+        }
+        free(x);
+        free(mass);
+        *value = m > 0 ? mx / m : NAN;
         return st;
     }
     if (q->outlet >= 0) {

@@ -19,7 +19,8 @@
 
 /* A quantity of the time series or of a steady stop: a world or drum key
  * of the registry (key, body < 0, outlet < 0), a component of a body's
- * field, or the mass or count an outlet has removed. */
+ * field, the mass or count an outlet has removed, or a component of the
+ * particles' centre of mass. */
 typedef struct scene_quantity {
     const char *name;  /* as the scene gives it; points into the tree */
     int32_t key;       /* DEMILL_WORLD_* or DEMILL_DRUM_*, or 0 */
@@ -27,6 +28,7 @@ typedef struct scene_quantity {
     int32_t field;     /* DEMILL_BODY_* */
     int outlet;        /* the outlet's index, -1 for none */
     int outlet_count;  /* 1: the outlet's count of particles, 0: their mass */
+    int centre;        /* 1: a component (comp) of the particles' centre of mass */
 } scene_quantity;
 
 typedef struct scene {
