@@ -121,12 +121,14 @@ int32_t progress_show(void *user, uint64_t steps_done, uint64_t steps_total, dou
         bar[k] = k < filled ? '#' : '.';
     bar[30] = '\0';
     double angle = 0.0;
+    char turns[40] = ""; /* a scene without a drum has no revolutions to show */
     if (p->turning)
         demill_drum_get(p->w, p->drum, DEMILL_DRUM_ANGLE, &angle);
-    fprintf(stderr, "%s%s: [%s] %3.0f %%  t = %.3f s  revolution %.2f  %.2f M particle-steps/s"
-                    "  ETA %2d:%02d%s",
-            p->tty ? "\r" : "", example_program, bar, 100 * frac, time,
-            angle / (2 * 3.14159265358979323846), p->rate * p->particles / 1e6, (int)(eta / 60),
-            (int)fmod(eta, 60), p->tty ? "  " : "\n");
+    if (p->drum)
+        snprintf(turns, sizeof turns, "  revolution %.2f", angle / (2 * 3.14159265358979323846));
+    fprintf(stderr, "%s%s: [%s] %3.0f %%  t = %.3f s%s  %.2f M particle-steps/s  ETA %2d:%02d%s",
+            p->tty ? "\r" : "", example_program, bar, 100 * frac, time, turns,
+            p->rate * p->particles / 1e6, (int)(eta / 60), (int)fmod(eta, 60),
+            p->tty ? "  " : "\n");
     return 0;
 }

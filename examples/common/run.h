@@ -42,7 +42,8 @@ double now(void);
 /* The progress bar of a run, drawn by the library's progress callback
  * (demill_world_set_progress(), with progress_show() and the bar as its
  * user pointer): on a terminal a line that updates itself 4 times a second,
- * otherwise a line every 10 s, with the revolutions of a turning drum. The
+ * otherwise a line every 10 s, with the revolutions of the drum if there is
+ * one (drum not DEMILL_ID_NONE) and none shown otherwise. The
  * caller sets the fields; progress_show() keeps rate and last. */
 typedef struct progress_bar {
     demill_world *w;

@@ -21,6 +21,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "drum_plot.h"
 #include "mill.h"
 #include "run.h"
 
@@ -271,7 +272,7 @@ int main(int argc, char **argv)
     FILE *csv = output_open(o.out, "mill.csv");
     fprintf(csv, "time_s,torque_Nm,power_W,power_cm_W,kinetic_J,dissipated_J,toe_deg,"
                  "shoulder_deg,com_deg,revolutions\n");
-    series rows = {0}; /* time, power */
+    series rows = {0}, turns = {0}; /* time, power; time, revolutions */
     demill_vtk_series *series = NULL;
     if (vtk_steps) {
         snprintf(path, sizeof path, "%s/mill", o.out);
@@ -323,6 +324,7 @@ int main(int argc, char **argv)
                 drum_value(w, drum, DEMILL_DRUM_SHOULDER_ANGLE) * 180 / PI,
                 drum_value(w, drum, DEMILL_DRUM_COM_ANGLE) * 180 / PI, (unsigned long long)rev);
         series_add(&rows, t, power);
+        series_add(&turns, t, (double)rev);
         if (vtk_steps && steps % vtk_steps < sample) {
             check(demill_vtk_series_write(w, series), "demill_vtk_series_write");
             frame_step = steps;
@@ -349,11 +351,12 @@ int main(int argc, char **argv)
     snprintf(title, sizeof title, "libdemill %s mill, %dD: %zu balls, %.0f %% of critical, t = %.2f s, mean power %.2f W",
              o.scene, o.dim, n, o.speed, t, mean_power);
     snprintf(path, sizeof path, "%s/charge.png", o.out);
-    if (draw_charge(path, w, &shape, title))
+    if (draw_charge(path, w, &shape, title, "mill"))
         return EXIT_FAILURE;
     snprintf(path, sizeof path, "%s/power.png", o.out);
-    if (draw_power(path, rows.a, rows.b, rows.n, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
-                   isnan(t_rev_end) ? t : t_rev_end))
+    const power_trace trace = {rows.a, rows.b, turns.b, rows.n, settle, mean_power,
+                               isnan(t_rev_start) ? 0 : t_rev_start, isnan(t_rev_end) ? t : t_rev_end};
+    if (draw_power(path, &trace, "mill"))
         return EXIT_FAILURE;
     ore_result ground;
     if (o.ore) {
@@ -400,6 +403,7 @@ int main(int argc, char **argv)
            drum_value(w, drum, DEMILL_DRUM_TOE_ANGLE_MEAN) * 180 / PI,
            drum_value(w, drum, DEMILL_DRUM_SHOULDER_ANGLE_MEAN) * 180 / PI, o.out);
     series_free(&rows);
+    series_free(&turns);
     demill_world_destroy(w);
     return EXIT_SUCCESS;
 }

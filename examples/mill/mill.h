@@ -1,5 +1,6 @@
 /* mill.h: the parts of the mill example (mill.c: options and run; scene.c:
- * the canonical drums; output.c: pictures). */
+ * the canonical drums; output.c: the --ore picture; the charge and power
+ * pictures are examples/common/drum_plot.h). */
 #ifndef MILL_H
 #define MILL_H
 
@@ -36,25 +37,6 @@ typedef struct drum_geometry {
  * Tsuji damping, no force clamp, as LIGGGHTS without limitForce) and the
  * drum. 0, or -1 with a message on stderr. */
 int scene_world(const drum_geometry *g, demill_world **w, demill_id *steel, demill_id *drum);
-
-/* What the drawing needs of the drum. */
-typedef struct drum_shape {
-    int dim;
-    double radius, length, angle;
-    int nlifters;
-    double lifter_angle[64], lifter_height, lifter_width;
-} drum_shape;
-
-/* Reads what the drawing needs of the drum from the world: 0, or -1 with a
- * message on stderr. */
-int drum_shape_read(demill_world *w, demill_id drum, drum_shape *d);
-
-/* Pictures; each returns 0 or -1 (with a message on stderr). draw_power()
- * draws the power averaged over 10 samples, so that impacts do not hide the
- * trend. */
-int draw_charge(const char *path, demill_world *w, const drum_shape *d, const char *title);
-int draw_power(const char *path, const double *t, const double *p, size_t n, double mean,
-               double mean_from, double mean_to);
 
 /* The ore of --ore (ore.c): read from a file (docs/grinding.md, mill --ore). */
 #define ORE_MAX_FEED 32

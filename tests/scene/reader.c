@@ -332,6 +332,21 @@ START_TEST(test_bad)
          NULL, "t.yaml:3: walls.0.plane: normal has zero length"},
         {"outputs: {columns: [drum.power]}\nstop: {time: 1}\n", NULL,
          "t.yaml:1: outputs.columns.0: a drum quantity without a drum"},
+        {"outputs: {columns: [outlet.0.mass]}\nstop: {time: 1}\n", NULL,
+         "t.yaml:1: outputs.columns.0: 'outlet.0.mass': the scene has 0 outlets"},
+        {"outputs: {columns: [outlet.0.weight]}\nstop: {time: 1}\n", NULL,
+         "t.yaml:1: outputs.columns.0: expected a world.* or drum.* quantity of the parameter "
+         "registry (e.g. world.time, drum.power), body.NAME.FIELD_x (FIELD position, velocity, "
+         "force_particles, force_spring, force_damper or force_external), outlet.N.mass, "
+         "outlet.N.count or particles.centre_x, got 'outlet.0.weight'"},
+        {"outputs: {discharge: {outlet: 0, orifice_diameter: 0.04, bulk_region: {box: [0, 0, 0, 1, "
+         "1, 1]}}}\nstop: {time: 1}\n",
+         NULL,
+         "t.yaml:1: outputs.discharge.outlet: expected the index of one of the scene's 0 outlets, "
+         "got '0'"},
+        {"outputs: {amplitude: {of: [world.time], window: 1}}\nstop: {steady: {quantity: "
+         "world.time, window: 1, tolerance: 1}}\n",
+         NULL, "t.yaml:2: stop: outputs.amplitude needs a stop.time (its window ends there)"},
         {"materials: {m: {}}\nstop: {time: 1}\n", "materials.m.restitution=high",
          "--set materials.m.restitution: expected a number in [0, 1], got 'high'"},
         {"world: {}\nstop: {time: 1}\n", "world.gravity=[0, x, 0]",

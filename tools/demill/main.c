@@ -13,7 +13,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "mill.h"
+#include "discharge.h"
+#include "drum_plot.h"
+#include "plot.h"
 #include "run.h"
 #include "scene.h"
 
@@ -191,26 +193,8 @@ static int region_holds_any(demill_world *w, size_t n, int32_t kind, const doubl
     }
     check(demill_particles_read(w, DEMILL_PARTICLE_POSITION, x, n, &got), "positions");
     int any = 0;
-    for (size_t k = 0; k < got && !any; k++) {
-        const double *p = x + 3 * k;
-        if (kind == DEMILL_REGION_BOX) {
-            any = 1;
-            for (int j = 0; j < dim; j++)
-                any &= p[j] >= r[j] && p[j] <= r[3 + j];
-        } else { /* a cylinder: within the radius of the axis, between its ends */
-            double axis[3], d[3], len2 = 0, along = 0, off = 0;
-            for (int j = 0; j < 3; j++) {
-                axis[j] = r[3 + j] - r[j];
-                d[j] = p[j] - r[j];
-                len2 += axis[j] * axis[j];
-                along += d[j] * axis[j];
-            }
-            along /= len2;
-            for (int j = 0; j < 3; j++)
-                off += (d[j] - along * axis[j]) * (d[j] - along * axis[j]);
-            any = along >= 0 && along <= 1 && off <= r[6] * r[6];
-        }
-    }
+    for (size_t k = 0; k < got && !any; k++)
+        any = scene_region_contains(kind, r, dim, x + 3 * k);
     free(x);
     return any;
 }
@@ -330,7 +314,7 @@ static int run_one(const run_args *a, char **summary)
         snprintf(path, sizeof path, "%s/scene", a->out);
         check(demill_vtk_series_open(w, path, &vtk), "demill_vtk_series_open");
     }
-    series rows = {0}; /* time, drum power */
+    series rows = {0}, turns = {0}; /* time, drum power; time, revolutions */
     double class_sum[SCENE_MAX_EDGES + 1] = {0}, class_now[SCENE_MAX_EDGES + 1];
     size_t class_samples = 0;
     double t_rev_start = NAN, t_rev_end = NAN;
@@ -339,6 +323,33 @@ static int run_one(const run_args *a, char **summary)
     if (turning && s.speed_set)
         check(demill_drum_set(w, drum, s.speed_key, s.speed_value), "the drum's speed");
     series watched = {0}; /* the steady stop's quantity */
+    /* outputs.discharge: time and the outlet's mass; time and the bed's
+     * solid fraction; the particles' mean diameter and density now */
+    series discharged = {0}, bulk = {0};
+    const scene_quantity out_mass = {.name = "outlet mass", .body = -1,
+                                     .outlet = s.discharge_outlet};
+    double mean_diameter = NAN, density = NAN;
+    /* outputs.amplitude: the least and largest values in its window */
+    double amp_lo[SCENE_MAX_COLUMNS], amp_hi[SCENE_MAX_COLUMNS];
+    for (size_t k = 0; k < s.namp; k++) {
+        amp_lo[k] = INFINITY;
+        amp_hi[k] = -INFINITY;
+    }
+    if (s.discharge_on && n) {
+        size_t nm, nr;
+        double *m = plot_read_field(w, DEMILL_PARTICLE_MASS, &nm);
+        double *r = plot_read_field(w, DEMILL_PARTICLE_RADIUS, &nr);
+        double sd = 0, sm = 0, sv = 0;
+        for (size_t k = 0; m && r && k < nm && k < nr; k++) {
+            sd += 2 * r[k];
+            sm += m[k];
+            sv += 4.0 / 3.0 * PI * r[k] * r[k] * r[k];
+        }
+        mean_diameter = sd / (double)nr;
+        density = sm / sv;
+        free(m);
+        free(r);
+    }
     const size_t steady_win = s.steady_on ? (size_t)fmax(1, round(s.steady_window / s.every)) : 0;
     double emptied = NAN;
     uint64_t steps = 0;
@@ -380,6 +391,7 @@ static int run_one(const run_args *a, char **summary)
             if (!isnan(s.stop_revolutions) && rev >= s.stop_revolutions)
                 t_rev_end = t;
             series_add(&rows, t, drum_value(w, drum, DEMILL_DRUM_POWER));
+            series_add(&turns, t, rev);
             if (s.nedges && !isnan(t_rev_start)) {
                 power_by_class(w, drum, s.edges, s.nedges, class_now);
                 for (size_t k = 0; k <= s.nedges; k++)
@@ -389,6 +401,15 @@ static int run_one(const run_args *a, char **summary)
         }
         if (s.steady_on)
             series_add(&watched, t, quantity(&s, &s.steady));
+        for (size_t k = 0; k < s.namp && t >= s.stop_time - s.amp_window - 0.5 * s.dt; k++) {
+            const double v = quantity(&s, &s.amp[k]);
+            amp_lo[k] = fmin(amp_lo[k], v);
+            amp_hi[k] = fmax(amp_hi[k], v);
+        }
+        if (s.discharge_on) {
+            series_add(&discharged, t, quantity(&s, &out_mass));
+            series_add(&bulk, t, discharge_solid_fraction(&s));
+        }
         if (csv) {
             for (size_t k = 0; k < s.ncol; k++)
                 fprintf(csv, "%s%.9g", k ? "," : "", quantity(&s, &s.col[k]) + 0.0);
@@ -478,6 +499,16 @@ static int run_one(const run_args *a, char **summary)
     }
     if (s.empty_kind)
         fprintf(sum, "emptied_s = %.6g\n", emptied);
+    for (size_t k = 0; k < s.namp; k++)
+        fprintf(sum, "amplitude_%s = %.6g\n", s.amp[k].name, 0.5 * (amp_hi[k] - amp_lo[k]));
+    if (s.namp)
+        fprintf(sum, "amplitude_window_s = %g\n", s.amp_window);
+    int rc = 0;
+    if (s.discharge_on) {
+        const discharge_trace trace = {discharged.a, discharged.b, bulk.b, discharged.n,
+                                       mean_diameter, density};
+        rc = discharge_report(&s, &trace, sum, a->out);
+    }
     if (s.steady_on)
         fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
                 steady(&watched, steady_win, s.steady_tolerance) ? "yes" : "no",
@@ -490,28 +521,34 @@ static int run_one(const run_args *a, char **summary)
     fputs(text, f);
     output_close(f, "summary.txt");
 
-    int rc = 0;
     if (drum && (s.charge_png || s.power_png)) {
         drum_shape shape;
         char title[512];
         snprintf(title, sizeof title, "libdemill %s: %zu particles, %.0f %% of critical, t = %.2f s, mean power %.2f W",
                  a->scene_path, n, 100 * omega / critical, t, mean_power);
         snprintf(path, sizeof path, "%s/charge.png", a->out);
-        if (s.charge_png && (drum_shape_read(w, drum, &shape) || draw_charge(path, w, &shape, title)))
+        if (s.charge_png && (drum_shape_read(w, drum, &shape) || draw_charge(path, w, &shape, title, "demill")))
             rc = -1;
         snprintf(path, sizeof path, "%s/power.png", a->out);
         if (s.power_png && rows.n < 2)
             fprintf(stderr, "demill: %zu sample of the power: no power.png\n", rows.n);
-        else if (!rc && s.power_png &&
-            draw_power(path, rows.a, rows.b, rows.n, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
-                       isnan(t_rev_end) ? t : t_rev_end))
-            rc = -1;
+        else if (!rc && s.power_png) {
+            const power_trace trace = {rows.a,     rows.b,     turns.b,
+                                       rows.n,     s.drum_start, mean_power,
+                                       isnan(t_rev_start) ? 0 : t_rev_start,
+                                       isnan(t_rev_end) ? t : t_rev_end};
+            if (draw_power(path, &trace, "demill"))
+                rc = -1;
+        }
     }
     printf("demill: done in %.1f s, t = %.4g s; results in %s/\n", now() - t_wall0, t, a->out);
     if (isfinite(mean_power))
         printf("        mean power over the last revolution %.4f W\n", mean_power);
     series_free(&rows);
+    series_free(&turns);
     series_free(&watched);
+    series_free(&discharged);
+    series_free(&bulk);
     demill_world_destroy(w);
     example_world = NULL;
     tree_free(doc);

@@ -4,6 +4,7 @@
  * the headers give each group), so that a key the library adds is a scene
  * key at once; the other sections are described here. */
 #define _POSIX_C_SOURCE 200809L /* strtok_r */
+#include <ctype.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -13,6 +14,7 @@
 #include "scene.h"
 
 #define MAX_NAMES 128
+#define PI 3.14159265358979323846
 
 typedef struct ctx {
     scene *s;
@@ -611,6 +613,28 @@ static int region_of(ctx *c, const tree *t, int half, int32_t *kind, double *par
     return numbers(c, t->kid[0], *np, *np, params, NULL);
 }
 
+int scene_region_contains(int32_t kind, const double *r, int dim, const double p[3])
+{
+    if (kind == DEMILL_REGION_BOX) {
+        int in = 1;
+        for (int j = 0; j < dim; j++)
+            in &= p[j] >= r[j] && p[j] <= r[3 + j];
+        return in;
+    }
+    /* a cylinder: within the radius of the axis, between its ends */
+    double axis[3], d[3], len2 = 0, along = 0, off = 0;
+    for (int j = 0; j < 3; j++) {
+        axis[j] = r[3 + j] - r[j];
+        d[j] = p[j] - r[j];
+        len2 += axis[j] * axis[j];
+        along += d[j] * axis[j];
+    }
+    along /= len2;
+    for (int j = 0; j < 3; j++)
+        off += (d[j] - along * axis[j]) * (d[j] - along * axis[j]);
+    return along >= 0 && along <= 1 && off <= r[6] * r[6];
+}
+
 /* A CSV file of particles: a header naming the columns (x, y, z, radius,
  * vx, vy, vz; z and the velocities optional), then one particle a row. */
 static int csv_particles(ctx *c, const tree *n, demill_id mat)
@@ -1161,11 +1185,28 @@ static const struct {
                    {"force_damper", DEMILL_BODY_FORCE_DAMPER},
                    {"force_external", DEMILL_BODY_FORCE_EXTERNAL}};
 
-/* A quantity by name: a world.* or drum.* key of the registry, or
- * body.NAME.FIELD_C (FIELD a body field, C x, y or z). */
+/* outlet.N.mass or outlet.N.count: N's index into outlets[] in *index
+ * and 1 for count in *count; 0 if n names one, else -1. */
+static int outlet_quantity(const char *n, int *index, int *count)
+{
+    char *end;
+    if (strncmp(n, "outlet.", 7) || !isdigit((unsigned char)n[7]))
+        return -1;
+    const long k = strtol(n + 7, &end, 10);
+    if (k >= SCENE_MAX_OUTLETS || (strcmp(end, ".mass") && strcmp(end, ".count")))
+        return -1;
+    *index = (int)k;
+    *count = !strcmp(end, ".count");
+    return 0;
+}
+
+/* A quantity by name: a world.* or drum.* key of the registry,
+ * body.NAME.FIELD_C (FIELD a body field, C x, y or z), outlet.N.mass and
+ * outlet.N.count (what outlets[N] has removed since it was made) or
+ * particles.centre_C (the particles' centre of mass). */
 static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
 {
-    *q = (scene_quantity){.body = -1};
+    *q = (scene_quantity){.body = -1, .outlet = -1};
     if (n->kind == TREE_SCALAR) {
         q->name = n->text;
         for (int32_t k = 100; k < 500 && !q->key; k++) {
@@ -1177,6 +1218,22 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
             return fail(c, n, "a drum quantity without a drum");
         if (q->key)
             return 0;
+        if (!strncmp(n->text, "particles.centre_", 17) && n->text[17] && !n->text[18] &&
+            strchr("xyz", n->text[17]) && n->text[17] - 'x' < c->s->dim) {
+            q->centre = 1;
+            q->comp = n->text[17] - 'x';
+            return 0;
+        }
+        if (!outlet_quantity(n->text, &q->outlet, &q->outlet_count)) {
+            const tree *o = tree_get(c->root, "outlets");
+            if (c->mode == SCENE_RESTART)
+                return fail(c, n, "an outlet's quantity on a restart (the checkpoint's outlets "
+                                  "are not the scene's)");
+            if (!o || o->kind != TREE_SEQ || (size_t)q->outlet >= o->n)
+                return fail(c, n, "'%s': the scene has %zu outlets", n->text,
+                            o && o->kind == TREE_SEQ ? o->n : 0);
+            return 0;
+        }
         const char *dot = strrchr(n->text, '.'), *under = dot ? strrchr(dot, '_') : NULL;
         if (!strncmp(n->text, "body.", 5) && dot > n->text + 5 && under && under[1] &&
             !under[2] && strchr("xyz", under[1])) {
@@ -1194,8 +1251,9 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
         }
     }
     return fail(c, n, "expected a world.* or drum.* quantity of the parameter registry (e.g. "
-                      "world.time, drum.power) or body.NAME.FIELD_x (FIELD position, velocity, "
-                      "force_particles, force_spring, force_damper or force_external), got '%s'",
+                      "world.time, drum.power), body.NAME.FIELD_x (FIELD position, velocity, "
+                      "force_particles, force_spring, force_damper or force_external), "
+                      "outlet.N.mass, outlet.N.count or particles.centre_x, got '%s'",
                 kind_name(n));
 }
 
@@ -1207,12 +1265,88 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
         *value = v[q->comp];
         return st;
     }
+    if (q->centre) {
+        double n, mx = 0, m = 0;
+        demill_status st = demill_world_get(s->w, DEMILL_WORLD_PARTICLE_COUNT, &n);
+        const size_t cap = st == DEMILL_OK && n > 0 ? (size_t)n : 1;
+        double *x = malloc(3 * cap * sizeof *x), *mass = malloc(cap * sizeof *mass);
+        size_t got = 0;
+        if (!x || !mass)
+            st = DEMILL_ERR_OUT_OF_MEMORY;
+        if (st == DEMILL_OK && n > 0)
+            st = demill_particles_read(s->w, DEMILL_PARTICLE_POSITION, x, cap, &got);
+        if (st == DEMILL_OK && n > 0)
+            st = demill_particles_read(s->w, DEMILL_PARTICLE_MASS, mass, cap, &got);
+        for (size_t k = 0; st == DEMILL_OK && k < got; k++) {
+            mx += mass[k] * x[3 * k + q->comp];
+            m += mass[k];
+        }
+        free(x);
+        free(mass);
+        *value = m > 0 ? mx / m : NAN;
+        return st;
+    }
+    if (q->outlet >= 0) {
+        uint64_t counts[32];
+        double masses[32];
+        size_t nc;
+        const demill_status st =
+            demill_outlet_read(s->w, s->outlet[q->outlet], counts, masses, 32, &nc, NULL);
+        *value = 0;
+        for (size_t k = 0; st == DEMILL_OK && k < nc; k++)
+            *value += q->outlet_count ? (double)counts[k] : masses[k];
+        return st;
+    }
     return q->key < 400 ? demill_world_get(s->w, q->key, value)
                         : demill_drum_get(s->w, s->drum, q->key, value);
 }
 
 static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
-                                        "checkpoint_every", "pictures", "power_by_size"};
+                                        "checkpoint_every", "pictures", "power_by_size",
+                                        "discharge", "amplitude"};
+static const char *const k_amplitude[] = {"of", "window"};
+static const char *const k_discharge[] = {"outlet", "orifice_diameter", "half_angle",
+                                          "stagnant_angle", "bulk_region"};
+
+/* outputs.discharge: the outlet whose discharge rate is measured, the
+ * orifice, the hopper's half-angle and a flat bottom's stagnant-zone angle
+ * (degrees) for Beverloo's correlation with Rose and Tanaka's factor, and
+ * where the bed's solid fraction is measured. */
+static int discharge_of(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    const tree *e, *o = tree_get(c->root, "outlets");
+    double index, deg;
+    size_t np;
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_discharge, 5))
+        return -1;
+    if (s->dim != 3)
+        return fail(c, t, "the discharge against Beverloo's correlation is for 3D scenes");
+    if (!(e = need(c, t, "outlet")) || number(c, e, 0, SCENE_MAX_OUTLETS - 1, &index))
+        return -1;
+    if (index != floor(index) || !o || o->kind != TREE_SEQ || index >= (double)o->n)
+        return fail(c, e, "expected the index of one of the scene's %zu outlets, got '%s'",
+                    o && o->kind == TREE_SEQ ? o->n : 0, e->text);
+    s->discharge_outlet = (int)index;
+    if (!(e = need(c, t, "orifice_diameter")) || positive(c, e, &s->orifice))
+        return -1;
+    s->half_angle = s->stagnant_angle = 0.5 * PI;
+    if ((e = tree_get(t, "half_angle"))) {
+        if (number(c, e, 1, 90, &deg))
+            return -1;
+        s->half_angle = deg * PI / 180;
+    }
+    deg = 45;
+    if ((e = tree_get(t, "stagnant_angle")) && number(c, e, 1, 89, &deg))
+        return -1;
+    s->stagnant_angle = deg * PI / 180;
+    if (!(e = need(c, t, "bulk_region")) || region_of(c, e, 0, &s->bulk_kind, s->bulk_params, &np))
+        return -1;
+    if (s->bulk_kind == DEMILL_REGION_DRUM)
+        return fail(c, e, "expected a box or a cylinder");
+    s->discharge_on = 1;
+    return 0;
+}
 
 static int outputs_section(ctx *c, const tree *t)
 {
@@ -1224,10 +1358,12 @@ static int outputs_section(ctx *c, const tree *t)
     s->vtk_every = s->checkpoint_every = 0;
     s->charge_png = s->power_png = 0;
     s->nedges = 0;
+    s->discharge_on = 0;
+    s->namp = 0;
     if (!t)
         return 0;
     const tree *e;
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 7))
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 9))
         return -1;
     if ((e = tree_get(t, "every")) && positive(c, e, &s->every))
         return -1;
@@ -1272,6 +1408,25 @@ static int outputs_section(ctx *c, const tree *t)
             if (!(s->edges[k] > (k ? s->edges[k - 1] : 0)))
                 return fail(c, e->kid[k], "expected increasing diameters > 0, got '%s'",
                             e->kid[k]->text);
+    }
+    if ((e = tree_get(t, "discharge"))) {
+        if (c->mode == SCENE_RESTART)
+            return fail(c, e, "the discharge is measured from a scene's start, not on a restart");
+        if (discharge_of(c, e))
+            return -1;
+    }
+    if ((e = tree_get(t, "amplitude"))) {
+        const tree *of, *win;
+        if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_amplitude, 2) ||
+            !(of = need(c, e, "of")) || !(win = need(c, e, "window")) ||
+            positive(c, win, &s->amp_window))
+            return -1;
+        if (of->kind != TREE_SEQ || of->n < 1 || of->n > SCENE_MAX_COLUMNS)
+            return fail(c, of, "expected a list of 1 to %d quantities", SCENE_MAX_COLUMNS);
+        for (size_t k = 0; k < of->n; k++)
+            if (quantity_of(c, of->kid[k], &s->amp[k]))
+                return -1;
+        s->namp = of->n;
     }
     return 0;
 }
@@ -1321,6 +1476,8 @@ static int stop_section(ctx *c, const tree *t)
     }
     if (isnan(s->stop_time) && isnan(s->stop_revolutions) && !s->empty_kind && !s->steady_on)
         return fail(c, t, "expected time, revolutions, empty or steady");
+    if (s->namp && isnan(s->stop_time))
+        return fail(c, t, "outputs.amplitude needs a stop.time (its window ends there)");
     return 0;
 }
 
@@ -1413,7 +1570,9 @@ static const section sections[] = {
     {"drum.parts", KEYS(k_parts)},
     {"particles[]", KEYS(k_particles)},
     {"particles[].sizes, feeds[].sizes", KEYS(k_sizes)},
-    {"particles[].region, feeds[].region, outlets[].region, stop.empty", KEYS(k_region)},
+    {"particles[].region, feeds[].region, outlets[].region, stop.empty, "
+     "outputs.discharge.bulk_region",
+     KEYS(k_region)},
     {"bodies.NAME", KEYS(k_bodies)},
     {"bodies.NAME.springs[]", KEYS(k_spring)},
     {"bodies.NAME.force", KEYS(k_force)},
@@ -1430,6 +1589,8 @@ static const section sections[] = {
     {"feeds[]", KEYS(k_feeds)},
     {"outlets[]", KEYS(k_outlets)},
     {"outputs", KEYS(k_outputs)},
+    {"outputs.discharge", KEYS(k_discharge)},
+    {"outputs.amplitude", KEYS(k_amplitude)},
     {"stop", KEYS(k_stop)},
     {"stop.steady", KEYS(k_steady)},
 };

@@ -18,12 +18,17 @@
 #define SCENE_MAX_BODIES 64
 
 /* A quantity of the time series or of a steady stop: a world or drum key
- * of the registry (key, body < 0), or a component of a body's field. */
+ * of the registry (key, body < 0, outlet < 0), a component of a body's
+ * field, the mass or count an outlet has removed, or a component of the
+ * particles' centre of mass. */
 typedef struct scene_quantity {
     const char *name;  /* as the scene gives it; points into the tree */
     int32_t key;       /* DEMILL_WORLD_* or DEMILL_DRUM_*, or 0 */
     int body, comp;    /* the body's index, -1 for none; the component 0-2 */
     int32_t field;     /* DEMILL_BODY_* */
+    int outlet;        /* the outlet's index, -1 for none */
+    int outlet_count;  /* 1: the outlet's count of particles, 0: their mass */
+    int centre;        /* 1: a component (comp) of the particles' centre of mass */
 } scene_quantity;
 
 typedef struct scene {
@@ -58,6 +63,17 @@ typedef struct scene {
     int charge_png, power_png;
     size_t nedges;              /* power by size class: nedges + 1 classes */
     double edges[SCENE_MAX_EDGES];
+    int discharge_on;           /* outputs.discharge: an outlet's rate against Beverloo's */
+    int discharge_outlet;       /* the outlet's index */
+    double orifice;             /* the orifice's diameter, m */
+    double half_angle;          /* the hopper's half-angle from the vertical, rad (pi/2: flat) */
+    double stagnant_angle;      /* a flat bottom's stagnant zone to the horizontal, rad */
+    int32_t bulk_kind;          /* where the bed's solid fraction is measured: DEMILL_REGION_BOX
+                                   or _CYLINDER */
+    double bulk_params[7];
+    size_t namp;                /* outputs.amplitude: half the peak-to-peak of these */
+    scene_quantity amp[SCENE_MAX_COLUMNS];
+    double amp_window;          /* over the last amp_window s before stop.time */
 } scene;
 
 /* What scene_build() does with the world. */
@@ -69,6 +85,11 @@ enum {
     SCENE_RESTART = 2  /* s->w holds a loaded checkpoint: map the file's names to its ids and
                           apply only the entries set on the command line (--set) */
 };
+
+/* Whether the point p is inside the region of kind DEMILL_REGION_BOX (its
+ * dim first coordinates) or DEMILL_REGION_CYLINDER with parameters r (as
+ * stop.empty and outputs.discharge.bulk_region give them). */
+int scene_region_contains(int32_t kind, const double *r, int dim, const double p[3]);
 
 /* Checks the scene `root` (read from a file in folder `dir`, against which
  * its relative paths are taken) and builds it: 0, or -1 with a message
