@@ -2,6 +2,7 @@
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -99,4 +100,33 @@ void series_free(series *s)
     free(s->a);
     free(s->b);
     *s = (series){0};
+}
+
+int32_t progress_show(void *user, uint64_t steps_done, uint64_t steps_total, double time,
+                      double steps_per_second)
+{
+    progress_bar *p = user;
+    (void)steps_total;
+    p->rate = p->rate > 0 ? 0.9 * p->rate + 0.1 * steps_per_second : steps_per_second;
+    const double t_wall = now();
+    if (t_wall - p->last < p->every)
+        return 0;
+    p->last = t_wall;
+    const uint64_t done = p->done + steps_done, left = done < p->total ? p->total - done : 0;
+    const double frac = (double)(p->total - left) / p->total;
+    const double eta = p->rate > 0 ? left / p->rate : 0;
+    char bar[31];
+    const int filled = (int)(frac * 30);
+    for (int k = 0; k < 30; k++)
+        bar[k] = k < filled ? '#' : '.';
+    bar[30] = '\0';
+    double angle = 0.0;
+    if (p->turning)
+        demill_drum_get(p->w, p->drum, DEMILL_DRUM_ANGLE, &angle);
+    fprintf(stderr, "%s%s: [%s] %3.0f %%  t = %.3f s  revolution %.2f  %.2f M particle-steps/s"
+                    "  ETA %2d:%02d%s",
+            p->tty ? "\r" : "", example_program, bar, 100 * frac, time,
+            angle / (2 * 3.14159265358979323846), p->rate * p->particles / 1e6, (int)(eta / 60),
+            (int)fmod(eta, 60), p->tty ? "  " : "\n");
+    return 0;
 }

@@ -1,10 +1,11 @@
 /* run.h: what the example programs share besides pictures (plot.h): their
  * messages' prefix, numbers from the command line, a check of every library
- * call, the wall clock and a growing time series. */
+ * call, the wall clock, the progress bar and a growing time series. */
 #ifndef RUN_H
 #define RUN_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include <demill.h>
@@ -37,6 +38,26 @@ void output_close(FILE *f, const char *name);
 
 /* The monotonic wall clock, s. */
 double now(void);
+
+/* The progress bar of a run, drawn by the library's progress callback
+ * (demill_world_set_progress(), with progress_show() and the bar as its
+ * user pointer): on a terminal a line that updates itself 4 times a second,
+ * otherwise a line every 10 s, with the revolutions of a turning drum. The
+ * caller sets the fields; progress_show() keeps rate and last. */
+typedef struct progress_bar {
+    demill_world *w;
+    demill_id drum;
+    uint64_t done, total; /* steps of the whole run: before this call, all */
+    size_t particles;
+    double rate;          /* steps per second, smoothed */
+    double last, every;   /* wall time of the last line, s; and between lines */
+    int tty, turning;
+} progress_bar;
+
+/* The callback: draws the bar `user` (a progress_bar) if it is time to;
+ * returns 0 (never stops the run). */
+int32_t progress_show(void *user, uint64_t steps_done, uint64_t steps_total, double time,
+                      double steps_per_second);
 
 /* A time series of two columns that grows as rows are added. */
 typedef struct series {

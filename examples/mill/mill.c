@@ -182,61 +182,6 @@ static double world_energy(demill_world *w, int term)
     return v;
 }
 
-static void drum_shape_of(demill_world *w, demill_id drum, const options *o, drum_shape *s)
-{
-    s->dim = o->dim;
-    s->radius = 0.5 * o->diameter;
-    s->length = o->length;
-    s->angle = drum_value(w, drum, DEMILL_DRUM_ANGLE);
-    s->nlifters = o->lifters;
-    s->lifter_height = s->lifter_width = o->lifter_height;
-    for (int k = 0; k < o->lifters; k++)
-        check(demill_drum_lifter_get(w, drum, (uint32_t)k, DEMILL_LIFTER_ANGLE, &s->lifter_angle[k]),
-              "demill_drum_lifter_get");
-}
-
-/* The progress bar, drawn by the library's progress callback after each
- * call of demill_world_step(): on a terminal a line that updates itself
- * 4 times a second, otherwise a line every 10 s. */
-typedef struct progress {
-    demill_world *w;
-    demill_id drum;
-    uint64_t done, total; /* steps of the whole run: before this call, all */
-    size_t particles;
-    double rate;          /* steps per second, smoothed */
-    double last, every;   /* wall time of the last line, s; and between lines */
-    int tty, turning;
-} progress;
-
-static int32_t show_progress(void *user, uint64_t steps_done, uint64_t steps_total, double time,
-                             double steps_per_second)
-{
-    progress *p = user;
-    (void)steps_total;
-    p->rate = p->rate > 0 ? 0.9 * p->rate + 0.1 * steps_per_second : steps_per_second;
-    const double t_wall = now();
-    if (t_wall - p->last < p->every)
-        return 0;
-    p->last = t_wall;
-    const uint64_t done = p->done + steps_done, left = done < p->total ? p->total - done : 0;
-    const double frac = (double)(p->total - left) / p->total;
-    const double eta = p->rate > 0 ? left / p->rate : 0;
-    char bar[31];
-    const int filled = (int)(frac * 30);
-    for (int k = 0; k < 30; k++)
-        bar[k] = k < filled ? '#' : '.';
-    bar[30] = '\0';
-    double angle = 0.0;
-    if (p->turning)
-        demill_drum_get(p->w, p->drum, DEMILL_DRUM_ANGLE, &angle);
-    fprintf(stderr, "%smill: [%s] %3.0f %%  t = %.3f s  revolution %.2f  %.2f M particle-steps/s"
-                    "  ETA %2d:%02d%s",
-            p->tty ? "\r" : "", bar, 100 * frac, time, angle / (2 * PI),
-            p->rate * p->particles / 1e6, (int)(eta / 60), (int)fmod(eta, 60),
-            p->tty ? "  " : "\n");
-    return 0;
-}
-
 int main(int argc, char **argv)
 {
     example_program = "mill";
@@ -338,9 +283,9 @@ int main(int argc, char **argv)
     int contact_samples = 0, turning = 0;
     const double t_step0 = now();
     const int tty = isatty(fileno(stderr));
-    progress bar = {.w = w, .drum = drum, .total = total_steps, .particles = n + n_ore,
+    progress_bar bar = {.w = w, .drum = drum, .total = total_steps, .particles = n + n_ore,
                     .last = t_step0, .every = tty ? 0.25 : 10.0, .tty = tty};
-    check(demill_world_set_progress(w, show_progress, &bar, sample), "demill_world_set_progress");
+    check(demill_world_set_progress(w, progress_show, &bar, sample), "demill_world_set_progress");
     while (period > 0 ? drum_value(w, drum, DEMILL_DRUM_REVOLUTIONS) < o.revolutions
                       : t < total_time) {
         if (!turning && t >= settle - 0.5 * o.dt) {
@@ -387,7 +332,7 @@ int main(int argc, char **argv)
     check(demill_world_set_progress(w, NULL, NULL, 0), "demill_world_set_progress");
     bar.total = steps; /* the last line: 100 % */
     bar.last = -INFINITY;
-    show_progress(&bar, 0, 0, t, bar.rate);
+    progress_show(&bar, 0, 0, t, bar.rate);
     if (tty)
         fputc('\n', stderr);
     output_close(csv, "mill.csv");
@@ -397,7 +342,8 @@ int main(int argc, char **argv)
 
     /* pictures, series, summary */
     drum_shape shape;
-    drum_shape_of(w, drum, &o, &shape);
+    if (drum_shape_read(w, drum, &shape))
+        return EXIT_FAILURE;
     const double mean_power = drum_value(w, drum, DEMILL_DRUM_POWER_MEAN);
     char title[256];
     snprintf(title, sizeof title, "libdemill %s mill, %dD: %zu balls, %.0f %% of critical, t = %.2f s, mean power %.2f W",
@@ -405,16 +351,8 @@ int main(int argc, char **argv)
     snprintf(path, sizeof path, "%s/charge.png", o.out);
     if (draw_charge(path, w, &shape, title))
         return EXIT_FAILURE;
-    /* the power against time, averaged over 10 ms so that impacts do not hide
-     * the trend */
-    const size_t win = 10;
-    double *smooth = malloc((rows.n ? rows.n : 1) * sizeof *smooth), acc = 0;
-    for (size_t k = 0; k < rows.n; k++) {
-        acc += rows.b[k] - (k >= win ? rows.b[k - win] : 0);
-        smooth[k] = acc / (k + 1 < win ? k + 1 : win);
-    }
     snprintf(path, sizeof path, "%s/power.png", o.out);
-    if (draw_power(path, rows.a, smooth, rows.n, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
+    if (draw_power(path, rows.a, rows.b, rows.n, mean_power, isnan(t_rev_start) ? 0 : t_rev_start,
                    isnan(t_rev_end) ? t : t_rev_end))
         return EXIT_FAILURE;
     ore_result ground;
@@ -462,7 +400,6 @@ int main(int argc, char **argv)
            drum_value(w, drum, DEMILL_DRUM_TOE_ANGLE_MEAN) * 180 / PI,
            drum_value(w, drum, DEMILL_DRUM_SHOULDER_ANGLE_MEAN) * 180 / PI, o.out);
     series_free(&rows);
-    free(smooth);
     demill_world_destroy(w);
     return EXIT_SUCCESS;
 }

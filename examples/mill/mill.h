@@ -45,7 +45,13 @@ typedef struct drum_shape {
     double lifter_angle[64], lifter_height, lifter_width;
 } drum_shape;
 
-/* Pictures; each returns 0 or -1 (with a message on stderr). */
+/* Reads what the drawing needs of the drum from the world: 0, or -1 with a
+ * message on stderr. */
+int drum_shape_read(demill_world *w, demill_id drum, drum_shape *d);
+
+/* Pictures; each returns 0 or -1 (with a message on stderr). draw_power()
+ * draws the power averaged over 10 samples, so that impacts do not hide the
+ * trend. */
 int draw_charge(const char *path, demill_world *w, const drum_shape *d, const char *title);
 int draw_power(const char *path, const double *t, const double *p, size_t n, double mean,
                double mean_from, double mean_to);

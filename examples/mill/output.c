@@ -27,6 +27,35 @@ static void lifter_corners(const drum_shape *d, int k, double xy[8])
     }
 }
 
+int drum_shape_read(demill_world *w, demill_id drum, drum_shape *d)
+{
+    double v[5];
+    demill_status st = demill_world_get(w, DEMILL_WORLD_DIMENSION, &v[0]);
+    const int32_t keys[4] = {DEMILL_DRUM_DIAMETER, DEMILL_DRUM_LENGTH, DEMILL_DRUM_ANGLE,
+                             DEMILL_DRUM_LIFTER_COUNT};
+    for (int k = 0; k < 4 && st == DEMILL_OK; k++)
+        st = demill_drum_get(w, drum, keys[k], &v[k + 1]);
+    if (st != DEMILL_OK || v[4] > 64) {
+        fprintf(stderr, "cannot read the drum: %s\n", demill_world_last_error(w));
+        return -1;
+    }
+    d->dim = (int)v[0];
+    d->radius = 0.5 * v[1];
+    d->length = v[2];
+    d->angle = v[3];
+    d->nlifters = (int)v[4];
+    st = demill_drum_get(w, drum, DEMILL_DRUM_LIFTER_HEIGHT, &d->lifter_height);
+    if (st == DEMILL_OK)
+        st = demill_drum_get(w, drum, DEMILL_DRUM_LIFTER_WIDTH, &d->lifter_width);
+    for (int k = 0; k < d->nlifters && st == DEMILL_OK; k++)
+        st = demill_drum_lifter_get(w, drum, (uint32_t)k, DEMILL_LIFTER_ANGLE, &d->lifter_angle[k]);
+    if (st != DEMILL_OK) {
+        fprintf(stderr, "cannot read the drum's lifters: %s\n", demill_world_last_error(w));
+        return -1;
+    }
+    return 0;
+}
+
 int draw_charge(const char *path, demill_world *w, const drum_shape *d, const char *title)
 {
     const int size = 900, top = 60, bar = 70;
@@ -70,7 +99,7 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-int draw_power(const char *path, const double *t, const double *pw, size_t n, double mean,
+int draw_power(const char *path, const double *t, const double *raw, size_t n, double mean,
                double mean_from, double mean_to)
 {
     const int wd = 1000, ht = 520, l = 80, r = 30, tp = 50, bt = 60;
@@ -78,12 +107,24 @@ int draw_power(const char *path, const double *t, const double *pw, size_t n, do
         fprintf(stderr, "mill: no power samples to draw\n");
         return -1;
     }
+    /* the power averaged over `win` samples, so that impacts do not hide the
+     * trend */
+    const size_t win = 10;
+    double *pw = malloc(n * sizeof *pw), acc = 0;
+    if (!pw)
+        return -1;
+    for (size_t k = 0; k < n; k++) {
+        acc += raw[k] - (k >= win ? raw[k - win] : 0);
+        pw[k] = acc / (k + 1 < win ? k + 1 : win);
+    }
     /* the vertical range covers all but the start-up transient: up to twice
      * the 99th percentile */
     double t0 = t[0], t1 = t[n - 1], p0 = 0, p1 = 0;
     double *sorted = malloc(n * sizeof *sorted);
-    if (!sorted)
+    if (!sorted) {
+        free(pw);
         return -1;
+    }
     memcpy(sorted, pw, n * sizeof *sorted);
     qsort(sorted, n, sizeof *sorted, cmp_double);
     p1 = 2.0 * sorted[(size_t)(0.99 * (n - 1))];
@@ -108,8 +149,9 @@ int draw_power(const char *path, const double *t, const double *pw, size_t n, do
     }
     plot_frame(cr, l, tp, wd - l - r, ht - tp - bt, ht, wd / 2 - 30, "time [s]");
     cairo_move_to(cr, l, 32);
-    cairo_show_text(cr, "power draw P = -T ω [W], 10 ms running mean");
+    cairo_show_text(cr, "power draw P = -T ω [W], running mean of 10 samples");
     cairo_destroy(cr);
+    free(pw);
     return plot_save_png(s, path, "mill");
 }
 

@@ -657,7 +657,9 @@ static void transfer_loads(io *s, demill_world *w)
 
 /* The clump templates and the clumps (section CLMP, from format 5 on; an
  * older file has none). A template: its material, spheres and place in
- * tmem, mass, inverse mass, volume, principal moments, axes and centre; then
+ * tmem, mass, inverse mass, volume, principal moments, axes and centre, and
+ * for one made from a mesh the mesh's volume, the fit's deviations and its
+ * cube side (0 for a template of spheres); then
  * the spheres' offsets and radii. A clump slot: its handle, and for a live
  * clump its template, its place in cmem and its motion (position, velocity,
  * orientation, angle, angular momentum and velocity, the velocities the
@@ -671,8 +673,8 @@ static void transfer_clumps(io *s, demill_world *w)
     io_section(s, "CLMP");
     io_count(s, &w->ntemplates, UINT32_MAX - 1, "clump templates");
     io_count(s, &w->ntmem, UINT32_MAX, "template spheres");
-    /* a template's record: 3 counts, 18 doubles */
-    io_room(s, w->ntemplates, 3 * sizeof(uint32_t) + 18 * sizeof(double), "clump templates");
+    /* a template's record: 3 counts, 22 doubles */
+    io_room(s, w->ntemplates, 3 * sizeof(uint32_t) + 22 * sizeof(double), "clump templates");
     io_array(s, &w->templates, 0, w->ntemplates, sizeof *w->templates);
     if (s->reading && !s->status) {
         w->cap_templates = w->ntemplates;
@@ -683,8 +685,11 @@ static void transfer_clumps(io *s, demill_world *w)
         io_u32(s, &t->material, 1);
         io_u32(s, &t->n, 1);
         io_u32(s, &t->first, 1);
-        double *const f[] = {&t->mass, &t->im, &t->volume, t->inertia, t->axes, t->centre};
-        const size_t len[] = {1, 1, 1, 3, 9, 3};
+        double *const f[] = {&t->mass,        &t->im,          &t->volume,
+                             t->inertia,      t->axes,         t->centre,
+                             &t->mesh_volume, &t->deviation_out, &t->deviation_in,
+                             &t->cell};
+        const size_t len[] = {1, 1, 1, 3, 9, 3, 1, 1, 1, 1};
         for (size_t q = 0; q < sizeof len / sizeof *len; q++)
             io_f64(s, f[q], len[q]);
     }
@@ -1254,8 +1259,8 @@ static demill_status check_drum(demill_world *t)
  * in tmem, of at least one sphere of positive radius, of a live material,
  * their mass, inverse mass and volume as computed from each other and the
  * density, their principal moments positive (2D: 0, 0, I_z), their axes
- * orthonormal and right-handed (2D: x, y, z) and the spheres in the plane
- * in 2D. */
+ * orthonormal and right-handed (2D: x, y, z), the spheres in the plane in
+ * 2D, and a fit's figures not negative. */
 static demill_status check_templates(demill_world *t)
 {
     uint64_t first = 0;
@@ -1266,7 +1271,9 @@ static demill_status check_templates(demill_world *t)
             return dm_fail(t, DEMILL_ERR_FORMAT, "clump template %u has no spheres", k);
         bool ok = tp->first == first && (uint64_t)tp->first + tp->n <= t->ntmem &&
                   tp->material < t->nmat && tp->mass > 0.0 && tp->im == 1.0 / tp->mass &&
-                  tp->volume == tp->mass / t->mats[tp->material].density;
+                  tp->volume == tp->mass / t->mats[tp->material].density &&
+                  tp->mesh_volume >= 0.0 && tp->deviation_out >= 0.0 &&
+                  tp->deviation_in >= 0.0 && tp->cell >= 0.0;
         if (t->dim == 3) {
             for (int c = 0; c < 3; c++)
                 ok &= I[c] > 0.0 && isfinite(1.0 / I[c]);

@@ -1,12 +1,14 @@
 /* clumps.c: the clumps' API (demill/clump.h): templates from spheres with
- * the mass properties of their union (physics/shapes), clumps added,
- * removed, read and written, their members listed (lib/physics/clumps/
- * moves them). */
+ * the mass properties of their union (physics/shapes), or from the spheres
+ * that fill a closed mesh (its arrays, or an STL file read by physics/io)
+ * with the fit kept, clumps added, removed, read and written, their members
+ * listed (lib/physics/clumps/ moves them). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "physics/io/io.h"
 #include "world/world.h"
 
 DEMILL_API int32_t demill_clump_template_field_size(int32_t field)
@@ -14,7 +16,12 @@ DEMILL_API int32_t demill_clump_template_field_size(int32_t field)
     switch (field) {
     case DEMILL_TEMPLATE_MASS:
     case DEMILL_TEMPLATE_VOLUME:
-    case DEMILL_TEMPLATE_COUNT: return 1;
+    case DEMILL_TEMPLATE_COUNT:
+    case DEMILL_TEMPLATE_MESH_VOLUME:
+    case DEMILL_TEMPLATE_FIT_VOLUME_ERROR:
+    case DEMILL_TEMPLATE_FIT_DEVIATION_OUT:
+    case DEMILL_TEMPLATE_FIT_DEVIATION_IN:
+    case DEMILL_TEMPLATE_FIT_CELL: return 1;
     case DEMILL_TEMPLATE_CENTRE:
     case DEMILL_TEMPLATE_PRINCIPAL_MOMENTS: return 3;
     case DEMILL_TEMPLATE_PRINCIPAL_AXES: return 9;
@@ -64,9 +71,9 @@ static int template_reserve(demill_world *w, size_t n)
  * weighed as dm_particle_mass() weighs one) of density rho: the mass, the
  * centre of mass (3 doubles), the principal moments increasing and the
  * principal axes as rows (2D: 0, 0, I_z and the identity). */
-static demill_status union_mass(demill_world *w, size_t n, const double *c, const double *r,
-                                double rho, double *mass, double com[3], double moments[3],
-                                double axes[9])
+static demill_status union_mass(demill_world *w, const char *fn, size_t n, const double *c,
+                                const double *r, double rho, double *mass, double com[3],
+                                double moments[3], double axes[9])
 {
     const char *why = NULL;
     demill_status s;
@@ -75,7 +82,7 @@ static demill_status union_mass(demill_world *w, size_t n, const double *c, cons
     if (w->dim == 3) {
         dm_mass_props mp;
         if ((s = dm_spheres_union_mass(n, c, r, rho, &mp, &why)))
-            return dm_fail(w, s, "clump_template_add: %s", why);
+            return dm_fail(w, s, "%s: %s", fn, why);
         double vec[3][3];
         dm_sym3_eigen(mp.inertia, moments, vec);
         for (int a = 0; a < 3; a++)
@@ -87,7 +94,7 @@ static demill_status union_mass(demill_world *w, size_t n, const double *c, cons
     }
     double *c2 = malloc(2 * n * sizeof *c2);
     if (!c2)
-        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "clump_template_add: out of memory");
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "%s: out of memory", fn);
     for (size_t k = 0; k < n; k++) {
         c2[2 * k] = c[3 * k];
         c2[2 * k + 1] = c[3 * k + 1];
@@ -95,10 +102,70 @@ static demill_status union_mass(demill_world *w, size_t n, const double *c, cons
     s = dm_discs_union_mass(n, c2, r, rho, w->disc_thickness, mass, com, &moments[2], &why);
     free(c2);
     if (s)
-        return dm_fail(w, s, "clump_template_add: %s", why);
+        return dm_fail(w, s, "%s: %s", fn, why);
     moments[0] = moments[1] = 0.0;
     axes[0] = axes[4] = axes[8] = 1.0;
     return DEMILL_OK;
+}
+
+/* Adds the template of the n spheres (centres, radii: checked) of material
+ * slot mat, weighed as their union, in *out; fit: the fit of the mesh they
+ * were made from, or NULL. `fn` starts the messages. */
+static demill_status add_template(demill_world *w, uint32_t mat, const char *fn, size_t n,
+                                  const double *centres, const double *radii,
+                                  const dm_fit_report *fit, demill_id *out)
+{
+    const double rho = w->mats[mat].density;
+    double mass, com[3], moments[3], axes[9];
+    demill_status s;
+    if ((s = union_mass(w, fn, n, centres, radii, rho, &mass, com, moments, axes)))
+        return s;
+    const double mi = w->dim == 3 ? moments[0] : moments[2];
+    if (!(mass > 0.0) || !isfinite(mass) || !(mi > 0.0) || !isfinite(moments[2]) ||
+        !isfinite(1.0 / mass) || !isfinite(1.0 / mi))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "%s: the union has mass %g kg and principal moments "
+                       "(%g, %g, %g) kg m^2: they must be finite and positive, and so must "
+                       "their inverses",
+                       fn, mass, moments[0], moments[1], moments[2]);
+    if (template_reserve(w, n))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "%s: out of memory", fn);
+    dm_template *t = &w->templates[w->ntemplates];
+    memset(t, 0, sizeof *t);
+    t->material = mat;
+    t->n = (uint32_t)n;
+    t->first = w->ntmem;
+    t->mass = mass;
+    t->im = 1.0 / mass;
+    t->volume = mass / rho;
+    memcpy(t->inertia, moments, sizeof t->inertia);
+    memcpy(t->axes, axes, sizeof t->axes);
+    memcpy(t->centre, com, sizeof t->centre);
+    if (fit) {
+        t->mesh_volume = fit->volume;
+        t->deviation_out = fit->deviation_out;
+        t->deviation_in = fit->deviation_in;
+        t->cell = fit->h;
+    }
+    for (size_t k = 0; k < n; k++) { /* each centre in the principal frame */
+        double *b = w->tmem + DM_TMEM * (w->ntmem + k), d[3];
+        for (int c = 0; c < 3; c++)
+            d[c] = centres[3 * k + c] - com[c];
+        for (int a = 0; a < 3; a++)
+            b[a] = axes[3 * a] * d[0] + axes[3 * a + 1] * d[1] + axes[3 * a + 2] * d[2];
+        b[3] = radii[k];
+    }
+    w->ntmem += (uint32_t)n;
+    *out = dm_template_id(w, w->ntemplates++);
+    dm_changed(w);
+    return DEMILL_OK;
+}
+
+/* Whether a template of n more spheres fits the template store's uint32
+ * counts. */
+static int too_many_spheres(const demill_world *w, size_t n)
+{
+    return n > UINT32_MAX - 2 - (uint64_t)w->ntmem;
 }
 
 DEMILL_API demill_status demill_clump_template_add(demill_world *w, demill_id material, size_t n,
@@ -114,7 +181,7 @@ DEMILL_API demill_status demill_clump_template_add(demill_world *w, demill_id ma
                        !centres ? "centres" : !radii ? "radii" : "out");
     if (n == 0)
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "clump_template_add: n = 0 spheres");
-    if (n > UINT32_MAX - 2 - (uint64_t)w->ntmem)
+    if (too_many_spheres(w, n))
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "clump_template_add: too many spheres");
     for (size_t k = 0; k < n; k++) {
         for (int c = 0; c < 3; c++)
@@ -133,43 +200,92 @@ DEMILL_API demill_status demill_clump_template_add(demill_world *w, demill_id ma
             return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                            "clump_template_add: radius %zu = %g must be > 0", k, radii[k]);
     }
-    const double rho = w->mats[mat].density;
-    double mass, com[3], moments[3], axes[9];
-    if ((s = union_mass(w, n, centres, radii, rho, &mass, com, moments, axes)))
+    return add_template(w, mat, "clump_template_add", n, centres, radii, NULL, out);
+}
+
+/* The checks of both mesh templates before the mesh is read: the material
+ * (its slot in *mat), the input (`what` names it) and out, a 3D world. */
+static demill_status mesh_checks(demill_world *w, demill_id material, const char *fn,
+                                 const void *input, const char *what, demill_id *out,
+                                 uint32_t *mat)
+{
+    demill_status s = dm_enter(w, material, DEMILL_KIND_MATERIAL, "material", mat);
+    if (s)
         return s;
-    const double mi = w->dim == 3 ? moments[0] : moments[2];
-    if (!(mass > 0.0) || !isfinite(mass) || !(mi > 0.0) || !isfinite(moments[2]) ||
-        !isfinite(1.0 / mass) || !isfinite(1.0 / mi))
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "clump_template_add: the union has mass %g kg and principal moments "
-                       "(%g, %g, %g) kg m^2: they must be finite and positive, and so must "
-                       "their inverses",
-                       mass, moments[0], moments[1], moments[2]);
-    if (template_reserve(w, n))
-        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "clump_template_add: out of memory");
-    dm_template *t = &w->templates[w->ntemplates];
-    memset(t, 0, sizeof *t);
-    t->material = mat;
-    t->n = (uint32_t)n;
-    t->first = w->ntmem;
-    t->mass = mass;
-    t->im = 1.0 / mass;
-    t->volume = mass / rho;
-    memcpy(t->inertia, moments, sizeof t->inertia);
-    memcpy(t->axes, axes, sizeof t->axes);
-    memcpy(t->centre, com, sizeof t->centre);
-    for (size_t k = 0; k < n; k++) { /* each centre in the principal frame */
-        double *b = w->tmem + DM_TMEM * (w->ntmem + k), d[3];
-        for (int c = 0; c < 3; c++)
-            d[c] = centres[3 * k + c] - com[c];
-        for (int a = 0; a < 3; a++)
-            b[a] = axes[3 * a] * d[0] + axes[3 * a + 1] * d[1] + axes[3 * a + 2] * d[2];
-        b[3] = radii[k];
-    }
-    w->ntmem += (uint32_t)n;
-    *out = dm_template_id(w, w->ntemplates++);
-    dm_changed(w);
+    if (!input || !out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "%s: %s is NULL", fn, !input ? what : "out");
+    if (w->dim != 3)
+        return dm_fail(w, DEMILL_ERR_DIMENSION,
+                       "%s: a template from a triangle mesh needs a 3D world", fn);
     return DEMILL_OK;
+}
+
+/* The template of up to n spheres that fill the mesh (nv vertices v, nt
+ * triangles tri), of material slot mat; `name` (the path, or NULL) starts
+ * the messages about the mesh after `fn`. */
+static demill_status template_from_mesh(demill_world *w, uint32_t mat, const char *fn,
+                                        const char *name, size_t nv, const double *v, size_t nt,
+                                        const uint32_t *tri, size_t n, int cells, demill_id *out)
+{
+    const char *sep = name ? ": " : "";
+    name = name ? name : "";
+    if (too_many_spheres(w, n))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: %s%stoo many spheres (%zu)", fn, name,
+                       sep, n);
+    double *c = malloc((n ? n : 1) * 4 * sizeof *c);
+    if (!c)
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "%s: %s%sout of memory for %zu spheres", fn,
+                       name, sep, n);
+    double *r = c + 3 * n;
+    dm_fit_report rep;
+    char err[256];
+    demill_status s = dm_spheres_fit_mesh(nv, v, nt, tri, n, cells, c, r, &rep, err, sizeof err);
+    if (s)
+        s = dm_fail(w, s, "%s: %s%s%s", fn, name, sep, err);
+    else
+        s = add_template(w, mat, fn, rep.n, c, r, &rep, out);
+    free(c);
+    return s;
+}
+
+DEMILL_API demill_status demill_clump_template_from_mesh(demill_world *w, demill_id material,
+                                                         size_t n_vertices, const double *vertices,
+                                                         size_t n_triangles,
+                                                         const uint32_t *triangles, size_t n,
+                                                         int cells, demill_id *out)
+{
+    const char *fn = "clump_template_from_mesh";
+    uint32_t mat;
+    demill_status s = mesh_checks(w, material, fn, vertices, "vertices", out, &mat);
+    if (!s && !triangles)
+        s = dm_fail(w, DEMILL_ERR_NULL_POINTER, "%s: triangles is NULL", fn);
+    return s ? s
+             : template_from_mesh(w, mat, fn, NULL, n_vertices, vertices, n_triangles, triangles,
+                                  n, cells, out);
+}
+
+DEMILL_API demill_status demill_clump_template_from_stl(demill_world *w, demill_id material,
+                                                        const char *path, double scale, size_t n,
+                                                        int cells, demill_id *out)
+{
+    const char *fn = "clump_template_from_stl";
+    uint32_t mat;
+    demill_status s = mesh_checks(w, material, fn, path, "path", out, &mat);
+    if (s)
+        return s;
+    uint8_t *b;
+    size_t size;
+    if ((s = dm_read_file(w, fn, path, &b, &size)))
+        return s;
+    dm_stl_mesh m;
+    char err[256];
+    s = dm_stl_parse(b, size, scale, NULL, &m, err, sizeof err);
+    free(b);
+    if (s)
+        return dm_fail(w, s, "%s: %s: %s", fn, path, err);
+    s = template_from_mesh(w, mat, fn, path, m.nv, m.v, m.nt, m.tri, n, cells, out);
+    dm_stl_free(&m);
+    return s;
 }
 
 DEMILL_API demill_status demill_clump_template_get(const demill_world *cw, demill_id id,
@@ -185,13 +301,54 @@ DEMILL_API demill_status demill_clump_template_get(const demill_world *cw, demil
     if (!out)
         return dm_fail(w, DEMILL_ERR_NULL_POINTER, "clump_template_get: out is NULL");
     const dm_template *t = &w->templates[k];
+    if (field >= DEMILL_TEMPLATE_MESH_VOLUME && !t->mesh_volume)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "clump_template_get: template field %d is of a fit, but the template "
+                       "was made from spheres, not from a mesh",
+                       (int)field);
     switch (field) {
     case DEMILL_TEMPLATE_MASS: out[0] = t->mass; break;
     case DEMILL_TEMPLATE_VOLUME: out[0] = t->volume; break;
     case DEMILL_TEMPLATE_COUNT: out[0] = t->n; break;
     case DEMILL_TEMPLATE_CENTRE: memcpy(out, t->centre, sizeof t->centre); break;
     case DEMILL_TEMPLATE_PRINCIPAL_MOMENTS: memcpy(out, t->inertia, sizeof t->inertia); break;
-    default: memcpy(out, t->axes, sizeof t->axes);
+    case DEMILL_TEMPLATE_PRINCIPAL_AXES: memcpy(out, t->axes, sizeof t->axes); break;
+    case DEMILL_TEMPLATE_MESH_VOLUME: out[0] = t->mesh_volume; break;
+    case DEMILL_TEMPLATE_FIT_VOLUME_ERROR:
+        out[0] = (t->mesh_volume - t->volume) / t->mesh_volume;
+        break;
+    case DEMILL_TEMPLATE_FIT_DEVIATION_OUT: out[0] = t->deviation_out; break;
+    case DEMILL_TEMPLATE_FIT_DEVIATION_IN: out[0] = t->deviation_in; break;
+    default: out[0] = t->cell;
+    }
+    return DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_clump_template_spheres(const demill_world *cw, demill_id id,
+                                                       double *centres, double *radii,
+                                                       size_t capacity, size_t *count)
+{
+    demill_world *w = (demill_world *)cw;
+    uint32_t k;
+    demill_status s = dm_enter(w, id, DEMILL_KIND_TEMPLATE, "template", &k);
+    if (s)
+        return s;
+    if (!centres != !radii || (!centres && !count))
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "clump_template_spheres: %s is NULL",
+                       !centres ? (radii ? "centres" : "count (with centres and radii)")
+                                : "radii");
+    const dm_template *t = &w->templates[k];
+    if (count)
+        *count = t->n;
+    if (!centres)
+        return DEMILL_OK;
+    if (capacity < t->n)
+        return dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL,
+                       "clump_template_spheres: capacity %zu, %u spheres", capacity, t->n);
+    for (uint32_t m = 0; m < t->n; m++) {
+        const double *b = w->tmem + DM_TMEM * (size_t)(t->first + m);
+        memcpy(centres + 3 * (size_t)m, b, 3 * sizeof *b);
+        radii[m] = b[3];
     }
     return DEMILL_OK;
 }

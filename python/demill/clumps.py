@@ -30,6 +30,30 @@ class Template(Handle):
                            "The principal axes, one per row, in the frame of the centres "
                            "given (3 x 3): the clump's body axes.")
     count = Param(TemplateField.COUNT, lambda v: int(first(v)), "The number of spheres.")
+    mesh_volume = Param(TemplateField.MESH_VOLUME, first,
+                        "The mesh's volume, m³ (a template from a mesh; else "
+                        ":class:`~demill.InvalidValue`, as for the other fit fields).")
+    fit_volume_error = Param(TemplateField.FIT_VOLUME_ERROR, first,
+                             "(V_mesh - V_union) / V_mesh: the fraction of the mesh the "
+                             "spheres leave out.")
+    fit_deviation_out = Param(TemplateField.FIT_DEVIATION_OUT, first,
+                              "The largest distance from the mesh's surface to the union, m.")
+    fit_deviation_in = Param(TemplateField.FIT_DEVIATION_IN, first,
+                             "The largest distance from the union's surface to the mesh's, m.")
+    fit_cell = Param(TemplateField.FIT_CELL, first, "The side of the fit's grid cubes, m.")
+
+    def spheres(self):
+        """The spheres in the body frame (the principal frame clumps carry
+        them in): centres (n x 3, m) and radii (n, m). A body-frame point b
+        is at ``centre + b @ principal_axes`` in the frame the template was
+        made in."""
+        n = ctypes.c_size_t()
+        self.world._call("demill_clump_template_spheres", self.id, None, None, 0,
+                         ctypes.byref(n))
+        centres, radii = np.empty((n.value, 3)), np.empty(n.value)
+        self.world._call("demill_clump_template_spheres", self.id, ptr(centres), ptr(radii),
+                         n.value, ctypes.byref(n))
+        return centres, radii
 
     def _get(self, field):
         size = lib.demill_clump_template_field_size(int(field))

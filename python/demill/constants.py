@@ -289,6 +289,11 @@ class TemplateField(IntEnum):
     PRINCIPAL_MOMENTS = 4
     PRINCIPAL_AXES = 5
     COUNT = 6
+    MESH_VOLUME = 7
+    FIT_VOLUME_ERROR = 8
+    FIT_DEVIATION_OUT = 9
+    FIT_DEVIATION_IN = 10
+    FIT_CELL = 11
 
 
 class ClumpField(IntEnum):

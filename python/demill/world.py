@@ -356,6 +356,33 @@ class World(Closable, Keyed):
                    ctypes.byref(out))
         return Template(self, out.value)
 
+    def clump_template_from_mesh(self, material, vertices, triangles, spheres, cells=64):
+        """A clump template (:class:`Template`, 3D) of up to ``spheres``
+        spheres of ``material`` that fill the closed triangle mesh of
+        ``vertices`` (n x 3, m) and ``triangles`` (m x 3 vertex indices,
+        counter-clockwise seen from outside), on a grid of ``cells`` cubes
+        along its longest side; the fit is in the template's ``mesh_volume``
+        and ``fit_*`` fields."""
+        v = doubles(vertices, (-1, 3), "vertices")
+        t = np.ascontiguousarray(triangles, dtype=np.uint32)
+        if t.ndim != 2 or t.shape[1] != 3:
+            raise ValueError(f"triangles: expected an array of shape n x 3, got {t.shape}")
+        out = ctypes.c_uint64()
+        self._call("demill_clump_template_from_mesh", as_id(material), v.shape[0], ptr(v),
+                   t.shape[0], t.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32)), int(spheres),
+                   int(cells), ctypes.byref(out))
+        return Template(self, out.value)
+
+    def clump_template_from_stl(self, material, path, spheres, cells=64, scale=1.0):
+        """A clump template (:class:`Template`, 3D) that fills the closed
+        mesh of the STL file at ``path`` (ASCII or binary; each point x at
+        ``scale`` x: 0.001 for a file in mm), as
+        :meth:`clump_template_from_mesh`."""
+        out = ctypes.c_uint64()
+        self._call("demill_clump_template_from_stl", as_id(material), os.fsencode(path),
+                   float(scale), int(spheres), int(cells), ctypes.byref(out))
+        return Template(self, out.value)
+
     def add_clump(self, template, position, orientation=None):
         """Adds a clump of ``template`` at rest, its centre of mass at
         ``position`` and its body axes turned by the unit quaternion

@@ -3,10 +3,16 @@ two spheres apart has the mass 2 (4/3 π r³ ρ), its centre midway and its
 principal moments 2 (2/5 m r²) about the line of centres and
 2 (2/5 m r² + m d²) across it (the parallel-axis theorem); a free clump
 falls as x0 + g t²/2 keeping its spin; its members are particles that name
-it; bad input raises with the clump unchanged; a checkpoint in bytes of a
-clump bouncing on a plane goes on to the same bits."""
+it; bad input raises with the clump unchanged. A template filled into a
+regular octahedron |x| + |y| + |z| <= a with one sphere is its inscribed
+ball, of radius a/sqrt(3) about its centre, and the fit reports the
+octahedron's volume (4/3) a³; an ASCII STL file of it gives the same
+template, bitwise; an open mesh raises. A checkpoint in bytes of a clump bouncing on a plane
+goes on to the same bits."""
 
 import math
+import os
+import tempfile
 import unittest
 
 import numpy as np
@@ -91,6 +97,61 @@ class Clumps(unittest.TestCase):
                               "angular_momentum"):
                     np.testing.assert_array_equal(getattr(d, field), getattr(c, field), field)
                 self.assertEqual(v.to_bytes(), w.to_bytes())
+
+    def test_spheres_of_a_template(self):
+        r, d = 0.01, 0.03
+        w, m = linear_world()
+        with w:
+            t = w.clump_template(m, [(-d, 0, 1), (d, 0, 1)], r)
+            centres, radii = t.spheres()
+            np.testing.assert_allclose(radii, (r, r), rtol=0)
+            # the line of centres is the axis of the least moment, the first
+            np.testing.assert_allclose(np.abs(centres[:, 0]), (d, d), rtol=1e-15)
+            np.testing.assert_allclose(centres[:, 1:], 0, atol=1e-15)
+            np.testing.assert_allclose(t.centre + centres @ t.principal_axes,
+                                       [(-d, 0, 1), (d, 0, 1)], atol=1e-15)
+            with self.assertRaises(demill.InvalidValue):
+                t.mesh_volume
+
+    def test_template_from_mesh(self):
+        a, rho = 0.02, 2700.0
+        v = np.array([(a, 0, 0), (-a, 0, 0), (0, a, 0), (0, -a, 0), (0, 0, a), (0, 0, -a)])
+        tri = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5),
+               (0, 3, 5)]
+        w, m = linear_world()
+        with w:
+            m.density = rho
+            t = w.clump_template_from_mesh(m, v, tri, 1, cells=64)
+            r_in = a / math.sqrt(3)
+            self.assertEqual(t.count, 1)
+            centres, radii = t.spheres()
+            self.assertAlmostEqual(radii[0] / r_in, 1.0, delta=1e-4)
+            self.assertAlmostEqual(t.mass / (4 / 3 * math.pi * radii[0] ** 3 * rho), 1.0,
+                                   places=12)
+            np.testing.assert_allclose(t.centre, 0, atol=1e-4 * a)
+            self.assertAlmostEqual(t.mesh_volume / (4 / 3 * a ** 3), 1.0, places=12)
+            self.assertAlmostEqual(t.fit_volume_error,
+                                   1 - math.pi / math.sqrt(3) ** 3, delta=1e-3)
+            self.assertAlmostEqual(t.fit_cell, 2 * a / 64, places=15)
+            self.assertGreater(t.fit_deviation_out, 0)
+            self.assertGreater(t.fit_deviation_in, 0)
+            with tempfile.TemporaryDirectory() as d:
+                path = os.path.join(d, "octahedron.stl")
+                with open(path, "w") as f:
+                    f.write("solid octahedron\n")
+                    for c in tri:
+                        f.write("facet normal 0 0 0\nouter loop\n")
+                        f.writelines("vertex %r %r %r\n" % tuple(v[k]) for k in c)
+                        f.write("endloop\nendfacet\n")
+                    f.write("endsolid octahedron\n")
+                s = w.clump_template_from_stl(m, path, 1, cells=64)
+                self.assertEqual(s.mass, t.mass)
+                np.testing.assert_array_equal(s.spheres()[0], centres)
+                with self.assertRaisesRegex(demill.InvalidValue, "not closed"):
+                    w.clump_template_from_mesh(m, v, tri[:-1], 1)
+                with self.assertRaisesRegex(demill.FileError, "nothing.stl"):
+                    w.clump_template_from_stl(m, os.path.join(d, "nothing.stl"), 1)
+            self.assertEqual(len(w.ids(demill.Kind.TEMPLATE)), 2)
 
 
 if __name__ == "__main__":

@@ -42,6 +42,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "meshes.h"
+#include "stl_write.h"
 #include "testutil.h"
 
 #define RAD 0.004          /* particle radius of the scene, m */
@@ -80,6 +82,7 @@ typedef struct scene {
     demill_id gone_p[2], gone_wall; /* removed ids (setup_removed) */
     demill_id body;                 /* a body the snapshot reads (setup_body) */
     demill_id tmpl, clump;          /* a clump template and a clump (setup_clump) */
+    demill_id mesh_tmpl;            /* a template from a mesh (setup_mesh_template, 3D) */
     unsigned nsnaps;
     int calls, failures;
     char ctx[256];
@@ -121,6 +124,8 @@ static uint64_t id_code(const scene *sc, demill_id id)
         return 4ull << 60;
     if (id && id == sc->clump)
         return 5ull << 60;
+    if (id && id == sc->mesh_tmpl)
+        return 6ull << 60;
     return id == DEMILL_ID_NONE ? 0 : (0xfull << 60) ^ id;
 }
 
@@ -226,18 +231,36 @@ static void snap_take(scene *sc, snap *s)
             for (int c = 0; c < 4; c++)
                 put_d(s, "clump", f, (size_t)c, st, v[c]);
         }
-        for (int32_t f = DEMILL_TEMPLATE_MASS; f <= DEMILL_TEMPLATE_COUNT; f++) {
-            double v[9] = {0};
-            st = demill_clump_template_get(w, sc->tmpl, f, v);
-            for (int c = 0; c < 9; c++)
-                put_d(s, "template", f, (size_t)c, st, v[c]);
-        }
         demill_id m[4] = {0};
         size_t nm = 0;
         st = demill_clump_members(w, sc->clump, m, 4, &nm);
         put(s, "clump members", 0, 0, st, nm);
         for (size_t k = 0; k < 4; k++)
             put(s, "clump member", 0, k, st, id_code(sc, m[k]));
+    }
+    /* templates: how many, and the fields and spheres of the scene's */
+    size_t nt = 0;
+    st = demill_world_ids(w, DEMILL_KIND_TEMPLATE, NULL, 0, &nt);
+    put(s, "template count", 0, 0, st, nt);
+    const demill_id tmpls[2] = {sc->tmpl, sc->mesh_tmpl};
+    for (int k = 0; k < 2; k++) {
+        if (!tmpls[k])
+            continue;
+        for (int32_t f = DEMILL_TEMPLATE_MASS; f <= DEMILL_TEMPLATE_FIT_CELL; f++) {
+            double v[9] = {0};
+            st = demill_clump_template_get(w, tmpls[k], f, v);
+            for (int c = 0; c < 9; c++)
+                put_d(s, "template", f, (size_t)(9 * k + c), st, v[c]);
+        }
+        double b[12] = {0}, r[4] = {0};
+        size_t ns = 0;
+        st = demill_clump_template_spheres(w, tmpls[k], b, r, 4, &ns);
+        put(s, "template spheres", 0, (size_t)k, st, ns);
+        for (size_t c = 0; c < 4; c++) {
+            put_d(s, "template sphere radius", 0, 4 * (size_t)k + c, st, r[c]);
+            for (int a = 0; a < 3; a++)
+                put_d(s, "template sphere centre", a, 4 * (size_t)k + c, st, b[3 * c + a]);
+        }
     }
 
     /* energies */
@@ -1880,7 +1903,9 @@ static void bad_clumps(scene *sc)
 
     ctx(sc, "clump_template_get");
     BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_clump_template_get(w, t, 0, o), "template field");
-    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_clump_template_get(w, t, 7, o), "template field");
+    BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_clump_template_get(w, t, 12, o), "template field");
+    for (int32_t f = DEMILL_TEMPLATE_MESH_VOLUME; f <= DEMILL_TEMPLATE_FIT_CELL; f++)
+        BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_clump_template_get(w, t, f, o), "mesh");
     BAD(sc, DEMILL_ERR_NULL_POINTER,
         demill_clump_template_get(w, t, DEMILL_TEMPLATE_MASS, NULL), "out");
     BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_clump_template_get(w, c, DEMILL_TEMPLATE_MASS, o),
@@ -1979,6 +2004,183 @@ static void bad_clumps(scene *sc)
 START_TEST(clump_values)
 {
     both_dims(setup_clump, bad_clumps, fix_integrator);
+}
+END_TEST
+
+/* A regular octahedron |x| + |y| + |z| <= a about (0, 0.3, 0): 8 triangles,
+ * wound counter-clockwise seen from outside. */
+static dm_test_mesh octahedron(double a)
+{
+    dm_test_mesh m = {0};
+    const double p[6][3] = {{a, 0.3, 0},  {-a, 0.3, 0}, {0, 0.3 + a, 0},
+                            {0, 0.3 - a, 0}, {0, 0.3, a},  {0, 0.3, -a}};
+    for (int k = 0; k < 6; k++)
+        dm_test_mesh_vertex(&m, p[k]);
+    static const uint32_t f[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                     {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    for (int k = 0; k < 8; k++)
+        dm_test_mesh_triangle(&m, f[k][0], f[k][1], f[k][2]);
+    return m;
+}
+
+/* The clump scene and, in 3D, a template of two spheres in an octahedron. */
+static void setup_mesh_template(scene *sc)
+{
+    setup_clump(sc);
+    if (sc->dim == 3) {
+        dm_test_mesh m = octahedron(2 * RAD);
+        DM_OK(sc->w, demill_clump_template_from_mesh(sc->w, sc->mat[1], m.nv, m.v, m.nt, m.t, 2,
+                                                     16, &sc->mesh_tmpl));
+        dm_test_mesh_free(&m);
+    }
+}
+
+static void bad_mesh_templates(scene *sc)
+{
+    demill_world *w = sc->w;
+    const demill_id mat = sc->mat[0];
+    dm_test_mesh m = octahedron(2 * RAD);
+    demill_id out;
+    char *none = dm_test_temp_file("none.stl", "", 0);
+    remove(none); /* a path that was a file and is no more */
+    if (sc->dim == 2) {
+        ctx(sc, "clump_template_from_mesh, _from_stl in 2D");
+        BAD(sc, DEMILL_ERR_DIMENSION,
+            demill_clump_template_from_mesh(w, mat, m.nv, m.v, m.nt, m.t, 2, 16, &out), "3D");
+        BAD(sc, DEMILL_ERR_DIMENSION, demill_clump_template_from_stl(w, mat, none, 1, 2, 16, &out),
+            "3D");
+    } else {
+        ctx(sc, "clump_template_from_mesh");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_clump_template_from_mesh(w, mat, m.nv, m.v, m.nt, m.t, 0, 16, &out),
+            "no spheres");
+        const int cells[3] = {3, 257, -1};
+        for (int k = 0; k < 3; k++)
+            BAD(sc, DEMILL_ERR_INVALID_VALUE,
+                demill_clump_template_from_mesh(w, mat, m.nv, m.v, m.nt, m.t, 2, cells[k], &out),
+                "cells");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_clump_template_from_mesh(w, mat, m.nv, m.v, m.nt - 1, m.t, 2, 16, &out),
+            "not closed");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_clump_template_from_mesh(w, mat, m.nv, m.v, 3, m.t, 2, 16, &out),
+            "4 triangles");
+        for (int k = 0; k < 3; k++) {
+            dm_test_mesh b = octahedron(2 * RAD);
+            b.v[4] = nonfinite[k];
+            BAD(sc, DEMILL_ERR_NOT_FINITE,
+                demill_clump_template_from_mesh(w, mat, b.nv, b.v, b.nt, b.t, 2, 16, &out),
+                "vertex 1", "nan|infinite");
+            dm_test_mesh_free(&b);
+        }
+        dm_test_mesh b = octahedron(2 * RAD);
+        b.t[5] = 6;
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_clump_template_from_mesh(w, mat, b.nv, b.v, b.nt, b.t, 2, 16, &out),
+            "triangle 1", "vertex 6");
+        b.t[5] = 2; /* triangle 1 is (2, 1, 2) */
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_clump_template_from_mesh(w, mat, b.nv, b.v, b.nt, b.t, 2, 16, &out),
+            "triangle 1", "zero area");
+        for (size_t t = 0; t < b.nt; t++) { /* inside out */
+            b.t[3 * t + 1] = m.t[3 * t + 2];
+            b.t[3 * t + 2] = m.t[3 * t + 1];
+        }
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_clump_template_from_mesh(w, mat, b.nv, b.v, b.nt, b.t, 2, 16, &out),
+            "inside out");
+        b.t[1] = m.t[1], b.t[2] = m.t[2]; /* triangle 0 turned back */
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_clump_template_from_mesh(w, mat, b.nv, b.v, b.nt, b.t, 2, 16, &out),
+            "oriented");
+        dm_test_mesh_free(&b);
+        BAD(sc, DEMILL_ERR_NULL_POINTER,
+            demill_clump_template_from_mesh(w, mat, m.nv, NULL, m.nt, m.t, 2, 16, &out),
+            "vertices");
+        BAD(sc, DEMILL_ERR_NULL_POINTER,
+            demill_clump_template_from_mesh(w, mat, m.nv, m.v, m.nt, NULL, 2, 16, &out),
+            "triangles");
+        BAD(sc, DEMILL_ERR_NULL_POINTER,
+            demill_clump_template_from_mesh(w, mat, m.nv, m.v, m.nt, m.t, 2, 16, NULL), "out");
+        BAD(sc, DEMILL_ERR_INVALID_HANDLE,
+            demill_clump_template_from_mesh(w, sc->tmpl, m.nv, m.v, m.nt, m.t, 2, 16, &out),
+            "material");
+
+        ctx(sc, "clump_template_from_stl");
+        double *corners = dm_test_mesh_corners(&m);
+        size_t size;
+        uint8_t *open = dm_test_stl_ascii("open", corners, m.nt - 1, NULL, &size);
+        char *open_path = dm_test_temp_file("open.stl", open, size);
+        static const char junk[] = "not an STL file\n";
+        char *junk_path = dm_test_temp_file("junk.stl", junk, sizeof junk - 1);
+        uint8_t *good = dm_test_stl_ascii("good", corners, m.nt, NULL, &size);
+        char *good_path = dm_test_temp_file("good.stl", good, size);
+        BAD(sc, DEMILL_ERR_IO, demill_clump_template_from_stl(w, mat, none, 1, 2, 16, &out), none,
+            "no such file");
+        BAD(sc, DEMILL_ERR_FORMAT,
+            demill_clump_template_from_stl(w, mat, junk_path, 1, 2, 16, &out), junk_path,
+            "not an STL file");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_clump_template_from_stl(w, mat, open_path, 1, 2, 16, &out), open_path,
+            "not closed");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_clump_template_from_stl(w, mat, good_path, 1, 0, 16, &out), good_path,
+            "no spheres");
+        BAD(sc, DEMILL_ERR_INVALID_VALUE,
+            demill_clump_template_from_stl(w, mat, good_path, 1, 2, 300, &out), good_path,
+            "cells");
+        const double scales[4] = {0.0, -1.0, NAN, INFINITY};
+        for (int k = 0; k < 4; k++)
+            BAD(sc, DEMILL_ERR_INVALID_VALUE,
+                demill_clump_template_from_stl(w, mat, good_path, scales[k], 2, 16, &out),
+                good_path, "scale");
+        BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_template_from_stl(w, mat, NULL, 1, 2, 16,
+                                                                        &out), "path");
+        BAD(sc, DEMILL_ERR_NULL_POINTER,
+            demill_clump_template_from_stl(w, mat, good_path, 1, 2, 16, NULL), "out");
+        BAD(sc, DEMILL_ERR_INVALID_HANDLE,
+            demill_clump_template_from_stl(w, sc->clump, good_path, 1, 2, 16, &out), "material");
+        const char *paths[3] = {open_path, junk_path, good_path};
+        for (int k = 0; k < 3; k++)
+            remove(paths[k]);
+        free(open_path);
+        free(junk_path);
+        free(good_path);
+        free(open);
+        free(good);
+        free(corners);
+
+        ctx(sc, "clump_template_get of a mesh template");
+        double o[9];
+        BAD(sc, DEMILL_ERR_UNKNOWN_KEY, demill_clump_template_get(w, sc->mesh_tmpl, 12, o),
+            "template field");
+        BAD(sc, DEMILL_ERR_NULL_POINTER,
+            demill_clump_template_get(w, sc->mesh_tmpl, DEMILL_TEMPLATE_FIT_CELL, NULL), "out");
+    }
+    ctx(sc, "clump_template_spheres");
+    double b[6], r[2];
+    size_t n;
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_template_spheres(w, sc->tmpl, NULL, NULL, 0,
+                                                                   NULL), "count");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_template_spheres(w, sc->tmpl, b, NULL, 2, &n),
+        "radii");
+    BAD(sc, DEMILL_ERR_NULL_POINTER, demill_clump_template_spheres(w, sc->tmpl, NULL, r, 2, &n),
+        "centres");
+    n = 7;
+    BAD(sc, DEMILL_ERR_BUFFER_TOO_SMALL,
+        demill_clump_template_spheres(w, sc->tmpl, b, r, 1, &n), "capacity");
+    ck_assert_uint_eq(n, 2);
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_clump_template_spheres(w, mat, b, r, 2, &n),
+        "template");
+    BAD(sc, DEMILL_ERR_INVALID_HANDLE, demill_clump_template_spheres(w, sc->clump, b, r, 2, &n),
+        "template");
+    free(none);
+    dm_test_mesh_free(&m);
+}
+
+START_TEST(mesh_template_values)
+{
+    both_dims(setup_mesh_template, bad_mesh_templates, NULL);
 }
 END_TEST
 
@@ -2760,6 +2962,7 @@ int main(void)
     tcase_add_test(tc, wall_values);
     tcase_add_test(tc, body_values);
     tcase_add_test(tc, clump_values);
+    tcase_add_test(tc, mesh_template_values);
     tcase_add_test(tc, finite_wall_values);
     tcase_add_test(tc, mesh_values);
     tcase_add_test(tc, wall_loads_values);

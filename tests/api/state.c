@@ -204,7 +204,8 @@ static demill_world *walls3d(void)
  * dumbbell of two overlapping spheres and an L of three, in turned
  * orientations and thrown, and 6 free spheres, on Hertz-Mindlin contacts
  * with rolling friction; one clump removed and another added in its slot
- * (a handle of a later generation), then one more removed (a free slot). */
+ * (a handle of a later generation), then one more removed (a free slot);
+ * and a clump of a template made from a mesh, with its fit. */
 static demill_world *clumps3d(void)
 {
     demill_world *w;
@@ -226,6 +227,13 @@ static demill_world *clumps3d(void)
     const double rd[2] = {r, 0.8 * r}, rl[3] = {r, r, 0.9 * r};
     DM_OK(w, demill_clump_template_add(w, m, 2, dumbbell, rd, &tmpl[0]));
     DM_OK(w, demill_clump_template_add(w, m, 3, ell, rl, &tmpl[1]));
+    /* and one from a mesh, whose fit the checkpoint keeps: a regular
+     * octahedron 8 mm across filled with 2 spheres */
+    const double a = 0.004, v[18] = {a, 0, 0, -a, 0, 0, 0, a, 0, 0, -a, 0, 0, 0, a, 0, 0, -a};
+    const uint32_t tri[24] = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4,
+                              2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+    demill_id rock, stone;
+    DM_OK(w, demill_clump_template_from_mesh(w, m, 6, v, 8, tri, 2, 32, &rock));
     for (int k = 0; k < 12; k++) {
         const double x[3] = {-0.015 + 0.015 * (k % 3), 0.01 + 0.015 * (k / 6),
                              -0.01 + 0.02 * (k / 3 % 2)};
@@ -243,6 +251,8 @@ static demill_world *clumps3d(void)
         rr[k] = 0.003;
     }
     DM_OK(w, demill_particles_add(w, m, 6, p, rr, NULL, 0, NULL));
+    const double at[3] = {0.02, 0.045, 0.02};
+    DM_OK(w, demill_clump_add(w, rock, at, NULL, &stone));
     DM_OK(w, demill_clump_remove(w, clump[4]));
     const double again[3] = {0, 0.05, 0.015};
     DM_OK(w, demill_clump_add(w, tmpl[1], again, NULL, &clump[4]));
@@ -766,15 +776,15 @@ START_TEST(clump_records_the_api_would_not_make_are_refused)
     ck_assert_int_eq(demill_world_create(3, &target), DEMILL_OK);
     bytes good = checkpoint_of(w), before = checkpoint_of(target);
     /* the layout of section CLMP (lib/world/checkpoint.c, transfer_clumps()):
-     * its name, the counts of templates (2) and of their spheres (5); each
-     * template's 3 32-bit fields (the second its number of spheres) and 18
-     * doubles; 4 doubles per sphere; the counts of clump slots (12), live
-     * clumps (11) and members; each slot's handle, and for a live clump its
+     * its name, the counts of templates (3) and of their spheres (7); each
+     * template's 3 32-bit fields (the second its number of spheres) and 22
+     * doubles; 4 doubles per sphere; the counts of clump slots (13), live
+     * clumps (12) and members; each slot's handle, and for a live clump its
      * template and first member (32 bits each) and 23 doubles, the fourth
      * to seventh its orientation; then the members' particle handles */
     const size_t clmp = unique_offset(good, "CLMP", 4), tmpl0 = clmp + 12;
-    const size_t counts = tmpl0 + 2 * (12 + 18 * 8) + 5 * 32, slot0 = counts + 12;
-    const size_t q0 = slot0 + 12 + 6 * 8, cmem = slot0 + 11 * (12 + 23 * 8) + 4;
+    const size_t counts = tmpl0 + 3 * (12 + 22 * 8) + 7 * 32, slot0 = counts + 12;
+    const size_t q0 = slot0 + 12 + 6 * 8, cmem = slot0 + 12 * (12 + 23 * 8) + 4;
     uint32_t member[2];
     memcpy(member, good.b + cmem, sizeof member); /* clump 0's two */
     /* a free sphere's handle: the index bits of its id */
@@ -786,7 +796,7 @@ START_TEST(clump_records_the_api_would_not_make_are_refused)
     while (owner[sphere] != DEMILL_ID_NONE)
         sphere++;
     sphere = (uint32_t)(ids[sphere] & 0xFFFFFFFFu);
-    const uint32_t seven = 7, none = 1000, zero = 0, twelve = 12;
+    const uint32_t seven = 7, none = 1000, zero = 0, thirteen = 13;
     const double off = 0.9, nan = NAN;
     const struct {
         size_t at;
@@ -794,14 +804,14 @@ START_TEST(clump_records_the_api_would_not_make_are_refused)
         size_t len;
         const char *word;
     } cases[] = {
-        {slot0 + 4, &seven, 4, "template 7 of 2"},
+        {slot0 + 4, &seven, 4, "template 7 of 3"},
         {q0, &off, 8, "orientation of norm"},
         {q0 + 8, &nan, 8, "not finite"},
         {cmem, &none, 4, "member 0 is not a particle"},
         {cmem + 4, &member[0], 4, "member 1 is a member of clump 0 too"},
         {cmem, &sphere, 4, "another material, radius or mass"},
         {tmpl0 + 4, &zero, 4, "clump template 0 has no spheres"},
-        {counts + 4, &twelve, 4, "11 clumps"},
+        {counts + 4, &thirteen, 4, "12 clumps"},
     };
     unsigned char *bad = malloc(good.n);
     ck_assert_ptr_nonnull(bad);

@@ -56,91 +56,14 @@
 
 #include "base/random.h"
 #include "physics/shapes/shapes.h"
+#include "meshes.h"
 #include "testutil.h"
 
 static const double R0 = 0.01;                 /* m */
 static const double P0[3] = {0.3, -0.2, 0.15}; /* shapes placed away from the origin */
 #define CELLS 48
 
-/* A triangle mesh being built. */
-typedef struct mesh {
-    double *v;
-    uint32_t *t;
-    size_t nv, nt;
-} mesh;
-
-static void mesh_free(mesh *m)
-{
-    free(m->v);
-    free(m->t);
-}
-
-/* The index of vertex x, added if no vertex is bitwise equal to it. */
-static uint32_t vertex(mesh *m, const double x[3])
-{
-    for (size_t k = 0; k < m->nv; k++)
-        if (!memcmp(m->v + 3 * k, x, 3 * sizeof *x))
-            return (uint32_t)k;
-    m->v = realloc(m->v, 3 * (m->nv + 1) * sizeof *m->v);
-    memcpy(m->v + 3 * m->nv, x, 3 * sizeof *x);
-    return (uint32_t)m->nv++;
-}
-
-static void triangle(mesh *m, uint32_t a, uint32_t b, uint32_t c)
-{
-    m->t = realloc(m->t, 3 * (m->nt + 1) * sizeof *m->t);
-    m->t[3 * m->nt] = a, m->t[3 * m->nt + 1] = b, m->t[3 * m->nt + 2] = c;
-    m->nt++;
-}
-
-/* x pushed out to the unit sphere. */
-static void unit(double x[3])
-{
-    const double l = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-    for (int k = 0; k < 3; k++)
-        x[k] /= l;
-}
-
-/* The triangle (a, b, c) of the unit sphere split `level` more times. */
-static void split(mesh *m, const double *a, const double *b, const double *c, int level)
-{
-    if (!level) {
-        double x[3][3];
-        memcpy(x[0], a, sizeof x[0]), memcpy(x[1], b, sizeof x[1]), memcpy(x[2], c, sizeof x[2]);
-        triangle(m, vertex(m, x[0]), vertex(m, x[1]), vertex(m, x[2]));
-        return;
-    }
-    double ab[3], bc[3], ca[3];
-    for (int k = 0; k < 3; k++) /* the same sums, bitwise, from both triangles of an edge */
-        ab[k] = a[k] + b[k], bc[k] = b[k] + c[k], ca[k] = c[k] + a[k];
-    unit(ab), unit(bc), unit(ca);
-    split(m, a, ab, ca, level - 1);
-    split(m, ab, b, bc, level - 1);
-    split(m, ca, bc, c, level - 1);
-    split(m, ab, bc, ca, level - 1);
-}
-
-/* An icosphere of the unit sphere (20 4^level triangles, wound outwards),
- * then scaled by s (per axis) and moved to p. */
-static mesh icosphere(int level, const double s[3], const double p[3])
-{
-    const double g = (1.0 + sqrt(5.0)) / 2.0;
-    double c[12][3] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                       {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-    static const int f[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    for (int k = 0; k < 12; k++)
-        unit(c[k]);
-    mesh m = {0};
-    for (int k = 0; k < 20; k++)
-        split(&m, c[f[k][0]], c[f[k][1]], c[f[k][2]], level);
-    for (size_t k = 0; k < m.nv; k++)
-        for (int a = 0; a < 3; a++)
-            m.v[3 * k + a] = p[a] + s[a] * m.v[3 * k + a];
-    return m;
-}
+typedef dm_test_mesh mesh;
 
 /* The surface of revolution about the z axis through p of the profile
  * (rho[k], z[k]), k = 0..n, from a pole (rho 0) down to a pole, in
@@ -154,7 +77,7 @@ static mesh revolve(const double *rho, const double *z, int n, int segments, con
             const double phi = 2.0 * M_PI * j / segments;
             const double x[3] = {p[0] + rho[k] * cos(phi), p[1] + rho[k] * sin(phi), p[2] + z[k]};
             const double pole[3] = {p[0], p[1], p[2] + z[k]};
-            ring[k * segments + j] = vertex(&m, k == 0 || k == n ? pole : x);
+            ring[k * segments + j] = dm_test_mesh_vertex(&m, k == 0 || k == n ? pole : x);
         }
     for (int k = 0; k < n; k++)
         for (int j = 0; j < segments; j++) {
@@ -162,9 +85,9 @@ static mesh revolve(const double *rho, const double *z, int n, int segments, con
             const uint32_t a = ring[k * segments + j], b = ring[(k + 1) * segments + j],
                            c = ring[(k + 1) * segments + j1], d = ring[k * segments + j1];
             if (k < n - 1)
-                triangle(&m, a, b, c); /* down, then around: outwards */
+                dm_test_mesh_triangle(&m, a, b, c); /* down, then around: outwards */
             if (k > 0)
-                triangle(&m, a, c, d);
+                dm_test_mesh_triangle(&m, a, c, d);
         }
     free(ring);
     return m;
@@ -176,13 +99,13 @@ static mesh box(const double lo[3], const double hi[3])
     mesh m = {0};
     for (int k = 0; k < 8; k++) {
         const double x[3] = {k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
-        vertex(&m, x);
+        dm_test_mesh_vertex(&m, x);
     }
     static const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                                 {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     for (int f = 0; f < 6; f++) {
-        triangle(&m, q[f][0], q[f][1], q[f][2]);
-        triangle(&m, q[f][0], q[f][2], q[f][3]);
+        dm_test_mesh_triangle(&m, q[f][0], q[f][1], q[f][2]);
+        dm_test_mesh_triangle(&m, q[f][0], q[f][2], q[f][3]);
     }
     return m;
 }
@@ -255,7 +178,7 @@ static demill_status fit(const mesh *m, size_t n, int cells, double *c, double *
 START_TEST(test_sphere_one)
 {
     const double s[3] = {R0, R0, R0};
-    mesh m = icosphere(3, s, P0);
+    mesh m = dm_test_icosphere(3, s, P0);
     ck_assert_uint_eq(m.nt, 1280);
     double r_in = INFINITY;
     for (size_t t = 0; t < m.nt; t++) {
@@ -301,7 +224,7 @@ START_TEST(test_sphere_one)
     ck_assert(fabs(rep.deviation_in - deep) <= rep.deviation_in_tol);
     DM_ASSERT_REL(rep.size, cbrt(6.0 * v / M_PI), 1e-12);
     free(pl);
-    mesh_free(&m);
+    dm_test_mesh_free(&m);
 }
 END_TEST
 
@@ -373,7 +296,7 @@ START_TEST(test_dumbbell)
     printf("  union volume %.9g, exact %.9g, resolution error %.2g of the mesh's\n",
            rep.union_volume, exact.mass, rep.volume_error_tol);
     ck_assert(fabs(rep.union_volume - exact.mass) <= rep.volume_error_tol * rep.volume);
-    mesh_free(&m);
+    dm_test_mesh_free(&m);
 }
 END_TEST
 
@@ -445,11 +368,11 @@ static void falls(const char *name, const mesh *m, int (*inside)(const void *, c
 START_TEST(test_ellipsoid)
 {
     const double s[3] = {R0, 0.7 * R0, 0.5 * R0};
-    mesh m = icosphere(3, s, P0);
+    mesh m = dm_test_icosphere(3, s, P0);
     const convex cv = {planes(&m), m.nt};
     falls("ellipsoid", &m, in_convex, &cv);
     free((void *)cv.pl);
-    mesh_free(&m);
+    dm_test_mesh_free(&m);
 }
 END_TEST
 
@@ -461,7 +384,7 @@ START_TEST(test_box)
     const convex cv = {planes(&m), m.nt};
     falls("box", &m, in_convex, &cv);
     free((void *)cv.pl);
-    mesh_free(&m);
+    dm_test_mesh_free(&m);
 }
 END_TEST
 
@@ -506,10 +429,10 @@ static mesh tripod(void)
                 const double x[3] = {P0[0] + TRIPOD * (l[0] + (corner & 1)),
                                      P0[1] + TRIPOD * (l[1] + (corner >> 1 & 1)),
                                      P0[2] + TRIPOD * (l[2] + (corner >> 2 & 1))};
-                v[k] = vertex(&m, x);
+                v[k] = dm_test_mesh_vertex(&m, x);
             }
-            triangle(&m, v[0], v[1], v[2]);
-            triangle(&m, v[0], v[2], v[3]);
+            dm_test_mesh_triangle(&m, v[0], v[1], v[2]);
+            dm_test_mesh_triangle(&m, v[0], v[2], v[3]);
         }
     return m;
 }
@@ -520,7 +443,7 @@ START_TEST(test_tripod)
     ck_assert_uint_eq(m.nt, 2 * (7 * 6 - 2 * 6)); /* 6 shared faces hidden on both sides */
     DM_ASSERT_REL(volume(&m, P0), 7.0 * TRIPOD * TRIPOD * TRIPOD, 1e-12);
     falls("tripod", &m, in_tripod, NULL);
-    mesh_free(&m);
+    dm_test_mesh_free(&m);
 }
 END_TEST
 
@@ -530,11 +453,11 @@ static mesh octahedron(double a)
     mesh m = {0};
     const double p[6][3] = {{a, 0, 0}, {-a, 0, 0}, {0, a, 0}, {0, -a, 0}, {0, 0, a}, {0, 0, -a}};
     for (int k = 0; k < 6; k++)
-        vertex(&m, p[k]);
+        dm_test_mesh_vertex(&m, p[k]);
     static const int f[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                 {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
     for (int k = 0; k < 8; k++)
-        triangle(&m, f[k][0], f[k][1], f[k][2]);
+        dm_test_mesh_triangle(&m, f[k][0], f[k][1], f[k][2]);
     return m;
 }
 
@@ -559,7 +482,7 @@ START_TEST(test_grid_lines_on_edges)
     ck_assert_uint_eq(rep.inside, want);
     /* its largest inscribed ball: centred, of radius a/sqrt(3) */
     ck_assert(fabs(r - 32.5 / sqrt(3.0)) <= 1e-4 * rep.h && dist3(c, (double[3]){0}) <= 1e-4 * rep.h);
-    mesh_free(&m);
+    dm_test_mesh_free(&m);
     /* the unit cube on 64 cubes: the lines run along its faces' diagonals */
     const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, mid[3] = {0.5, 0.5, 0.5};
     m = box(lo, hi);
@@ -570,14 +493,14 @@ START_TEST(test_grid_lines_on_edges)
     ck_assert(fabs(r - 0.5) <= 1e-4 * rep.h && dist3(c, mid) <= 1e-4 * rep.h);
     ck_assert(fabs(rep.volume_error - (1.0 - 4.0 / 3.0 * M_PI * r * r * r)) <=
               rep.volume_error_tol);
-    mesh_free(&m);
+    dm_test_mesh_free(&m);
 }
 END_TEST
 
 START_TEST(test_deterministic)
 {
     const double s[3] = {R0, 0.7 * R0, 0.5 * R0};
-    mesh m = icosphere(2, s, P0);
+    mesh m = dm_test_icosphere(2, s, P0);
     double c[2][60], r[2][20];
     dm_fit_report rep[2];
     char err[256];
@@ -587,7 +510,7 @@ START_TEST(test_deterministic)
     ck_assert(rep[0].n == rep[1].n && rep[0].union_volume == rep[1].union_volume &&
               rep[0].deviation_out == rep[1].deviation_out &&
               rep[0].deviation_in == rep[1].deviation_in);
-    mesh_free(&m);
+    dm_test_mesh_free(&m);
 }
 END_TEST
 
@@ -610,7 +533,7 @@ static void refused(const mesh *m, size_t n, int cells, demill_status code, cons
 START_TEST(test_refused)
 {
     const double s[3] = {R0, R0, R0};
-    mesh m = icosphere(1, s, P0);
+    mesh m = dm_test_icosphere(1, s, P0);
     refused(&m, 0, CELLS, DEMILL_ERR_INVALID_VALUE, "no spheres");
     refused(&m, 1, 3, DEMILL_ERR_INVALID_VALUE, "cells");
     m.nt--; /* the last triangle removed */
@@ -643,7 +566,7 @@ START_TEST(test_refused)
                      DEMILL_ERR_NULL_POINTER);
     ck_assert_int_eq(fit(&m, 1, CELLS, c, &r, &rep, err), DEMILL_OK);
     ck_assert_str_eq(err, "");
-    mesh_free(&m);
+    dm_test_mesh_free(&m);
 }
 END_TEST
 

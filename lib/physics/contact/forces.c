@@ -64,7 +64,7 @@ DM_INLINE void init_forces(const int D, demill_world *w, uint32_t p0, uint32_t p
     const double *restrict m = P->m;
     double *restrict f = P->f, *restrict tq = P->t;
     const double g[3] = {w->g[0], w->g[1], w->g[2]};
-    for (uint32_t i = p0; i < p1; i++) {
+    for (size_t i = p0; i < p1; i++) { /* size_t: a uint32_t D i may wrap, which stops GCC */
         for (int c = 0; c < D; c++)
             f[D * i + c] = m[i] * g[c];
         for (int c = 0; c < W; c++)

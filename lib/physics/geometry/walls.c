@@ -614,11 +614,14 @@ void dm_wgeom_store(demill_world *w, uint32_t q, uint32_t i, const dm_wall *wall
 
 /* Contact geometry of candidates p0 .. p1-1 of a particle-wall bucket whose
  * first candidate has index g0 in w->wg (room reserved by the neighbour
- * build), but for mesh candidates: dm_wgeom_meshes() has done those. */
-void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p0, uint32_t p1)
+ * build), but for mesh candidates: dm_wgeom_meshes() has done those. Compiled
+ * for each dimension D, so that wgeom_store()'s loops over the components
+ * are unrolled rather than counted at run time. */
+static inline __attribute__((always_inline)) void wgeom_range(const int D, demill_world *w,
+                                                              const dm_bucket *b, uint32_t g0,
+                                                              uint32_t p0, uint32_t p1)
 {
     dm_wgeom *g = &w->wg;
-    const int D = w->dim;
     const dm_particles *P = &w->p;
     for (uint32_t p = p0; p < p1; p++) {
         const uint32_t i = b->i[p];
@@ -630,6 +633,14 @@ void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p
         const double delta = P->r[i] - dm_wall_closest(wall, x, D, n);
         wgeom_store(g, D, g0 + p, x, P->r[i], wall, delta, n);
     }
+}
+
+void dm_wgeom_range(demill_world *w, const dm_bucket *b, uint32_t g0, uint32_t p0, uint32_t p1)
+{
+    if (w->dim == 3)
+        wgeom_range(3, w, b, g0, p0, p1);
+    else
+        wgeom_range(2, w, b, g0, p0, p1);
 }
 
 /* Contact geometry of every particle-wall candidate, in bucket order. */

@@ -60,14 +60,17 @@ typedef struct step_args {
 /* Velocity Verlet's first half, after the second half of the step before
  * when kick is set (the forces have not changed in between): v += dt/2 a;
  * then vp = v + dt a (the end-of-step velocity the dashpots see), v += dt/2 a,
- * x += dt v. */
-DM_INLINE void verlet_drift(const int D, dm_particles *P, const step_args *a, uint32_t i0,
-                            uint32_t i1, uint64_t *worst_out)
+ * x += dt v. Returns the largest squared displacement since the last
+ * neighbour build, as bits. The arrays come in as restrict arguments of a
+ * function of its own (verlet_move2(), verlet_move3()), as turn()'s do:
+ * with restrict pointers taken from P as locals of the inlined loop, GCC 12
+ * wanted more run-time alias checks than it makes (six arrays) and left
+ * the loop scalar. */
+DM_INLINE uint64_t verlet_drift(const int D, double *restrict x, double *restrict v,
+                                double *restrict vp, const double *restrict f,
+                                const double *restrict im, const double *restrict x0, double dt,
+                                double h, int kick, uint32_t i0, uint32_t i1)
 {
-    double *restrict x = P->x, *restrict v = P->v, *restrict vp = P->vp;
-    const double *restrict f = P->f, *restrict im = P->im, *restrict x0 = P->x0;
-    const double dt = a->dt, h = a->h;
-    const int kick = a->kick;
     uint64_t worst = 0;
     for (size_t i = i0; i < i1; i++) {
         double d2 = 0.0;
@@ -85,8 +88,19 @@ DM_INLINE void verlet_drift(const int D, dm_particles *P, const step_args *a, ui
         }
         worst = max_bits(worst, d2);
     }
-    *worst_out = worst;
+    return worst;
 }
+
+#define DM_VERLET_MOVE(D)                                                                         \
+    DM_VECTOR_CLONES __attribute__((noinline)) static uint64_t verlet_move##D(                    \
+        double *restrict x, double *restrict v, double *restrict vp, const double *restrict f,    \
+        const double *restrict im, const double *restrict x0, double dt, double h, int kick,      \
+        uint32_t i0, uint32_t i1)                                                                 \
+    {                                                                                             \
+        return verlet_drift(D, x, v, vp, f, im, x0, dt, h, kick, i0, i1);                         \
+    }
+DM_VERLET_MOVE(2)
+DM_VERLET_MOVE(3)
 
 /* Symplectic Euler: v += dt a, x += dt v. */
 DM_INLINE void euler_drift(const int D, dm_particles *P, const step_args *a, uint32_t i0,
@@ -198,7 +212,9 @@ DM_INLINE void spin(const int D, dm_particles *P, const step_args *a, uint32_t i
                                                  uint32_t i1)                                     \
     {                                                                                             \
         step_args *s = a;                                                                         \
-        verlet_drift(D, &w->p, s, i0, i1, &s->worst[t]);                                          \
+        dm_particles *P = &w->p;                                                                  \
+        s->worst[t] = verlet_move##D(P->x, P->v, P->vp, P->f, P->im, P->x0, s->dt, s->h, s->kick, \
+                                     i0, i1);                                                     \
         if (s->rotation)                                                                          \
             spin(D, &w->p, s, i0, i1);                                                            \
     }                                                                                             \

@@ -254,6 +254,9 @@ typedef struct dm_template {
     double inertia[3];      /* principal moments, increasing (2D: 0, 0, I_z) */
     double axes[9];         /* the principal axes in the input frame, one per row */
     double centre[3];       /* the centre of mass in the input frame */
+    /* made from a mesh: its volume, the fit's largest deviations out and in
+     * and the grid's cube side (all 0 for a template made from spheres) */
+    double mesh_volume, deviation_out, deviation_in, cell;
 } dm_template;
 #define DM_TMEM 4 /* doubles per template member: body-frame offset (3), radius */
 

@@ -1,0 +1,1456 @@
+/* scene.c: checks a scene file's tree and builds its world through the
+ * public API (scene.h). The world's, materials', pairs' and drum's keys are
+ * the parameter registry's names (demill_param_name() over the key ranges
+ * the headers give each group), so that a key the library adds is a scene
+ * key at once; the other sections are described here. */
+#define _POSIX_C_SOURCE 200809L /* strtok_r */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene.h"
+
+#define MAX_NAMES 128
+
+typedef struct ctx {
+    scene *s;
+    const tree *root;
+    const char *dir;
+    int mode;
+    char *err;
+    size_t errlen;
+} ctx;
+
+/* ---- messages ---------------------------------------------------------------- */
+
+static int fail(ctx *c, const tree *n, const char *fmt, ...)
+{
+    char path[512], msg[512];
+    tree_path(c->root, n, path, sizeof path);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (n->line > 0)
+        snprintf(c->err, c->errlen, "%s:%d: %s%s%s", n->src, n->line, path, *path ? ": " : "", msg);
+    else
+        snprintf(c->err, c->errlen, "--set %s: %s", path, msg);
+    return -1;
+}
+
+static const char *kind_name(const tree *n)
+{
+    return n->kind == TREE_MAP ? "a map" : n->kind == TREE_SEQ ? "a list" : n->text;
+}
+
+/* Levenshtein distance, for did-you-mean (names are short). */
+static size_t distance(const char *a, const char *b)
+{
+    size_t la = strlen(a), lb = strlen(b), row[64];
+    if (la >= 63 || lb >= 63)
+        return 99;
+    for (size_t j = 0; j <= lb; j++)
+        row[j] = j;
+    for (size_t i = 1; i <= la; i++) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= lb; j++) {
+            const size_t up = row[j];
+            const size_t sub = diag + (a[i - 1] != b[j - 1]);
+            row[j] = sub < up + 1 ? sub : up + 1;
+            if (row[j - 1] + 1 < row[j])
+                row[j] = row[j - 1] + 1;
+            diag = up;
+        }
+    }
+    return row[lb];
+}
+
+/* Every key of the map must be one of names[0..n). */
+static int check_keys(ctx *c, const tree *map, const char *const *names, size_t n)
+{
+    for (size_t k = 0; k < map->n; k++) {
+        const char *key = map->kid[k]->key;
+        size_t best = 99, at = 0;
+        for (size_t j = 0; j < n; j++) {
+            if (!strcmp(key, names[j])) {
+                best = 0;
+                break;
+            }
+            const size_t d = distance(key, names[j]);
+            if (d < best) {
+                best = d;
+                at = j;
+            }
+        }
+        if (best == 0)
+            continue;
+        char list[1024] = "";
+        for (size_t j = 0; j < n && strlen(list) < 900; j++)
+            snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", j ? ", " : "",
+                     names[j]);
+        if (best <= 2 || (best <= 4 && strlen(key) > 8))
+            return fail(c, map->kid[k], "unknown key (did you mean '%s'?)", names[at]);
+        return fail(c, map->kid[k], "unknown key; expected one of %s", list);
+    }
+    return 0;
+}
+
+static int need_kind(ctx *c, const tree *n, tree_kind kind)
+{
+    static const char *const what[] = {"a value", "a map of keys", "a list"};
+    if (n->kind == kind)
+        return 0;
+    return fail(c, n, "expected %s, got %s", what[kind], n->kind == TREE_SCALAR ? "a value" : kind_name(n));
+}
+
+static const tree *need(ctx *c, const tree *map, const char *key)
+{
+    const tree *t = tree_get(map, key);
+    if (!t)
+        fail(c, map, "missing '%s'", key);
+    return t;
+}
+
+/* ---- numbers ------------------------------------------------------------------- */
+
+static int to_number(const tree *n, double *out)
+{
+    if (n->kind != TREE_SCALAR || n->quoted || !*n->text)
+        return -1;
+    char *end;
+    *out = strtod(n->text, &end);
+    return *end || !isfinite(*out) ? -1 : 0;
+}
+
+static int number(ctx *c, const tree *n, double lo, double hi, double *out)
+{
+    if (to_number(n, out) || *out < lo || *out > hi) {
+        if (lo == -HUGE_VAL && hi == HUGE_VAL)
+            return fail(c, n, "expected a number, got '%s'", kind_name(n));
+        if (hi == HUGE_VAL)
+            return fail(c, n, "expected a number >= %g, got '%s'", lo, kind_name(n));
+        return fail(c, n, "expected a number in [%g, %g], got '%s'", lo, hi, kind_name(n));
+    }
+    return 0;
+}
+
+static int positive(ctx *c, const tree *n, double *out)
+{
+    if (to_number(n, out) || !(*out > 0))
+        return fail(c, n, "expected a number > 0, got '%s'", kind_name(n));
+    return 0;
+}
+
+/* A list of exactly `count` numbers (count 0: 1 to max, *got receives it). */
+static int numbers(ctx *c, const tree *n, size_t count, size_t max, double *out, size_t *got)
+{
+    const size_t want = count ? count : max;
+    if (n->kind != TREE_SEQ || (count && n->n != count) || (!count && (n->n < 1 || n->n > max))) {
+        if (count)
+            return fail(c, n, "expected a list of %zu numbers, got %s", count, kind_name(n));
+        return fail(c, n, "expected a list of 1 to %zu numbers, got %s", max, kind_name(n));
+    }
+    for (size_t k = 0; k < n->n && k < want; k++)
+        if (number(c, n->kid[k], -HUGE_VAL, HUGE_VAL, &out[k]))
+            return -1;
+    if (got)
+        *got = n->n;
+    return 0;
+}
+
+/* The text of a bound: "(0" for an open bound reported as the value next to
+ * a round one (demill_param_bounds()), "[0" for a closed one. */
+static void bound_text(double v, double towards, int lower, char *buf, size_t len)
+{
+    char a[40], b[40];
+    const double next = nextafter(v, towards);
+    snprintf(a, sizeof a, "%.17g", v);
+    snprintf(b, sizeof b, "%.17g", next);
+    if (strlen(b) < strlen(a))
+        snprintf(buf, len, lower ? "(%g" : "%g)", next);
+    else
+        snprintf(buf, len, lower ? "[%g" : "%g]", v);
+}
+
+/* ---- the registry's keys ------------------------------------------------------- */
+
+/* The keys of a group: the registry's names in [first, last] that start
+ * with `prefix`, without it. Read-only keys are past each group's settable
+ * range (docs: world 150-199, drum 450-499). */
+typedef struct group {
+    size_t n;
+    int32_t key[MAX_NAMES];
+    const char *name[MAX_NAMES];
+} group;
+
+static void registry(group *g, const char *prefix, int32_t first, int32_t last)
+{
+    g->n = 0;
+    const size_t lp = strlen(prefix);
+    for (int32_t k = first; k <= last && g->n < MAX_NAMES; k++) {
+        const char *name = demill_param_name(k);
+        if (name && !strncmp(name, prefix, lp)) {
+            g->key[g->n] = k;
+            g->name[g->n++] = name + lp;
+        }
+    }
+}
+
+static void group_world(group *g) { registry(g, "world.", 100, 149); }
+static void group_material(group *g) { registry(g, "material.", 200, 299); }
+static void group_pair(group *g) { registry(g, "pair.", 300, 399); }
+static void group_drum(group *g) { registry(g, "drum.", 400, 449); }
+
+static int32_t group_key(const group *g, const char *name)
+{
+    for (size_t k = 0; k < g->n; k++)
+        if (!strcmp(g->name[k], name))
+            return g->key[k];
+    return 0;
+}
+
+/* Names of the choices of the enum keys (material.h, world.h). */
+typedef struct choice {
+    int32_t key;
+    const char *names[7];
+} choice;
+
+static const choice choices[] = {
+    {DEMILL_WORLD_INTEGRATOR, {"", "velocity_verlet", "symplectic_euler", "iterative_refinement"}},
+    {DEMILL_PAIR_NORMAL, {"none", "linear", "hertz", "thornton", "walton_braun", "plastic_paths"}},
+    {DEMILL_PAIR_DAMPING, {"none", "viscous", "restitution"}},
+    {DEMILL_PAIR_TANGENTIAL, {"none", "coulomb", "spring", "mindlin"}},
+    {DEMILL_PAIR_ROLLING, {"none", "constant_torque", "spring"}},
+    {DEMILL_PAIR_COHESION, {"none", "jkr", "capillary"}},
+};
+
+static const choice *choice_of(int32_t key)
+{
+    for (size_t k = 0; k < sizeof choices / sizeof choices[0]; k++)
+        if (choices[k].key == key)
+            return &choices[k];
+    return NULL;
+}
+
+/* The value of a registry key's node: a number, a choice's name, or
+ * true/false for a switch; checked against the key's bounds. */
+static int key_value(ctx *c, const tree *n, int32_t key, double *out)
+{
+    const choice *ch = choice_of(key);
+    if (n->kind == TREE_SCALAR && ch)
+        for (int v = 0; v < 7; v++)
+            if (ch->names[v] && *ch->names[v] && !strcmp(n->text, ch->names[v])) {
+                *out = v;
+                return 0;
+            }
+    const char *unit = demill_param_unit(key);
+    if (n->kind == TREE_SCALAR && !strcmp(unit, "bool") &&
+        (!strcmp(n->text, "true") || !strcmp(n->text, "false"))) {
+        *out = !strcmp(n->text, "true");
+        return 0;
+    }
+    double lo, hi;
+    demill_param_bounds(key, &lo, &hi, NULL);
+    /* whole numbers and the rest of the key's checks are the setter's */
+    if (!to_number(n, out) && *out >= lo && *out <= hi)
+        return 0;
+    if (ch) {
+        char list[256] = "";
+        for (int v = 0; v < 7; v++)
+            if (ch->names[v] && *ch->names[v])
+                snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s",
+                         *list ? ", " : "", ch->names[v]);
+        return fail(c, n, "expected one of %s, got '%s'", list, kind_name(n));
+    }
+    if (!strcmp(unit, "bool"))
+        return fail(c, n, "expected true or false, got '%s'", kind_name(n));
+    char a[48], b[48], u[40] = "";
+    if (strcmp(unit, "1"))
+        snprintf(u, sizeof u, " %s", unit);
+    bound_text(lo, -HUGE_VAL, 1, a, sizeof a);
+    bound_text(hi, HUGE_VAL, 0, b, sizeof b);
+    if (hi >= 1e30 && (a[1] == '0' && !a[2]))
+        return fail(c, n, "expected a number %s 0%s, got '%s'", a[0] == '(' ? ">" : ">=", u,
+                    kind_name(n));
+    return fail(c, n, "expected a number in %s, %s%s, got '%s'", a, b, u, kind_name(n));
+}
+
+/* A library call that failed on a node: its message, after the node. */
+static int api(ctx *c, const tree *n, demill_status st)
+{
+    if (st == DEMILL_OK)
+        return 0;
+    /* the library's messages start with the key's or the function's name
+     * ("material.density: ", "wall_add_plane: "), which the node's path
+     * stands for here */
+    const char *msg = demill_world_last_error(c->s->w);
+    const size_t word = strspn(msg, "abcdefghijklmnopqrstuvwxyz_.");
+    if (word && !strncmp(msg + word, ": ", 2))
+        msg += word + 2;
+    return fail(c, n, "%s", msg);
+}
+
+/* In restart mode only the entries given with --set are applied. */
+static int applies(const ctx *c, const tree *n)
+{
+    return c->mode != SCENE_RESTART || n->line == 0;
+}
+
+/* ---- sections ------------------------------------------------------------------ */
+
+static const char *const top_keys[] = {"world", "materials", "pairs", "particles", "walls",
+                                       "drum", "bodies", "feeds", "outlets", "outputs", "stop"};
+
+static int material_index(ctx *c, const tree *n, size_t *at)
+{
+    if (n->kind == TREE_SCALAR)
+        for (size_t k = 0; k < c->s->nmat; k++)
+            if (!strcmp(c->s->matname[k], n->text)) {
+                *at = k;
+                return 0;
+            }
+    char list[512] = "";
+    for (size_t k = 0; k < c->s->nmat && strlen(list) < 400; k++)
+        snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", k ? ", " : "",
+                 c->s->matname[k]);
+    return fail(c, n, "expected a material of 'materials' (%s), got '%s'", *list ? list : "none defined",
+                kind_name(n));
+}
+
+static int material_of(ctx *c, const tree *item, demill_id *id)
+{
+    const tree *m = need(c, item, "material");
+    size_t k;
+    if (!m || material_index(c, m, &k))
+        return -1;
+    *id = c->s->mat[k];
+    return 0;
+}
+
+static const char *const world_extra[] = {"dimension", "gravity", "steps_per_contact"};
+static const char *const k_pair_extra[] = {"materials"};
+
+/* world: before anything else; a time step of "auto" is set at the end. */
+static int world_section(ctx *c, const tree *t, const tree **auto_dt)
+{
+    scene *s = c->s;
+    group g;
+    group_world(&g);
+    const char *names[MAX_NAMES + 3];
+    size_t n = 0;
+    for (size_t k = 0; k < 3; k++)
+        names[n++] = world_extra[k];
+    for (size_t k = 0; k < g.n; k++)
+        names[n++] = g.name[k];
+    *auto_dt = NULL;
+    s->dim = 3;
+    if (!t) {
+        double have = 3;
+        if (c->mode == SCENE_RESTART)
+            demill_world_get(s->w, DEMILL_WORLD_DIMENSION, &have);
+        else if (demill_world_create(3, &s->w) != DEMILL_OK)
+            return fail(c, c->root, "cannot create a world");
+        s->dim = (int)have;
+        return 0;
+    }
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, names, n))
+        return -1;
+    const tree *d = tree_get(t, "dimension");
+    double dim = 3;
+    if (d && (to_number(d, &dim) || (dim != 2 && dim != 3)))
+        return fail(c, d, "expected 2 or 3, got '%s'", kind_name(d));
+    if (c->mode == SCENE_RESTART) {
+        double have;
+        demill_world_get(s->w, DEMILL_WORLD_DIMENSION, &have);
+        if (d && dim != have)
+            return fail(c, d, "the checkpoint's world is %gD", have);
+        dim = have;
+    } else if (demill_world_create((int32_t)dim, &s->w) != DEMILL_OK) {
+        return fail(c, t, "cannot create a world");
+    }
+    s->dim = (int)dim;
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *e = t->kid[k];
+        if (!strcmp(e->key, "dimension") || !applies(c, e))
+            continue;
+        if (!strcmp(e->key, "gravity")) {
+            double gv[3];
+            if (numbers(c, e, 3, 3, gv, NULL))
+                return -1;
+            for (int j = 0; j < 3; j++)
+                if (api(c, e, demill_world_set(s->w, DEMILL_WORLD_GRAVITY_X + j, gv[j])))
+                    return -1;
+        } else if (!strcmp(e->key, "steps_per_contact")) {
+            double v;
+            if (number(c, e, 1, 1e6, &v))
+                return -1;
+        } else if (!strcmp(e->key, "time_step") && e->kind == TREE_SCALAR && !e->quoted &&
+                   !strcmp(e->text, "auto")) {
+            *auto_dt = e;
+        } else {
+            const int32_t key = group_key(&g, e->key);
+            double v;
+            if (key_value(c, e, key, &v) || api(c, e, demill_world_set(s->w, key, v)))
+                return -1;
+        }
+    }
+    return 0;
+}
+
+static int materials_section(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    s->nmat = 0;
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_MAP))
+        return -1;
+    if (t->n > SCENE_MAX_MATERIALS)
+        return fail(c, t, "expected at most %d materials", SCENE_MAX_MATERIALS);
+    demill_id have[SCENE_MAX_MATERIALS];
+    size_t nhave = 0;
+    if (c->mode == SCENE_RESTART) {
+        demill_world_ids(s->w, DEMILL_KIND_MATERIAL, have, SCENE_MAX_MATERIALS, &nhave);
+        if (nhave != t->n)
+            return fail(c, t, "the checkpoint has %zu materials, the scene %zu", nhave, t->n);
+    }
+    group g;
+    group_material(&g);
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *m = t->kid[k];
+        if (need_kind(c, m, TREE_MAP) || check_keys(c, m, g.name, g.n))
+            return -1;
+        s->matname[k] = m->key;
+        if (c->mode == SCENE_RESTART)
+            s->mat[k] = have[k];
+        else if (api(c, m, demill_material_create(s->w, &s->mat[k])))
+            return -1;
+        s->nmat = k + 1;
+        for (size_t j = 0; j < m->n; j++) {
+            const tree *e = m->kid[j];
+            double v;
+            if (!applies(c, e))
+                continue;
+            const int32_t key = group_key(&g, e->key);
+            if (key_value(c, e, key, &v) || api(c, e, demill_material_set(s->w, s->mat[k], key, v)))
+                return -1;
+        }
+    }
+    return 0;
+}
+
+static int pairs_section(ctx *c, const tree *t)
+{
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_SEQ))
+        return -1;
+    group g;
+    group_pair(&g);
+    const char *names[MAX_NAMES + 1] = {k_pair_extra[0]};
+    for (size_t k = 0; k < g.n; k++)
+        names[k + 1] = g.name[k];
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *p = t->kid[k];
+        if (need_kind(c, p, TREE_MAP) || check_keys(c, p, names, g.n + 1))
+            return -1;
+        const tree *m = need(c, p, "materials");
+        if (!m)
+            return -1;
+        size_t a, b;
+        if (m->kind != TREE_SEQ || m->n != 2)
+            return fail(c, m, "expected a list of two materials, got %s", kind_name(m));
+        if (material_index(c, m->kid[0], &a) || material_index(c, m->kid[1], &b))
+            return -1;
+        for (size_t j = 0; j < p->n; j++) {
+            const tree *e = p->kid[j];
+            double v;
+            if (!strcmp(e->key, "materials") || !applies(c, e))
+                continue;
+            const int32_t key = group_key(&g, e->key);
+            if (key_value(c, e, key, &v) ||
+                api(c, e, demill_pair_set(c->s->w, c->s->mat[a], c->s->mat[b], key, v)))
+                return -1;
+        }
+    }
+    return 0;
+}
+
+static const char *const drum_extra[] = {"material", "start_time", "parts"};
+static const char *const k_parts[] = {"shell", "caps", "lifters"}; /* DEMILL_DRUM_PART_* 1-3 */
+
+/* parts: a material of their own for the shell, caps or lifters. */
+static int drum_parts(ctx *c, const tree *t)
+{
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_parts, 3))
+        return -1;
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *e = t->kid[k];
+        size_t m;
+        int32_t part = 1;
+        while (strcmp(e->key, k_parts[part - 1]))
+            part++;
+        if (material_index(c, e, &m))
+            return -1;
+        if (applies(c, e) &&
+            api(c, e, demill_drum_set_material(c->s->w, c->s->drum, part, c->s->mat[m])))
+            return -1;
+    }
+    return 0;
+}
+
+static int drum_section(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    s->drum = DEMILL_ID_NONE;
+    s->drum_start = 0;
+    s->speed_key = 0;
+    if (!t)
+        return 0;
+    group g;
+    group_drum(&g);
+    const char *names[MAX_NAMES + 3] = {drum_extra[0], drum_extra[1], drum_extra[2]};
+    for (size_t k = 0; k < g.n; k++)
+        names[k + 3] = g.name[k];
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, names, g.n + 3))
+        return -1;
+    const tree *st = tree_get(t, "start_time");
+    if (st && number(c, st, 0, HUGE_VAL, &s->drum_start))
+        return -1;
+    if (c->mode == SCENE_RESTART) {
+        size_t n = 0;
+        demill_world_ids(s->w, DEMILL_KIND_DRUM, &s->drum, 1, &n);
+        if (n != 1)
+            return fail(c, t, "the checkpoint has no drum");
+    } else {
+        demill_id m;
+        if (material_of(c, t, &m) || api(c, t, demill_drum_create(s->w, m, &s->drum)))
+            return -1;
+    }
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *e = t->kid[k];
+        if (!strcmp(e->key, "material") || !strcmp(e->key, "start_time"))
+            continue;
+        if (!strcmp(e->key, "parts")) {
+            if (drum_parts(c, e))
+                return -1;
+            continue;
+        }
+        const int32_t key = group_key(&g, e->key);
+        double v;
+        if (key_value(c, e, key, &v))
+            return -1;
+        if (key == DEMILL_DRUM_SPEED || key == DEMILL_DRUM_SPEED_RPM ||
+            key == DEMILL_DRUM_SPEED_FRACTION) {
+            if (s->speed_key)
+                return fail(c, e, "one speed only (speed, speed_rpm or speed_fraction)");
+            s->speed_key = key; /* set at start_time by the runner */
+            s->speed_value = v;
+            s->speed_set = e->line == 0;
+            continue;
+        }
+        if (applies(c, e) && api(c, e, demill_drum_set(s->w, s->drum, key, v)))
+            return -1;
+    }
+    return 0;
+}
+
+static const char *const k_sizes[] = {"classes", "rosin_rammler", "normal"};
+
+/* sizes: one of classes: [[d, fraction], ...], rosin_rammler: [d63, n, d_min,
+ * d_max], normal: [mean, sd, d_min, d_max]. */
+static int sizes_of(ctx *c, const tree *t, int32_t *dist, double *params, size_t *np)
+{
+
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_sizes, 3))
+        return -1;
+    if (t->n != 1)
+        return fail(c, t, "expected one of classes, rosin_rammler or normal");
+    const tree *e = t->kid[0];
+    if (!strcmp(e->key, "classes")) {
+        *dist = DEMILL_SIZES_CLASSES;
+        if (e->kind != TREE_SEQ || e->n < 1 || e->n > 32)
+            return fail(c, e, "expected a list of 1 to 32 [diameter, mass fraction] pairs");
+        for (size_t k = 0; k < e->n; k++)
+            if (numbers(c, e->kid[k], 2, 2, params + 2 * k, NULL))
+                return -1;
+        *np = 2 * e->n;
+        return 0;
+    }
+    *dist = !strcmp(e->key, "normal") ? DEMILL_SIZES_NORMAL : DEMILL_SIZES_ROSIN_RAMMLER;
+    *np = 4;
+    return numbers(c, e, 4, 4, params, NULL);
+}
+
+static const char *const k_region[] = {"box", "cylinder", "half_space"};
+
+/* A region: drum, {box: [6]}, {cylinder: [7]} or, where `half` allows it,
+ * {half_space: [point, normal]}. */
+static int region_of(ctx *c, const tree *t, int half, int32_t *kind, double *params, size_t *np)
+{
+    if (t->kind == TREE_SCALAR && !strcmp(t->text, "drum")) {
+        if (!tree_get(c->root, "drum"))
+            return fail(c, t, "the region drum needs a 'drum' section");
+        *kind = DEMILL_REGION_DRUM;
+        *np = 0;
+        return 0;
+    }
+    if (t->kind != TREE_MAP || t->n != 1)
+        return fail(c, t, "expected drum, {box: [x_lo, y_lo, z_lo, x_hi, y_hi, z_hi]}, "
+                          "{cylinder: [x0, y0, z0, x1, y1, z1, radius]}%s",
+                    half ? " or {half_space: [x, y, z, nx, ny, nz]}" : "");
+    if (check_keys(c, t, k_region, half ? 3 : 2))
+        return -1;
+    const char *k = t->kid[0]->key;
+    *kind = !strcmp(k, "box") ? DEMILL_REGION_BOX
+            : !strcmp(k, "cylinder") ? DEMILL_REGION_CYLINDER : DEMILL_REGION_HALF_SPACE;
+    *np = *kind == DEMILL_REGION_CYLINDER ? 7 : 6;
+    return numbers(c, t->kid[0], *np, *np, params, NULL);
+}
+
+/* A CSV file of particles: a header naming the columns (x, y, z, radius,
+ * vx, vy, vz; z and the velocities optional), then one particle a row. */
+static int csv_particles(ctx *c, const tree *n, demill_id mat)
+{
+    char path[4096];
+    if (n->kind != TREE_SCALAR || !*n->text)
+        return fail(c, n, "expected a file name, got %s", kind_name(n));
+    if (n->text[0] == '/')
+        snprintf(path, sizeof path, "%s", n->text);
+    else
+        snprintf(path, sizeof path, "%s/%s", c->dir, n->text);
+    if (c->mode == SCENE_CHECK)
+        return 0;
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return fail(c, n, "cannot open %s", path);
+    static const char *const cols[] = {"x", "y", "z", "radius", "vx", "vy", "vz"};
+    int at[7] = {-1, -1, -1, -1, -1, -1, -1}, ncol = 0;
+    char line[4096];
+    int rc = -1;
+    double *pos = NULL, *rad = NULL, *vel = NULL;
+    size_t np = 0, cap = 0;
+    long row = 1;
+    if (!fgets(line, sizeof line, f)) {
+        fail(c, n, "%s: empty", path);
+        goto out;
+    }
+    for (char *save, *tok = strtok_r(line, ",\r\n", &save); tok; tok = strtok_r(NULL, ",\r\n", &save)) {
+        while (*tok == ' ')
+            tok++;
+        int j = 0;
+        while (j < 7 && strcmp(tok, cols[j]))
+            j++;
+        if (j == 7 || at[j] >= 0) {
+            fail(c, n, "%s:1: column '%s': expected x, y, z, radius, vx, vy or vz, each once", path, tok);
+            goto out;
+        }
+        at[j] = ncol++;
+    }
+    if (at[0] < 0 || at[1] < 0 || at[3] < 0) {
+        fail(c, n, "%s:1: expected columns x, y and radius at least", path);
+        goto out;
+    }
+    while (fgets(line, sizeof line, f)) {
+        row++;
+        if (strspn(line, " \r\n") == strlen(line))
+            continue;
+        double v[7] = {0};
+        char *p = line;
+        for (int k = 0; k < ncol; k++) {
+            char *end;
+            const double x = strtod(p, &end);
+            if (end == p || !isfinite(x) || (*end != ',' && k + 1 < ncol)) {
+                fail(c, n, "%s:%ld: column %d: expected a number", path, row, k + 1);
+                goto out;
+            }
+            for (int j = 0; j < 7; j++)
+                if (at[j] == k)
+                    v[j] = x;
+            p = end + (*end == ',');
+        }
+        if (np == cap) {
+            cap = cap ? 2 * cap : 1024;
+            double *a = realloc(pos, 3 * cap * sizeof *a), *b = a ? realloc(rad, cap * sizeof *b) : NULL;
+            pos = a ? a : pos;
+            rad = b ? b : rad;
+            double *d = b ? realloc(vel, 3 * cap * sizeof *d) : NULL;
+            vel = d ? d : vel;
+            if (!d) {
+                fail(c, n, "%s: out of memory", path);
+                goto out;
+            }
+        }
+        for (int j = 0; j < 3; j++) {
+            pos[3 * np + j] = v[j];
+            vel[3 * np + j] = v[4 + j];
+        }
+        rad[np++] = v[3];
+    }
+    rc = np ? api(c, n, demill_particles_add(c->s->w, mat, np, pos, rad, vel, 0, NULL))
+            : fail(c, n, "%s: no particles", path);
+out:
+    fclose(f);
+    free(pos);
+    free(rad);
+    free(vel);
+    return rc;
+}
+
+static const char *const k_particles[] = {"material", "csv",   "region",   "sizes",
+                                          "count",    "mass",  "fraction", "seed"};
+
+static int particles_section(ctx *c, const tree *t)
+{
+
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_SEQ))
+        return -1;
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *p = t->kid[k];
+        demill_id mat;
+        if (need_kind(c, p, TREE_MAP) || check_keys(c, p, k_particles, 8))
+            return -1;
+        if (c->mode == SCENE_RESTART && applies(c, p) )
+            return fail(c, p, "particles cannot change on a restart");
+        if (material_of(c, p, &mat))
+            return -1;
+        const tree *csv = tree_get(p, "csv"), *region = tree_get(p, "region");
+        if (!!csv == !!region)
+            return fail(c, p, "expected either csv or region");
+        if (csv) {
+            if (p->n != 2)
+                return fail(c, p, "a csv entry has material and csv only");
+            if (c->mode != SCENE_RESTART && csv_particles(c, csv, mat))
+                return -1;
+            continue;
+        }
+        int32_t kind = 0, dist = 0, target = 0;
+        double rp[7], sp[64], value = 0, seed = 1;
+        size_t nr = 0, ns = 0;
+        const tree *sz = need(c, p, "sizes");
+        if (region_of(c, region, 0, &kind, rp, &nr) || !sz || sizes_of(c, sz, &dist, sp, &ns))
+            return -1;
+        static const char *const targets[] = {"count", "mass", "fraction"};
+        for (int j = 0; j < 3; j++) {
+            const tree *v = tree_get(p, targets[j]);
+            if (!v)
+                continue;
+            if (target)
+                return fail(c, v, "one of count, mass or fraction only");
+            target = j + 1; /* DEMILL_FILL_COUNT, _MASS, _FRACTION */
+            if (positive(c, v, &value))
+                return -1;
+        }
+        if (!target)
+            return fail(c, p, "missing one of count, mass or fraction");
+        const tree *sd = tree_get(p, "seed");
+        if (sd && (number(c, sd, 0, 9007199254740992.0, &seed) || seed != floor(seed)))
+            return fail(c, sd, "expected a whole number >= 0, got '%s'", kind_name(sd));
+        if (c->mode != SCENE_BUILD)
+            continue;
+        if (api(c, p, demill_fill_region(c->s->w, kind, rp, nr, mat, dist, sp, ns, target, value,
+                                         (uint64_t)seed, NULL, 0, NULL)))
+            return -1;
+    }
+    return 0;
+}
+
+static const char *const k_motion[] = {"velocity", "angular_velocity", "centre"};
+
+static const char *const k_harmonic[] = {"mode", "axis", "amplitude", "frequency", "phase"};
+
+static int motion_of(ctx *c, const tree *wall, demill_id id)
+{
+    const tree *m = tree_get(wall, "motion"), *h = tree_get(wall, "harmonic"),
+               *sv = tree_get(wall, "surface_velocity");
+    if (m && h)
+        return fail(c, h, "a wall has motion or harmonic, not both");
+    if (m) {
+
+        double v[3][3];
+        const tree *e[3];
+        if (need_kind(c, m, TREE_MAP) || check_keys(c, m, k_motion, 3))
+            return -1;
+        for (int j = 0; j < 3; j++)
+            if ((e[j] = tree_get(m, k_motion[j])) && numbers(c, e[j], 3, 3, v[j], NULL))
+                return -1;
+        if (c->mode == SCENE_BUILD &&
+            api(c, m, demill_wall_set_motion(c->s->w, id, e[0] ? v[0] : NULL, e[1] ? v[1] : NULL,
+                                             e[2] ? v[2] : NULL)))
+            return -1;
+    }
+    if (h) {
+
+        double axis[3], amp, freq, phase = 0;
+        if (need_kind(c, h, TREE_MAP) || check_keys(c, h, k_harmonic, 5))
+            return -1;
+        const tree *mode = need(c, h, "mode"), *ax = need(c, h, "axis"),
+                   *a = need(c, h, "amplitude"), *fr = need(c, h, "frequency"),
+                   *ph = tree_get(h, "phase");
+        if (!mode || !ax || !a || !fr)
+            return -1;
+        int32_t md;
+        if (mode->kind == TREE_SCALAR && !strcmp(mode->text, "translation"))
+            md = DEMILL_HARMONIC_TRANSLATION;
+        else if (mode->kind == TREE_SCALAR && !strcmp(mode->text, "rotation"))
+            md = DEMILL_HARMONIC_ROTATION;
+        else
+            return fail(c, mode, "expected translation or rotation, got '%s'", kind_name(mode));
+        if (numbers(c, ax, 3, 3, axis, NULL) || number(c, a, -HUGE_VAL, HUGE_VAL, &amp) ||
+            positive(c, fr, &freq) || (ph && number(c, ph, -HUGE_VAL, HUGE_VAL, &phase)))
+            return -1;
+        if (c->mode == SCENE_BUILD &&
+            api(c, h, demill_wall_set_harmonic(c->s->w, id, md, axis, amp, freq, phase)))
+            return -1;
+    }
+    if (sv) {
+        double v[3];
+        if (numbers(c, sv, 3, 3, v, NULL) ||
+            (c->mode == SCENE_BUILD && api(c, sv, demill_wall_set_surface_velocity(c->s->w, id, v))))
+            return -1;
+    }
+    return 0;
+}
+
+static const char *const k_bodies[] = {"mass", "centre", "free_axes", "gravity", "springs", "force"};
+static const char *const k_spring[] = {"axis", "stiffness", "damping", "rest"};
+static const char *const k_force[] = {"amplitude", "frequency", "phase"};
+static const char *const k_axes[] = {"x", "y", "z"};
+
+/* An axis's name: 0 for x, 1 for y, 2 for z; -1 with a message. */
+static int axis_of(ctx *c, const tree *n)
+{
+    for (int k = 0; k < 3; k++)
+        if (n->kind == TREE_SCALAR && !strcmp(n->text, k_axes[k]))
+            return k;
+    return fail(c, n, "expected x, y or z, got '%s'", kind_name(n));
+}
+
+/* bodies: a map of named bodies (demill/body.h), before the walls that
+ * name them. */
+static int bodies_section(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    s->nbody = 0;
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_MAP))
+        return -1;
+    if (t->n > SCENE_MAX_BODIES)
+        return fail(c, t, "expected at most %d bodies", SCENE_MAX_BODIES);
+    if (c->mode == SCENE_RESTART) {
+        size_t have = 0;
+        demill_world_ids(s->w, DEMILL_KIND_BODY, s->body, SCENE_MAX_BODIES, &have);
+        if (have != t->n)
+            return fail(c, t, "the checkpoint has %zu bodies, the scene %zu", have, t->n);
+    }
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *b = t->kid[k], *e;
+        double mass, centre[3] = {0, 0, 0};
+        int32_t axes = 0;
+        uint32_t flags = 0;
+        if (need_kind(c, b, TREE_MAP) || check_keys(c, b, k_bodies, sizeof k_bodies / sizeof k_bodies[0]))
+            return -1;
+        if (c->mode == SCENE_RESTART && applies(c, b))
+            return fail(c, b, "bodies cannot change on a restart");
+        s->bodyname[k] = b->key;
+        s->nbody = k + 1;
+        if (!(e = need(c, b, "mass")) || positive(c, e, &mass))
+            return -1;
+        if ((e = tree_get(b, "centre")) && numbers(c, e, 3, 3, centre, NULL))
+            return -1;
+        if ((e = tree_get(b, "free_axes"))) {
+            if (e->kind != TREE_SEQ)
+                return fail(c, e, "expected a list of axes (x, y, z), got %s", kind_name(e));
+            for (size_t j = 0; j < e->n; j++) {
+                const int ax = axis_of(c, e->kid[j]);
+                if (ax < 0)
+                    return -1;
+                axes |= DEMILL_BODY_AXIS_X << ax;
+            }
+        }
+        if ((e = tree_get(b, "gravity"))) {
+            if (e->kind != TREE_SCALAR || (strcmp(e->text, "true") && strcmp(e->text, "false")))
+                return fail(c, e, "expected true or false, got '%s'", kind_name(e));
+            flags = strcmp(e->text, "true") ? DEMILL_BODY_NO_GRAVITY : 0;
+        }
+        if (c->mode != SCENE_RESTART &&
+            api(c, b, demill_body_add(s->w, mass, centre, axes, flags, &s->body[k])))
+            return -1;
+        if ((e = tree_get(b, "springs"))) {
+            if (e->kind != TREE_SEQ)
+                return fail(c, e, "expected a list of springs, got %s", kind_name(e));
+            for (size_t j = 0; j < e->n; j++) {
+                const tree *sp = e->kid[j], *ax, *st, *dm, *rs;
+                double v[3] = {0, 0, 0};
+                int a;
+                if (need_kind(c, sp, TREE_MAP) || check_keys(c, sp, k_spring, 4) ||
+                    !(ax = need(c, sp, "axis")) || (a = axis_of(c, ax)) < 0 ||
+                    !(st = need(c, sp, "stiffness")) || number(c, st, 0, HUGE_VAL, &v[0]) ||
+                    ((dm = tree_get(sp, "damping")) && number(c, dm, 0, HUGE_VAL, &v[1])) ||
+                    ((rs = tree_get(sp, "rest")) && number(c, rs, -HUGE_VAL, HUGE_VAL, &v[2])))
+                    return -1;
+                if (c->mode != SCENE_RESTART &&
+                    api(c, sp, demill_body_set_spring(s->w, s->body[k], DEMILL_BODY_AXIS_X << a, v[0],
+                                                      v[1], v[2])))
+                    return -1;
+            }
+        }
+        if ((e = tree_get(b, "force"))) {
+            const tree *am, *fr, *ph;
+            double amp[3], freq, phase = 0;
+            if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_force, 3) ||
+                !(am = need(c, e, "amplitude")) || numbers(c, am, 3, 3, amp, NULL) ||
+                !(fr = need(c, e, "frequency")) || number(c, fr, 0, HUGE_VAL, &freq) ||
+                ((ph = tree_get(e, "phase")) && number(c, ph, -HUGE_VAL, HUGE_VAL, &phase)))
+                return -1;
+            if (c->mode != SCENE_RESTART &&
+                api(c, e, demill_body_set_force(s->w, s->body[k], amp, freq, phase)))
+                return -1;
+        }
+    }
+    return 0;
+}
+
+/* The wall shapes: their vectors (3 numbers each), then their numbers;
+ * keys past `required` are optional (0, or no caps). */
+typedef struct shape {
+    const char *name;
+    int nvec, nnum, required, caps;
+    const char *keys[6];
+} shape;
+
+static const shape shapes[] = {
+    {"plane", 2, 0, 2, 0, {"point", "normal"}},
+    {"rectangle", 3, 2, 5, 0, {"centre", "normal", "direction", "half_width", "half_height"}},
+    {"disc", 2, 2, 3, 0, {"centre", "normal", "outer_radius", "inner_radius"}},
+    {"cylinder", 2, 2, 4, 1, {"point", "axis", "radius", "length", "caps"}},
+    {"cone", 2, 3, 5, 1, {"point", "axis", "radius_start", "radius_end", "length", "caps"}},
+};
+#define NSHAPES (sizeof shapes / sizeof shapes[0])
+static const char *const k_caps[] = {"none", "start", "end", "both"};
+static const char *const k_stl[] = {"file", "scale", "transform"};
+static const char *const k_polyline[] = {"points", "closed"};
+static const char *const k_walls[] = {"material", "plane",  "rectangle", "disc",
+                                      "cylinder", "cone",   "stl",       "polyline",
+                                      "motion",   "harmonic", "surface_velocity", "body"};
+
+static int add_shape(ctx *c, const shape *sh, const tree *t, demill_id mat, demill_id *id)
+{
+    double v[3][3] = {{0}}, x[3] = {0};
+    int32_t caps = DEMILL_CAPS_NONE;
+    const int nkeys = sh->nvec + sh->nnum + sh->caps;
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, sh->keys, (size_t)nkeys))
+        return -1;
+    for (int k = 0; k < nkeys; k++) {
+        const tree *e = k < sh->required ? need(c, t, sh->keys[k]) : tree_get(t, sh->keys[k]);
+        if (k < sh->required && !e)
+            return -1;
+        if (!e)
+            continue;
+        if (k < sh->nvec) {
+            if (numbers(c, e, 3, 3, v[k], NULL))
+                return -1;
+        } else if (k < sh->nvec + sh->nnum) {
+            if (number(c, e, -HUGE_VAL, HUGE_VAL, &x[k - sh->nvec]))
+                return -1;
+        } else {
+            while (caps < 4 && (e->kind != TREE_SCALAR || strcmp(e->text, k_caps[caps])))
+                caps++;
+            if (caps == 4)
+                return fail(c, e, "expected none, start, end or both, got '%s'", kind_name(e));
+        }
+    }
+    if (c->mode != SCENE_BUILD)
+        return 0;
+    demill_world *w = c->s->w;
+    demill_status st;
+    switch (sh - shapes) {
+    case 0: st = demill_wall_add_plane(w, mat, v[0], v[1], id); break;
+    case 1: st = demill_wall_add_rectangle(w, mat, v[0], v[1], v[2], x[0], x[1], id); break;
+    case 2: st = demill_wall_add_disc(w, mat, v[0], v[1], x[0], x[1], id); break;
+    case 3: st = demill_wall_add_cylinder(w, mat, v[0], v[1], x[0], x[1], caps, id); break;
+    default: st = demill_wall_add_cone(w, mat, v[0], v[1], x[0], x[1], x[2], caps, id); break;
+    }
+    return api(c, t, st);
+}
+
+static int add_stl(ctx *c, const tree *stl, demill_id mat, demill_id *id)
+{
+    double scale = 1, tr[12];
+    const tree *f, *sc, *tf;
+    if (need_kind(c, stl, TREE_MAP) || check_keys(c, stl, k_stl, 3) || !(f = need(c, stl, "file")))
+        return -1;
+    if (f->kind != TREE_SCALAR || !*f->text)
+        return fail(c, f, "expected a file name, got %s", kind_name(f));
+    if ((sc = tree_get(stl, "scale")) && positive(c, sc, &scale))
+        return -1;
+    if ((tf = tree_get(stl, "transform")) && numbers(c, tf, 12, 12, tr, NULL))
+        return -1;
+    char path[4096];
+    snprintf(path, sizeof path, "%s%s%s", f->text[0] == '/' ? "" : c->dir,
+             f->text[0] == '/' ? "" : "/", f->text);
+    if (c->mode != SCENE_BUILD)
+        return 0;
+    return api(c, stl, demill_wall_load_stl(c->s->w, mat, path, scale, tf ? tr : NULL, id));
+}
+
+/* A 2D polyline: points [[x, y, 0], ...], closed or not. */
+static int add_polyline(ctx *c, const tree *t, demill_id mat, demill_id *id)
+{
+    const tree *pts, *cl;
+    int closed = 0;
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_polyline, 2) || !(pts = need(c, t, "points")))
+        return -1;
+    if (pts->kind != TREE_SEQ || pts->n < 2 || pts->n > 100000)
+        return fail(c, pts, "expected a list of 2 to 100000 points [x, y, 0], got %s", kind_name(pts));
+    if ((cl = tree_get(t, "closed"))) {
+        if (cl->kind != TREE_SCALAR || (strcmp(cl->text, "true") && strcmp(cl->text, "false")))
+            return fail(c, cl, "expected true or false, got '%s'", kind_name(cl));
+        closed = !strcmp(cl->text, "true");
+    }
+    double *xyz = malloc(3 * pts->n * sizeof *xyz);
+    if (!xyz)
+        return fail(c, t, "out of memory");
+    int rc = 0;
+    for (size_t k = 0; k < pts->n && !rc; k++)
+        rc = numbers(c, pts->kid[k], 3, 3, xyz + 3 * k, NULL);
+    if (!rc && c->mode == SCENE_BUILD)
+        rc = api(c, t, demill_wall_add_polyline(c->s->w, mat, pts->n, xyz, closed, id));
+    free(xyz);
+    return rc;
+}
+
+static int walls_section(ctx *c, const tree *t)
+{
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_SEQ))
+        return -1;
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *wl = t->kid[k];
+        demill_id mat, id = DEMILL_ID_NONE;
+        if (need_kind(c, wl, TREE_MAP) || check_keys(c, wl, k_walls, sizeof k_walls / sizeof k_walls[0]))
+            return -1;
+        if (c->mode == SCENE_RESTART && applies(c, wl))
+            return fail(c, wl, "walls cannot change on a restart");
+        if (material_of(c, wl, &mat))
+            return -1;
+        const tree *geometry = NULL;
+        size_t which = NSHAPES; /* NSHAPES: stl; NSHAPES + 1: polyline */
+        for (size_t j = 0; j <= NSHAPES + 1; j++) {
+            const tree *g = tree_get(wl, j < NSHAPES ? shapes[j].name : j == NSHAPES ? "stl" : "polyline");
+            if (g && geometry)
+                return fail(c, g, "a wall has one shape (plane, rectangle, disc, cylinder, cone, stl or "
+                                  "polyline)");
+            if (g) {
+                geometry = g;
+                which = j;
+            }
+        }
+        if (!geometry)
+            return fail(c, wl, "missing its shape: plane, rectangle, disc, cylinder, cone, stl or polyline");
+        if (which < NSHAPES ? add_shape(c, &shapes[which], geometry, mat, &id)
+            : which == NSHAPES ? add_stl(c, geometry, mat, &id)
+                               : add_polyline(c, geometry, mat, &id))
+            return -1;
+        if (motion_of(c, wl, id))
+            return -1;
+        const tree *b = tree_get(wl, "body");
+        if (b) {
+            size_t j = 0;
+            while (j < c->s->nbody && (b->kind != TREE_SCALAR || strcmp(b->text, c->s->bodyname[j])))
+                j++;
+            if (j == c->s->nbody)
+                return fail(c, b, "expected a body of 'bodies', got '%s'", kind_name(b));
+            if (c->mode == SCENE_BUILD && api(c, b, demill_body_attach_wall(c->s->w, c->s->body[j], id)))
+                return -1;
+        }
+    }
+    return 0;
+}
+
+static const char *const k_feeds[] = {"material", "region", "sizes", "mass_rate", "velocity",
+                                      "start", "stop", "seed"};
+static const char *const k_outlets[] = {"region", "edges", "interval"};
+
+static int feeds_section(ctx *c, const tree *t)
+{
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_SEQ))
+        return -1;
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *f = t->kid[k], *e;
+        demill_id mat, id;
+        int32_t kind = 0, dist = 0;
+        double rp[7], sp[64], rate, vel[3] = {0, 0, 0}, start = 0, stop = INFINITY, seed = 1;
+        size_t nr = 0, ns = 0;
+        if (need_kind(c, f, TREE_MAP) || check_keys(c, f, k_feeds, sizeof k_feeds / sizeof k_feeds[0]))
+            return -1;
+        if (c->mode == SCENE_RESTART && applies(c, f))
+            return fail(c, f, "feeds cannot change on a restart");
+        const tree *region = need(c, f, "region"), *sz = region ? need(c, f, "sizes") : NULL,
+                   *mr = sz ? need(c, f, "mass_rate") : NULL;
+        if (!mr || material_of(c, f, &mat) || region_of(c, region, 0, &kind, rp, &nr) ||
+            sizes_of(c, sz, &dist, sp, &ns) || positive(c, mr, &rate))
+            return -1;
+        if ((e = tree_get(f, "velocity")) && numbers(c, e, 3, 3, vel, NULL))
+            return -1;
+        if ((e = tree_get(f, "start")) && number(c, e, -HUGE_VAL, HUGE_VAL, &start))
+            return -1;
+        if ((e = tree_get(f, "stop")) && number(c, e, start, HUGE_VAL, &stop))
+            return -1;
+        if ((e = tree_get(f, "seed")) && (number(c, e, 0, 9007199254740992.0, &seed) || seed != floor(seed)))
+            return fail(c, e, "expected a whole number >= 0, got '%s'", kind_name(e));
+        if (c->mode == SCENE_BUILD &&
+            api(c, f, demill_feed_create(c->s->w, kind, rp, nr, mat, dist, sp, ns, rate, vel, start,
+                                         stop, (uint64_t)seed, &id)))
+            return -1;
+    }
+    return 0;
+}
+
+static int outlets_section(ctx *c, const tree *t)
+{
+    c->s->noutlets = 0;
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_SEQ))
+        return -1;
+    if (t->n > SCENE_MAX_OUTLETS)
+        return fail(c, t, "expected at most %d outlets", SCENE_MAX_OUTLETS);
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *o = t->kid[k], *e;
+        int32_t kind = 0;
+        double rp[7], edges[31], interval = 0.1;
+        size_t nr = 0, ne = 0;
+        if (need_kind(c, o, TREE_MAP) || check_keys(c, o, k_outlets, 3))
+            return -1;
+        if (c->mode == SCENE_RESTART && applies(c, o))
+            return fail(c, o, "outlets cannot change on a restart");
+        const tree *region = need(c, o, "region");
+        if (!region || region_of(c, region, 1, &kind, rp, &nr))
+            return -1;
+        if ((e = tree_get(o, "edges")) && numbers(c, e, 0, 31, edges, &ne))
+            return -1;
+        if ((e = tree_get(o, "interval")) && positive(c, e, &interval))
+            return -1;
+        if (c->mode == SCENE_BUILD &&
+            api(c, o, demill_outlet_create(c->s->w, kind, rp, nr, ne, edges, interval,
+                                           &c->s->outlet[k])))
+            return -1;
+        c->s->noutlets = c->mode == SCENE_BUILD ? k + 1 : 0;
+    }
+    return 0;
+}
+
+/* The bodies' fields by name, with the components x, y and z. */
+static const struct {
+    const char *name;
+    int32_t field;
+} body_fields[] = {{"position", DEMILL_BODY_POSITION},
+                   {"velocity", DEMILL_BODY_VELOCITY},
+                   {"force_particles", DEMILL_BODY_FORCE_PARTICLES},
+                   {"force_spring", DEMILL_BODY_FORCE_SPRING},
+                   {"force_damper", DEMILL_BODY_FORCE_DAMPER},
+                   {"force_external", DEMILL_BODY_FORCE_EXTERNAL}};
+
+/* A quantity by name: a world.* or drum.* key of the registry, or
+ * body.NAME.FIELD_C (FIELD a body field, C x, y or z). */
+static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
+{
+    *q = (scene_quantity){.body = -1};
+    if (n->kind == TREE_SCALAR) {
+        q->name = n->text;
+        for (int32_t k = 100; k < 500 && !q->key; k++) {
+            const char *name = demill_param_name(k);
+            if (name && !strcmp(name, n->text) && (k < 200 || k >= 400))
+                q->key = k;
+        }
+        if (q->key >= 400 && !tree_get(c->root, "drum"))
+            return fail(c, n, "a drum quantity without a drum");
+        if (q->key)
+            return 0;
+        const char *dot = strrchr(n->text, '.'), *under = dot ? strrchr(dot, '_') : NULL;
+        if (!strncmp(n->text, "body.", 5) && dot > n->text + 5 && under && under[1] &&
+            !under[2] && strchr("xyz", under[1])) {
+            for (size_t b = 0; b < c->s->nbody; b++)
+                if (strlen(c->s->bodyname[b]) == (size_t)(dot - n->text - 5) &&
+                    !strncmp(c->s->bodyname[b], n->text + 5, (size_t)(dot - n->text - 5)))
+                    q->body = (int)b;
+            for (size_t f = 0; f < sizeof body_fields / sizeof body_fields[0]; f++)
+                if (strlen(body_fields[f].name) == (size_t)(under - dot - 1) &&
+                    !strncmp(body_fields[f].name, dot + 1, (size_t)(under - dot - 1)))
+                    q->field = body_fields[f].field;
+            q->comp = under[1] - 'x';
+            if (q->body >= 0 && q->field && q->comp < c->s->dim)
+                return 0;
+        }
+    }
+    return fail(c, n, "expected a world.* or drum.* quantity of the parameter registry (e.g. "
+                      "world.time, drum.power) or body.NAME.FIELD_x (FIELD position, velocity, "
+                      "force_particles, force_spring, force_damper or force_external), got '%s'",
+                kind_name(n));
+}
+
+demill_status scene_quantity_read(const scene *s, const scene_quantity *q, double *value)
+{
+    if (q->body >= 0) {
+        double v[3];
+        const demill_status st = demill_body_get(s->w, s->body[q->body], q->field, v);
+        *value = v[q->comp];
+        return st;
+    }
+    return q->key < 400 ? demill_world_get(s->w, q->key, value)
+                        : demill_drum_get(s->w, s->drum, q->key, value);
+}
+
+static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
+                                        "checkpoint_every", "pictures", "power_by_size"};
+
+static int outputs_section(ctx *c, const tree *t)
+{
+
+    scene *s = c->s;
+    s->every = 1e-3;
+    s->csv_file[0] = '\0';
+    s->ncol = 0;
+    s->vtk_every = s->checkpoint_every = 0;
+    s->charge_png = s->power_png = 0;
+    s->nedges = 0;
+    if (!t)
+        return 0;
+    const tree *e;
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 7))
+        return -1;
+    if ((e = tree_get(t, "every")) && positive(c, e, &s->every))
+        return -1;
+    if ((e = tree_get(t, "vtk_every")) && number(c, e, 0, HUGE_VAL, &s->vtk_every))
+        return -1;
+    if ((e = tree_get(t, "checkpoint_every")) && number(c, e, 0, HUGE_VAL, &s->checkpoint_every))
+        return -1;
+    if ((e = tree_get(t, "csv"))) {
+        if (e->kind != TREE_SCALAR || !*e->text || strchr(e->text, '/') || strlen(e->text) > 200)
+            return fail(c, e, "expected a file name without a folder, got %s", kind_name(e));
+        snprintf(s->csv_file, sizeof s->csv_file, "%s", e->text);
+    }
+    if ((e = tree_get(t, "columns"))) {
+        if (e->kind != TREE_SEQ || e->n < 1 || e->n > SCENE_MAX_COLUMNS)
+            return fail(c, e, "expected a list of 1 to %d quantities", SCENE_MAX_COLUMNS);
+        for (size_t k = 0; k < e->n; k++)
+            if (quantity_of(c, e->kid[k], &s->col[k]))
+                return -1;
+        s->ncol = e->n;
+    }
+    if ((e = tree_get(t, "pictures"))) {
+        if (e->kind != TREE_SEQ)
+            return fail(c, e, "expected a list of pictures (charge, power), got %s", kind_name(e));
+        for (size_t k = 0; k < e->n; k++) {
+            const tree *q = e->kid[k];
+            if (q->kind == TREE_SCALAR && !strcmp(q->text, "charge"))
+                s->charge_png = 1;
+            else if (q->kind == TREE_SCALAR && !strcmp(q->text, "power"))
+                s->power_png = 1;
+            else
+                return fail(c, q, "expected charge or power, got '%s'", kind_name(q));
+            if (!tree_get(c->root, "drum"))
+                return fail(c, q, "the %s picture needs a drum", q->text);
+        }
+    }
+    if ((e = tree_get(t, "power_by_size"))) {
+        if (!tree_get(c->root, "drum"))
+            return fail(c, e, "the power by size class needs a drum");
+        if (numbers(c, e, 0, SCENE_MAX_EDGES, s->edges, &s->nedges))
+            return -1;
+        for (size_t k = 0; k < s->nedges; k++)
+            if (!(s->edges[k] > (k ? s->edges[k - 1] : 0)))
+                return fail(c, e->kid[k], "expected increasing diameters > 0, got '%s'",
+                            e->kid[k]->text);
+    }
+    return 0;
+}
+
+static const char *const k_stop[] = {"time", "revolutions", "empty", "steady"};
+static const char *const k_steady[] = {"quantity", "window", "tolerance"};
+
+static int stop_section(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    s->stop_time = s->stop_revolutions = NAN;
+    s->empty_kind = 0;
+    s->steady_on = 0;
+    if (!t)
+        return fail(c, c->root, "missing 'stop' (time, revolutions, empty or steady)");
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_stop, 4))
+        return -1;
+    const tree *e;
+    if ((e = tree_get(t, "time")) && positive(c, e, &s->stop_time))
+        return -1;
+    if ((e = tree_get(t, "revolutions"))) {
+        if (!tree_get(c->root, "drum"))
+            return fail(c, e, "revolutions need a drum");
+        if (positive(c, e, &s->stop_revolutions) || s->stop_revolutions != floor(s->stop_revolutions))
+            return fail(c, e, "expected a whole number > 0, got '%s'", kind_name(e));
+        if (!s->speed_key)
+            return fail(c, e, "the drum has no speed (speed, speed_rpm or speed_fraction)");
+    }
+    if ((e = tree_get(t, "empty"))) {
+        size_t np;
+        if (region_of(c, e, 0, &s->empty_kind, s->empty_params, &np))
+            return -1;
+        if (s->empty_kind == DEMILL_REGION_DRUM)
+            return fail(c, e, "expected a box or a cylinder, got drum");
+    }
+    if ((e = tree_get(t, "steady"))) {
+        const tree *q, *wn, *tol;
+        if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_steady, 3) ||
+            !(q = need(c, e, "quantity")) || !(wn = need(c, e, "window")) ||
+            !(tol = need(c, e, "tolerance")))
+            return -1;
+        if (quantity_of(c, q, &s->steady))
+            return -1;
+        s->steady_on = 1;
+        if (positive(c, wn, &s->steady_window) || positive(c, tol, &s->steady_tolerance))
+            return -1;
+    }
+    if (isnan(s->stop_time) && isnan(s->stop_revolutions) && !s->empty_kind && !s->steady_on)
+        return fail(c, t, "expected time, revolutions, empty or steady");
+    return 0;
+}
+
+int scene_build(scene *s, const tree *root, const char *dir, int mode, char *err, size_t errlen)
+{
+    ctx c = {s, root, dir, mode, err, errlen};
+    demill_world *given = mode == SCENE_RESTART ? s->w : NULL;
+    if (mode != SCENE_RESTART)
+        s->w = NULL;
+    const tree *auto_dt = NULL;
+    int rc = -1;
+    if (need_kind(&c, root, TREE_MAP) ||
+        check_keys(&c, root, top_keys, sizeof top_keys / sizeof top_keys[0]) ||
+        world_section(&c, tree_get(root, "world"), &auto_dt) ||
+        materials_section(&c, tree_get(root, "materials")) ||
+        pairs_section(&c, tree_get(root, "pairs")) || drum_section(&c, tree_get(root, "drum")) ||
+        bodies_section(&c, tree_get(root, "bodies")) ||
+        walls_section(&c, tree_get(root, "walls")) ||
+        particles_section(&c, tree_get(root, "particles")) ||
+        feeds_section(&c, tree_get(root, "feeds")) || outlets_section(&c, tree_get(root, "outlets")) ||
+        outputs_section(&c, tree_get(root, "outputs")) || stop_section(&c, tree_get(root, "stop")))
+        goto out;
+    if (auto_dt) {
+        double spc = 0, dt;
+        const tree *e = tree_get(tree_get(root, "world"), "steps_per_contact");
+        if (e)
+            to_number(e, &spc);
+        if (mode == SCENE_BUILD &&
+            (api(&c, auto_dt, demill_world_suggest_time_step(s->w, 0, spc, &dt, NULL, NULL)) ||
+             api(&c, auto_dt, demill_world_set(s->w, DEMILL_WORLD_TIME_STEP, dt))))
+            goto out;
+    }
+    demill_world_get(s->w, DEMILL_WORLD_TIME_STEP, &s->dt);
+    rc = 0;
+out:
+    if (rc && mode != SCENE_RESTART) {
+        demill_world_destroy(s->w);
+        s->w = NULL;
+    }
+    if (mode == SCENE_RESTART)
+        s->w = given;
+    return rc;
+}
+
+/* One group's table: key, unit, allowed values, default. */
+static void key_table(FILE *f, const char *title, const group *g)
+{
+    fprintf(f, "#### %s\n\n| key | unit | allowed | default |\n|---|---|---|---|\n", title);
+    for (size_t k = 0; k < g->n; k++) {
+        double lo, hi, def;
+        demill_param_bounds(g->key[k], &lo, &hi, &def);
+        const char *unit = demill_param_unit(g->key[k]);
+        const choice *ch = choice_of(g->key[k]);
+        char allowed[256] = "", dflt[64];
+        snprintf(dflt, sizeof dflt, "%g", def);
+        if (ch) {
+            for (int v = 0; v < 7; v++)
+                if (ch->names[v] && *ch->names[v])
+                    snprintf(allowed + strlen(allowed), sizeof allowed - strlen(allowed), "%s%s",
+                             *allowed ? ", " : "", ch->names[v]);
+            snprintf(dflt, sizeof dflt, "%s", ch->names[(int)def]);
+            unit = "choice";
+        } else if (!strcmp(unit, "bool")) {
+            snprintf(allowed, sizeof allowed, "true, false");
+            snprintf(dflt, sizeof dflt, "%s", def ? "true" : "false");
+        } else {
+            char a[48], b[48];
+            bound_text(lo, -HUGE_VAL, 1, a, sizeof a);
+            bound_text(hi, HUGE_VAL, 0, b, sizeof b);
+            snprintf(allowed, sizeof allowed, "%s, %s", a, b);
+        }
+        fprintf(f, "| `%s` | %s | %s | %s |\n", g->name[k], unit, allowed, dflt);
+    }
+    fputc('\n', f);
+}
+
+/* The sections whose keys are the runner's own, with those keys. */
+#define KEYS(a) a, sizeof a / sizeof a[0]
+typedef struct section {
+    const char *name;
+    const char *const *keys;
+    size_t n;
+} section;
+
+static const section sections[] = {
+    {"(top level)", KEYS(top_keys)},
+    {"world (besides the registry's keys)", KEYS(world_extra)},
+    {"pairs[] (besides the registry's keys)", KEYS(k_pair_extra)},
+    {"drum (besides the registry's keys)", KEYS(drum_extra)},
+    {"drum.parts", KEYS(k_parts)},
+    {"particles[]", KEYS(k_particles)},
+    {"particles[].sizes, feeds[].sizes", KEYS(k_sizes)},
+    {"particles[].region, feeds[].region, outlets[].region, stop.empty", KEYS(k_region)},
+    {"bodies.NAME", KEYS(k_bodies)},
+    {"bodies.NAME.springs[]", KEYS(k_spring)},
+    {"bodies.NAME.force", KEYS(k_force)},
+    {"walls[]", KEYS(k_walls)},
+    {"walls[].plane", shapes[0].keys, 2},
+    {"walls[].rectangle", shapes[1].keys, 5},
+    {"walls[].disc", shapes[2].keys, 4},
+    {"walls[].cylinder", shapes[3].keys, 5},
+    {"walls[].cone", shapes[4].keys, 6},
+    {"walls[].stl", KEYS(k_stl)},
+    {"walls[].polyline", KEYS(k_polyline)},
+    {"walls[].motion", KEYS(k_motion)},
+    {"walls[].harmonic", KEYS(k_harmonic)},
+    {"feeds[]", KEYS(k_feeds)},
+    {"outlets[]", KEYS(k_outlets)},
+    {"outputs", KEYS(k_outputs)},
+    {"stop", KEYS(k_stop)},
+    {"stop.steady", KEYS(k_steady)},
+};
+
+void scene_list_keys(FILE *f)
+{
+    fputs("#### sections\n\n| section | keys |\n|---|---|\n", f);
+    for (size_t k = 0; k < sizeof sections / sizeof sections[0]; k++) {
+        fprintf(f, "| %s |", sections[k].name);
+        for (size_t j = 0; j < sections[k].n; j++)
+            fprintf(f, "%s `%s`", j ? "," : "", sections[k].keys[j]);
+        fputs(" |\n", f);
+    }
+    fputc('\n', f);
+    group g;
+    group_world(&g);
+    key_table(f, "world", &g);
+    group_material(&g);
+    key_table(f, "materials.NAME", &g);
+    group_pair(&g);
+    key_table(f, "pairs[]", &g);
+    group_drum(&g);
+    key_table(f, "drum", &g);
+}

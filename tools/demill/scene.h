@@ -1,0 +1,88 @@
+/* scene.h: a scene file (docs/scene-files.md) checked and turned into a
+ * world through the public API, with what the runner needs to run it:
+ * when to turn the drum, when to stop and what to write. */
+#ifndef DEMILL_SCENE_H
+#define DEMILL_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <demill.h>
+
+#include "tree.h"
+
+#define SCENE_MAX_MATERIALS 256
+#define SCENE_MAX_COLUMNS 64
+#define SCENE_MAX_EDGES 16
+#define SCENE_MAX_OUTLETS 16
+#define SCENE_MAX_BODIES 64
+
+/* A quantity of the time series or of a steady stop: a world or drum key
+ * of the registry (key, body < 0), or a component of a body's field. */
+typedef struct scene_quantity {
+    const char *name;  /* as the scene gives it; points into the tree */
+    int32_t key;       /* DEMILL_WORLD_* or DEMILL_DRUM_*, or 0 */
+    int body, comp;    /* the body's index, -1 for none; the component 0-2 */
+    int32_t field;     /* DEMILL_BODY_* */
+} scene_quantity;
+
+typedef struct scene {
+    demill_world *w;
+    int dim;
+    double dt;
+    size_t nmat;
+    const char *matname[SCENE_MAX_MATERIALS]; /* point into the tree */
+    demill_id mat[SCENE_MAX_MATERIALS];
+    demill_id drum;             /* DEMILL_ID_NONE without a drum */
+    size_t nbody;
+    const char *bodyname[SCENE_MAX_BODIES]; /* point into the tree */
+    demill_id body[SCENE_MAX_BODIES];
+    double drum_start;          /* world time at which the drum's speed is set, s */
+    int32_t speed_key;          /* the drum's speed key given, 0 for none */
+    double speed_value;
+    int speed_set;              /* the speed was given with --set */
+    size_t noutlets;            /* the outlets made (none on a restart) */
+    demill_id outlet[SCENE_MAX_OUTLETS];
+    double stop_time, stop_revolutions; /* NAN when not given */
+    int32_t empty_kind;         /* stop when this region holds no particle: DEMILL_REGION_BOX or
+                                   _CYLINDER, 0 for none */
+    double empty_params[7];
+    int steady_on;              /* stop when this quantity is steady: */
+    scene_quantity steady;
+    double steady_window, steady_tolerance; /* two windows' means within tolerance (relative) */
+    double every;               /* s between samples (time series, stop checks) */
+    char csv_file[256];         /* "" for none */
+    size_t ncol;
+    scene_quantity col[SCENE_MAX_COLUMNS];
+    double vtk_every, checkpoint_every; /* s, 0 for none */
+    int charge_png, power_png;
+    size_t nedges;              /* power by size class: nedges + 1 classes */
+    double edges[SCENE_MAX_EDGES];
+} scene;
+
+/* What scene_build() does with the world. */
+enum {
+    SCENE_BUILD = 0,   /* a new world from the file */
+    SCENE_CHECK = 1,   /* check everything, build the world's settings, materials, pairs, drum
+                          and bodies, but read no file and add no particle, wall, feed or
+                          outlet (demill check, sweeps before they run, the fuzz target) */
+    SCENE_RESTART = 2  /* s->w holds a loaded checkpoint: map the file's names to its ids and
+                          apply only the entries set on the command line (--set) */
+};
+
+/* Checks the scene `root` (read from a file in folder `dir`, against which
+ * its relative paths are taken) and builds it: 0, or -1 with a message
+ * "FILE:LINE: KEY: what was wrong" in err and no world left (except in
+ * SCENE_RESTART mode, where s->w stays the caller's). */
+int scene_build(scene *s, const tree *root, const char *dir, int mode, char *err, size_t errlen);
+
+/* The value of a quantity in the scene's world: DEMILL_OK or the API's
+ * status. */
+demill_status scene_quantity_read(const scene *s, const scene_quantity *q, double *value);
+
+/* The tables of the keys a scene file takes from the parameter registry
+ * (world, materials, pairs, drum: unit, allowed values, default), in
+ * Markdown, as docs/scene-files.md has them (`demill keys`). */
+void scene_list_keys(FILE *f);
+
+#endif
