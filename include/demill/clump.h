@@ -21,10 +21,11 @@
  * demill_clump_template_from_stl()), the fit kept with it (docs/shapes.md,
  * Shapes from a mesh).
  *
- * What clumps do not do yet: the iterative refinement refuses a world with
- * clumps (DEMILL_ERR_INVALID_VALUE from demill_world_step()), checkpoints
- * refuse to save one (DEMILL_ERR_UNSUPPORTED; snapshots keep them), local
- * damping leaves members alone, and outlets do not remove members.
+ * Snapshots and checkpoints (demill/state.h) hold templates (with their
+ * fit) and clumps bit for bit. What clumps do not do yet: the iterative
+ * refinement refuses a world with clumps (DEMILL_ERR_INVALID_VALUE from
+ * demill_world_step()), local damping leaves members alone, and outlets do
+ * not remove members.
  */
 #ifndef DEMILL_CLUMP_H
 #define DEMILL_CLUMP_H

@@ -85,9 +85,7 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snapshot);
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (path), DEMILL_ERR_IO (the
  *          message has the path and the system's reason),
  *          DEMILL_ERR_UNSTABLE (the state is not finite: a run diverged with
- *          the watchdog off; nothing is written), DEMILL_ERR_UNSUPPORTED
- *          (the world has clump templates, demill/clump.h, which
- *          checkpoints do not hold yet; nothing is written) or
+ *          the watchdog off; nothing is written) or
  *          DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_world_save(demill_world *world, const char *path);
 
@@ -114,8 +112,7 @@ DEMILL_API demill_status demill_world_load(demill_world *world, const char *path
  *  @return DEMILL_OK, DEMILL_ERR_NULL_POINTER (buffer and size both NULL),
  *          DEMILL_ERR_BUFFER_TOO_SMALL (nothing written, *size set),
  *          DEMILL_ERR_UNSTABLE (the state is not finite, as for
- *          demill_world_save()), DEMILL_ERR_UNSUPPORTED (clump templates,
- *          as for demill_world_save()) or DEMILL_ERR_OUT_OF_MEMORY. */
+ *          demill_world_save()) or DEMILL_ERR_OUT_OF_MEMORY. */
 DEMILL_API demill_status demill_world_save_buffer(demill_world *world, void *buffer,
                                                   size_t capacity, size_t *size);
 

@@ -4,7 +4,7 @@
  *
  * Files are VTK XML (version 1.0) with their arrays in one block of raw
  * binary appended data (UInt64 headers, the machine's byte order, which the
- * file declares): exact, compact (165 bytes per 3D particle), and as fast
+ * file declares): exact, compact (205 bytes per 3D particle), and as fast
  * to write as the disc allows. ParaView and VTK's readers read them
  * (vtkXMLUnstructuredGridReader, vtkXMLPolyDataReader). ASCII with the 17
  * digits that make it exact would be three times the size and far slower
@@ -21,6 +21,7 @@
  * | radius           | Float64 | m                                             |
  * | mass             | Float64 | kg                                            |
  * | material         | Int32   | the material's index: 0 for the first material the world created, 1 for the second, ... |
+ * | clump            | Int64   | for a clump's member (demill/clump.h), the index of its clump's id, its low 32 bits (which stay the clump's for its life and differ between live clumps); -1 for a particle of no clump |
  * | velocity         | Float64 | 3 components, m/s                             |
  * | angular_velocity | Float64 | 3 components, rad/s (2D: x = y = 0)           |
  * | force            | Float64 | 3 components, N, as DEMILL_PARTICLE_FORCE     |
@@ -36,7 +37,9 @@
  * particles turn, use the 3D Glyphs representation (VTK's
  * vtkGlyph3DMapper) with Orient on, Orientation Mode Quaternion and
  * Orientation Vectors orientation: it takes a 4-component array as the
- * quaternion w, x, y, z, which is this array's order.
+ * quaternion w, x, y, z, which is this array's order. A clump's members
+ * have its orientation. Colour by clump to tell the clumps apart (with a
+ * Threshold of clump from 0 up: the clumps alone).
  *
  * The wall file (.vtp, polygonal data) has the surfaces of the walls and of
  * the drum as they stand at the world's time:

@@ -101,7 +101,8 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
                                  (WRLD), the cohesion law, the number of fields
                                  per material and of values per material pair
                                  (MATS) and the number of contact lists (CONT);
-                                 5 the 3D particles' orientations (ORNT) */
+                                 5 the 3D particles' orientations (ORNT), the
+                                 clump templates and the clumps (CLMP) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -654,6 +655,74 @@ static void transfer_loads(io *s, demill_world *w)
     }
 }
 
+/* The clump templates and the clumps (section CLMP, from format 5 on; an
+ * older file has none). A template: its material, spheres and place in
+ * tmem, mass, inverse mass, volume, principal moments, axes and centre, and
+ * for one made from a mesh the mesh's volume, the fit's deviations and its
+ * cube side (0 for a template of spheres); then
+ * the spheres' offsets and radii. A clump slot: its handle, and for a live
+ * clump its template, its place in cmem and its motion (position, velocity,
+ * orientation, angle, angular momentum and velocity, the velocities the
+ * dashpots see); a free slot holds nothing else (a new clump overwrites
+ * it). Then the members' particle handles and the clumps' handles. Which
+ * particle is whose member is not stored: check_clumps() derives it. */
+static void transfer_clumps(io *s, demill_world *w)
+{
+    if (s->format < 5)
+        return;
+    io_section(s, "CLMP");
+    io_count(s, &w->ntemplates, UINT32_MAX - 1, "clump templates");
+    io_count(s, &w->ntmem, UINT32_MAX, "template spheres");
+    /* a template's record: 3 counts, 22 doubles */
+    io_room(s, w->ntemplates, 3 * sizeof(uint32_t) + 22 * sizeof(double), "clump templates");
+    io_array(s, &w->templates, 0, w->ntemplates, sizeof *w->templates);
+    if (s->reading && !s->status) {
+        w->cap_templates = w->ntemplates;
+        memset(w->templates, 0, w->ntemplates * sizeof *w->templates);
+    }
+    for (uint32_t k = 0; k < w->ntemplates && !s->status; k++) {
+        dm_template *t = &w->templates[k];
+        io_u32(s, &t->material, 1);
+        io_u32(s, &t->n, 1);
+        io_u32(s, &t->first, 1);
+        double *const f[] = {&t->mass,        &t->im,          &t->volume,
+                             t->inertia,      t->axes,         t->centre,
+                             &t->mesh_volume, &t->deviation_out, &t->deviation_in,
+                             &t->cell};
+        const size_t len[] = {1, 1, 1, 3, 9, 3, 1, 1, 1, 1};
+        for (size_t q = 0; q < sizeof len / sizeof *len; q++)
+            io_f64(s, f[q], len[q]);
+    }
+    if (s->reading)
+        w->cap_tmem = w->ntmem;
+    io_f64_array(s, &w->tmem, DM_TMEM * (size_t)w->ntmem, DM_TMEM * (size_t)w->ntmem);
+    io_count(s, &w->nclumps, UINT32_MAX - 1, "clump slots");
+    io_count(s, &w->live_clumps, w->nclumps, "live clumps");
+    io_count(s, &w->ncmem, UINT32_MAX, "clump members");
+    io_room(s, w->nclumps, sizeof(uint32_t), "clump slots");
+    io_array(s, &w->clumps, 0, w->nclumps, sizeof *w->clumps);
+    if (s->reading && !s->status) {
+        w->cap_clumps = w->nclumps;
+        memset(w->clumps, 0, w->nclumps * sizeof *w->clumps);
+    }
+    for (uint32_t k = 0; k < w->nclumps && !s->status; k++) {
+        dm_clump *c = &w->clumps[k];
+        io_u32(s, &c->handle, 1);
+        if (c->handle == DM_FREE)
+            continue;
+        io_u32(s, &c->tmpl, 1);
+        io_u32(s, &c->first, 1);
+        double *const f[] = {c->x, c->v, c->q, &c->theta, c->L, c->om, c->vp, c->wp};
+        const size_t len[] = {3, 3, 4, 1, 3, 3, 3, 3};
+        for (size_t q = 0; q < sizeof len / sizeof *len; q++)
+            io_f64(s, f[q], len[q]);
+    }
+    if (s->reading)
+        w->cap_cmem = w->ncmem;
+    io_array(s, &w->cmem, w->ncmem, w->ncmem, sizeof *w->cmem);
+    transfer_handles(s, &w->clh, "clump handles");
+}
+
 /* Walks every field of state w. Reading, w starts zeroed (with its pointers
  * NULL) and the arrays are allocated as they are read. */
 static void transfer(io *s, demill_world *w)
@@ -831,6 +900,7 @@ static void transfer(io *s, demill_world *w)
         transfer_bodies(s, w);
         transfer_loads(s, w);
     }
+    transfer_clumps(s, w);
     io_section(s, "END.");
 }
 
@@ -1185,6 +1255,123 @@ static demill_status check_drum(demill_world *t)
     return ok ? DEMILL_OK : dm_fail(t, DEMILL_ERR_FORMAT, "the collision spectrum's classes");
 }
 
+/* Templates as demill_clump_template_add() makes them: one after the other
+ * in tmem, of at least one sphere of positive radius, of a live material,
+ * their mass, inverse mass and volume as computed from each other and the
+ * density, their principal moments positive (2D: 0, 0, I_z), their axes
+ * orthonormal and right-handed (2D: x, y, z), the spheres in the plane in
+ * 2D, and a fit's figures not negative. */
+static demill_status check_templates(demill_world *t)
+{
+    uint64_t first = 0;
+    for (uint32_t k = 0; k < t->ntemplates; k++) {
+        const dm_template *tp = &t->templates[k];
+        const double *I = tp->inertia, *a = tp->axes;
+        if (!tp->n)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "clump template %u has no spheres", k);
+        bool ok = tp->first == first && (uint64_t)tp->first + tp->n <= t->ntmem &&
+                  tp->material < t->nmat && tp->mass > 0.0 && tp->im == 1.0 / tp->mass &&
+                  tp->volume == tp->mass / t->mats[tp->material].density &&
+                  tp->mesh_volume >= 0.0 && tp->deviation_out >= 0.0 &&
+                  tp->deviation_in >= 0.0 && tp->cell >= 0.0;
+        if (t->dim == 3) {
+            for (int c = 0; c < 3; c++)
+                ok &= I[c] > 0.0 && isfinite(1.0 / I[c]);
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    ok &= fabs(a[3 * i] * a[3 * j] + a[3 * i + 1] * a[3 * j + 1] +
+                               a[3 * i + 2] * a[3 * j + 2] - (i == j)) < 1e-9;
+            const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) -
+                               a[1] * (a[3] * a[8] - a[5] * a[6]) +
+                               a[2] * (a[3] * a[7] - a[4] * a[6]);
+            ok &= det > 0.0;
+        } else {
+            ok &= I[0] == 0.0 && I[1] == 0.0 && I[2] > 0.0 && isfinite(1.0 / I[2]) &&
+                  tp->centre[2] == 0.0;
+            for (int c = 0; c < 9; c++)
+                ok &= a[c] == (c % 4 == 0);
+        }
+        for (uint32_t m = 0; ok && m < tp->n; m++) {
+            const double *b = t->tmem + DM_TMEM * ((size_t)tp->first + m);
+            ok &= b[3] > 0.0 && (t->dim == 3 || b[2] == 0.0);
+        }
+        if (!ok)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "clump template %u is inconsistent", k);
+        first += tp->n;
+    }
+    if (first != t->ntmem)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "clump templates hold %llu spheres, %u stored",
+                       (unsigned long long)first, t->ntmem);
+    return DEMILL_OK;
+}
+
+/* The clumps as the API leaves them: each live clump's handle its own, of
+ * a template that exists, of unit orientation (to 1e-12, as the
+ * particles'), in 2D in the plane and turning about z; its members, its
+ * template's count of them in cmem, live particles of its template's
+ * material and radii, with its mass and inertia, each the member of no
+ * other clump; the live clumps' members all of cmem. Marks each member
+ * with its clump (P->clump, which checkpoints do not store). */
+static demill_status check_clumps(demill_world *t)
+{
+    dm_particles *P = &t->p;
+    uint32_t live = 0;
+    uint64_t members = 0;
+    for (uint32_t k = 0; k < t->nclumps; k++) {
+        const dm_clump *c = &t->clumps[k];
+        if (c->handle == DM_FREE)
+            continue;
+        live++;
+        if (c->handle >= t->clh.n || t->clh.slot[c->handle] != k || c->tmpl >= t->ntemplates)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "clump %u: handle %u, template %u of %u", k,
+                           c->handle, c->tmpl, t->ntemplates);
+        const dm_template *tp = &t->templates[c->tmpl];
+        const double *q = c->q;
+        const double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+        if (!(fabs(n2 - 1.0) <= 1e-12))
+            return dm_fail(t, DEMILL_ERR_FORMAT, "clump %u: orientation of norm %.17g, not 1", k,
+                           sqrt(n2));
+        if (t->dim == 2 && (q[1] != 0.0 || q[2] != 0.0 || c->x[2] != 0.0 || c->v[2] != 0.0 ||
+                            c->vp[2] != 0.0 || c->L[0] != 0.0 || c->L[1] != 0.0 ||
+                            c->om[0] != 0.0 || c->om[1] != 0.0 || c->wp[0] != 0.0 ||
+                            c->wp[1] != 0.0))
+            return dm_fail(t, DEMILL_ERR_FORMAT, "clump %u: a motion out of the plane of a 2D world",
+                           k);
+        if ((uint64_t)c->first + tp->n > t->ncmem)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "clump %u: members %u to %llu of %u", k, c->first,
+                           (unsigned long long)c->first + tp->n, t->ncmem);
+        members += tp->n;
+        const double iinv = t->dim == 3 ? 3.0 / (tp->inertia[0] + tp->inertia[1] + tp->inertia[2])
+                                        : 1.0 / tp->inertia[2];
+        for (uint32_t m = 0; m < tp->n; m++) {
+            const uint32_t h = t->cmem[c->first + m];
+            const uint32_t i = h < t->ph.n ? t->ph.slot[h] : DM_FREE;
+            if (i == DM_FREE)
+                return dm_fail(t, DEMILL_ERR_FORMAT, "clump %u: member %u is not a particle", k, m);
+            if (P->clump[i])
+                return dm_fail(t, DEMILL_ERR_FORMAT,
+                               "clump %u: member %u is a member of clump %u too", k, m,
+                               P->clump[i] - 1);
+            const double r = t->tmem[DM_TMEM * ((size_t)tp->first + m) + 3];
+            if (P->mat[i] != tp->material || P->r[i] != r || P->m[i] != tp->mass ||
+                P->im[i] != tp->im || P->iinv[i] != iinv)
+                return dm_fail(t, DEMILL_ERR_FORMAT,
+                               "clump %u: member %u has another material, radius or mass than "
+                               "its template's",
+                               k, m);
+            P->clump[i] = k + 1;
+        }
+    }
+    if (live != t->live_clumps || members != t->ncmem)
+        return dm_fail(t, DEMILL_ERR_FORMAT, "%u clumps of %llu members, %u and %u stored", live,
+                       (unsigned long long)members, t->live_clumps, t->ncmem);
+    for (uint32_t k = 0; k < t->clh.n; k++)
+        if (t->clh.slot[k] != DM_FREE && t->clh.slot[k] >= t->nclumps)
+            return dm_fail(t, DEMILL_ERR_FORMAT, "clump handle %u names slot %u", k,
+                           t->clh.slot[k]);
+    return check_handles(t, &t->clh, live, "clump handles");
+}
+
 /* Every listed pair joins live objects, in the list of its contact model,
  * sorted by first particle. */
 static demill_status check_contacts(demill_world *t)
@@ -1196,8 +1383,9 @@ static demill_status check_contacts(demill_world *t)
             for (uint32_t q = 0; q < b->n; q++) {
                 const uint32_t i = b->i[q], j = b->j[q];
                 bool ok = i < P->n && (!q || b->i[q - 1] <= i) && b->on[q] <= 1;
-                if (ok && !side)
-                    ok = j < P->n && i < j && dm_pair_kernel(t, P->mat[i], P->mat[j]) == k;
+                if (ok && !side) /* (never two members of one clump) */
+                    ok = j < P->n && i < j && dm_pair_kernel(t, P->mat[i], P->mat[j]) == k &&
+                         (!P->clump[i] || P->clump[i] != P->clump[j]);
                 else if (ok)
                     ok = j < t->nwalls && t->walls[j].kind &&
                          dm_pair_kernel(t, P->mat[i], t->walls[j].material) == k &&
@@ -1231,11 +1419,6 @@ static uint32_t crc32_of(const uint8_t *p, size_t n)
 /* The checkpoint of w, in a new buffer (*bytes of it). */
 static demill_status encode(demill_world *w, uint8_t **out, size_t *bytes)
 {
-    if (w->ntemplates)
-        return dm_fail(w, DEMILL_ERR_UNSUPPORTED,
-                       "checkpoint: the world has clump templates (%u) and clumps (%u), which "
-                       "checkpoints do not hold yet; a snapshot (demill_snapshot_take) does",
-                       w->ntemplates, w->live_clumps);
     io s = {.reading = false, .format = CK_FORMAT};
     uint8_t header[CK_HEADER] = {0};
     io_bytes(&s, header, sizeof header);
@@ -1298,9 +1481,9 @@ static demill_status decode(demill_world *t, const uint8_t *b, size_t size)
     if (s.status)
         return dm_fail(t, s.status, "%s", s.why);
     demill_status st;
-    if ((st = check_params(t)) || (st = check_particles(t)) || (st = check_walls(t)) ||
-        (st = check_bodies(t)) || (st = check_drum(t)) || (st = check_contacts(t)) ||
-        (st = check_flows(t)))
+    if ((st = check_params(t)) || (st = check_particles(t)) || (st = check_templates(t)) ||
+        (st = check_clumps(t)) || (st = check_walls(t)) || (st = check_bodies(t)) ||
+        (st = check_drum(t)) || (st = check_contacts(t)) || (st = check_flows(t)))
         return st == DEMILL_ERR_OUT_OF_MEMORY ? st : DEMILL_ERR_FORMAT;
     for (uint32_t i = 0; i < t->p.n; i++)
         t->mat_particles[t->p.mat[i]]++;

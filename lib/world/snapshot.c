@@ -64,7 +64,7 @@ static size_t buffers_of(demill_world *s, buffer *b)
     ADD(s->walls, s->cap_walls * sizeof *s->walls);
     ADD(s->bodies, s->cap_bodies * sizeof *s->bodies);
     ADD(s->templates, s->cap_templates * sizeof *s->templates);
-    ADD(s->tmem, s->cap_tmem * sizeof *s->tmem);
+    ADD(s->tmem, (size_t)s->cap_tmem * DM_TMEM * sizeof *s->tmem);
     ADD(s->clumps, s->cap_clumps * sizeof *s->clumps);
     ADD(s->cmem, s->cap_cmem * sizeof *s->cmem);
     dm_spectrum *sp = &s->drum.spectrum;

@@ -17,7 +17,7 @@
 /* ---- particles ---------------------------------------------------------------- */
 
 enum {
-    P_ID, P_RADIUS, P_MASS, P_MATERIAL, P_VELOCITY, P_ANGULAR_VELOCITY, P_FORCE, P_TORQUE,
+    P_ID, P_RADIUS, P_MASS, P_MATERIAL, P_CLUMP, P_VELOCITY, P_ANGULAR_VELOCITY, P_FORCE, P_TORQUE,
     P_ANGLE, P_ORIENTATION, P_POINTS, P_CONNECTIVITY, P_OFFSETS, P_TYPES, P_COLUMNS
 };
 
@@ -55,6 +55,15 @@ static const void *particle_bytes(demill_world *w, void *ctx, int k, void *scrat
                 *out++ = w->p.mat[w->ph.slot[h]];
         return scratch;
     }
+    if (col == P_CLUMP) { /* the index of the clump's id (its handle), -1: none */
+        int64_t *out = scratch;
+        for (uint32_t h = 0; h < w->ph.n; h++)
+            if (w->ph.slot[h] != DM_FREE) {
+                const uint32_t c = w->p.clump[w->ph.slot[h]];
+                *out++ = c ? (int64_t)w->clumps[c - 1].handle : -1;
+            }
+        return scratch;
+    }
     if (col == P_TYPES) {
         memset(scratch, 1, n); /* VTK_VERTEX */
         return scratch;
@@ -78,6 +87,7 @@ DEMILL_API demill_status demill_vtk_write_particles(demill_world *w, const char 
         [P_RADIUS] = {"PointData", "radius", "Float64", 1, 0},
         [P_MASS] = {"PointData", "mass", "Float64", 1, 0},
         [P_MATERIAL] = {"PointData", "material", "Int32", 1, 0},
+        [P_CLUMP] = {"PointData", "clump", "Int64", 1, 0},
         [P_VELOCITY] = {"PointData", "velocity", "Float64", 3, 0},
         [P_ANGULAR_VELOCITY] = {"PointData", "angular_velocity", "Float64", 3, 0},
         [P_FORCE] = {"PointData", "force", "Float64", 3, 0},

@@ -1997,8 +1997,6 @@ static void bad_clumps(scene *sc)
     if (sc->dim == 2)
         BAD(sc, DEMILL_ERR_INVALID_VALUE,
             demill_world_set(w, DEMILL_WORLD_DISC_THICKNESS, 0.01), "template");
-    size_t bytes = 0;
-    BAD(sc, DEMILL_ERR_UNSUPPORTED, demill_world_save_buffer(w, NULL, 0, &bytes), "clump");
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT));
     BAD(sc, DEMILL_ERR_INVALID_VALUE, demill_world_step(w, 1), "refinement", "clumps");
 }

@@ -14,7 +14,10 @@
  * walls of every kind (a capped cylinder, an annulus, a rectangle, a cone)
  * in harmonic, rigid and belt motion, with balls thrown at each; the same
  * box as a body on a spring and a damper, driven, with a floor of fixed
- * discs (velocity Verlet).
+ * discs (velocity Verlet); clumps of two templates among spheres in a box
+ * (3D, velocity Verlet) and dumbbells of discs (2D, symplectic Euler), with
+ * a clump removed and its slot taken again, and another removed; their
+ * clumps' fields are compared too.
  *
  * Snapshots: restoring a snapshot and stepping repeats the first run
  * bitwise, in the same world and in another one (of the other dimension,
@@ -28,7 +31,10 @@
  * bitwise as it was. Byte flips behind a repaired checksum (which reach the
  * checks of sizes, indices and parameters) give DEMILL_OK or
  * DEMILL_ERR_FORMAT and never a crash; a world loaded from such a file
- * steps. (tests/fuzz/ runs the loader under libFuzzer for longer.)
+ * steps. Clump records the API would not make (a template that does not
+ * exist, a quaternion not of norm 1 or not finite, a member that is no
+ * particle, is another clump's or unlike its sphere, a template of no
+ * spheres, a wrong count) are refused with a message naming them. (tests/fuzz/ runs the loader under libFuzzer for longer.)
  */
 #define _POSIX_C_SOURCE 200809L /* getpid */
 #include <math.h>
@@ -194,6 +200,97 @@ static demill_world *walls3d(void)
     return w;
 }
 
+/* Clumps (3D): a box of five planes holding 12 clumps of two templates, a
+ * dumbbell of two overlapping spheres and an L of three, in turned
+ * orientations and thrown, and 6 free spheres, on Hertz-Mindlin contacts
+ * with rolling friction; one clump removed and another added in its slot
+ * (a handle of a later generation), then one more removed (a free slot);
+ * and a clump of a template made from a mesh, with its fit. */
+static demill_world *clumps3d(void)
+{
+    demill_world *w;
+    demill_id m, wall, tmpl[2], clump[12];
+    ck_assert_int_eq(demill_world_create(3, &w), DEMILL_OK);
+    DM_OK(w, demill_material_create(w, &m));
+    DM_OK(w, demill_material_set(w, m, DEMILL_MATERIAL_DENSITY, 2500));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_NORMAL, DEMILL_NORMAL_HERTZ));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_DAMPING, DEMILL_DAMPING_RESTITUTION));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN));
+    DM_OK(w, demill_pair_set(w, m, m, DEMILL_PAIR_ROLLING, DEMILL_ROLLING_CONSTANT_TORQUE));
+    const double planes[5][6] = {{0, 0, 0, 0, 1, 0},      {-0.03, 0, 0, 1, 0, 0},
+                                 {0.03, 0, 0, -1, 0, 0},  {0, 0, -0.03, 0, 0, 1},
+                                 {0, 0, 0.03, 0, 0, -1}};
+    for (int k = 0; k < 5; k++)
+        DM_OK(w, demill_wall_add_plane(w, m, planes[k], planes[k] + 3, &wall));
+    const double r = 0.004, dumbbell[6] = {-0.7 * r, 0, 0, 0.7 * r, 0, 0};
+    const double ell[9] = {0, 0, 0, 1.2 * r, 0, 0, 0, 1.2 * r, 0};
+    const double rd[2] = {r, 0.8 * r}, rl[3] = {r, r, 0.9 * r};
+    DM_OK(w, demill_clump_template_add(w, m, 2, dumbbell, rd, &tmpl[0]));
+    DM_OK(w, demill_clump_template_add(w, m, 3, ell, rl, &tmpl[1]));
+    /* and one from a mesh, whose fit the checkpoint keeps: a regular
+     * octahedron 8 mm across filled with 2 spheres */
+    const double a = 0.004, v[18] = {a, 0, 0, -a, 0, 0, 0, a, 0, 0, -a, 0, 0, 0, a, 0, 0, -a};
+    const uint32_t tri[24] = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4,
+                              2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+    demill_id rock, stone;
+    DM_OK(w, demill_clump_template_from_mesh(w, m, 6, v, 8, tri, 2, 32, &rock));
+    for (int k = 0; k < 12; k++) {
+        const double x[3] = {-0.015 + 0.015 * (k % 3), 0.01 + 0.015 * (k / 6),
+                             -0.01 + 0.02 * (k / 3 % 2)};
+        const double q[4] = {1.0, 0.3 * (k % 4), -0.2 * (k % 3), 0.1 * k};
+        const double v[3] = {0.2 * (k % 3 - 1), -0.1, 0.05 * (k % 2)}, om[3] = {k, -3, 2};
+        DM_OK(w, demill_clump_add(w, tmpl[k % 2], x, q, &clump[k]));
+        DM_OK(w, demill_clump_set(w, clump[k], DEMILL_CLUMP_VELOCITY, v));
+        DM_OK(w, demill_clump_set(w, clump[k], DEMILL_CLUMP_ANGULAR_VELOCITY, om));
+    }
+    double p[3 * 6], rr[6];
+    for (int k = 0; k < 6; k++) {
+        p[3 * k] = -0.02 + 0.008 * k;
+        p[3 * k + 1] = 0.045;
+        p[3 * k + 2] = 0.0;
+        rr[k] = 0.003;
+    }
+    DM_OK(w, demill_particles_add(w, m, 6, p, rr, NULL, 0, NULL));
+    const double at[3] = {0.02, 0.045, 0.02};
+    DM_OK(w, demill_clump_add(w, rock, at, NULL, &stone));
+    DM_OK(w, demill_clump_remove(w, clump[4]));
+    const double again[3] = {0, 0.05, 0.015};
+    DM_OK(w, demill_clump_add(w, tmpl[1], again, NULL, &clump[4]));
+    DM_OK(w, demill_clump_remove(w, clump[7]));
+    double dt;
+    DM_OK(w, demill_world_suggest_time_step(w, 1.0, 50, &dt, NULL, NULL));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
+    return w;
+}
+
+/* Clumps (2D): the box of box2d() with its piston still, 40 discs and 12
+ * dumbbells of discs, on symplectic Euler, one dumbbell removed. */
+static demill_world *clumps2d(void)
+{
+    demill_world *w = box2d(DEMILL_INTEGRATOR_SYMPLECTIC_EULER);
+    demill_id walls[4], mat, tmpl, clump[12];
+    size_t n;
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_WALL, walls, 4, &n));
+    const double zero[3] = {0, 0, 0};
+    DM_OK(w, demill_wall_set_motion(w, walls[3], zero, NULL, NULL));
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_MATERIAL, &mat, 1, &n));
+    demill_id all[120];
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_PARTICLE, all, 120, &n));
+    DM_OK(w, demill_particles_remove(w, 80, all + 40)); /* the upper rows */
+    const double c[6] = {-0.002, 0, 0, 0.002, 0, 0}, radii[2] = {0.003, 0.0025};
+    DM_OK(w, demill_clump_template_add(w, mat, 2, c, radii, &tmpl));
+    for (int k = 0; k < 12; k++) {
+        const double x[3] = {0.012 + 0.025 * (k % 4), 0.05 + 0.015 * (k / 4), 0};
+        const double th = 0.5 * k, q[4] = {cos(0.5 * th), 0, 0, sin(0.5 * th)};
+        const double v[3] = {0.1 * (k % 3 - 1), -0.2, 0}, om[3] = {0, 0, 5.0 - k};
+        DM_OK(w, demill_clump_add(w, tmpl, x, q, &clump[k]));
+        DM_OK(w, demill_clump_set(w, clump[k], DEMILL_CLUMP_VELOCITY, v));
+        DM_OK(w, demill_clump_set(w, clump[k], DEMILL_CLUMP_ANGULAR_VELOCITY, om));
+    }
+    DM_OK(w, demill_clump_remove(w, clump[5]));
+    return w;
+}
+
 static demill_world *scene(int which)
 {
     static const int integrators[3] = {DEMILL_INTEGRATOR_VELOCITY_VERLET,
@@ -203,9 +300,13 @@ static demill_world *scene(int which)
         return walls3d();
     if (which == 5)
         return box2d_body();
+    if (which == 6)
+        return clumps3d();
+    if (which == 7)
+        return clumps2d();
     return which == 0 ? mill3d(DEMILL_INTEGRATOR_VELOCITY_VERLET) : box2d(integrators[which - 1]);
 }
-#define SCENES 6
+#define SCENES 8
 #define HALF 2500 /* n steps: 0.025 s, with many neighbour rebuilds and contacts */
 
 /* ------------------------------------------------------------------------ */
@@ -258,6 +359,19 @@ static void same_observed(demill_world *a, demill_world *b, const char *what)
     }
     free(fa);
     free(fb);
+    /* the clumps, in slot order */
+    demill_id ca[16], cb[16];
+    DM_OK(a, demill_world_ids(a, DEMILL_KIND_CLUMP, ca, 16, &n));
+    DM_OK(b, demill_world_ids(b, DEMILL_KIND_CLUMP, cb, 16, &m));
+    ck_assert_uint_eq(n, m);
+    for (size_t k = 0; k < n; k++)
+        for (int32_t f = DEMILL_CLUMP_POSITION; f <= DEMILL_CLUMP_MASS; f++) {
+            double va[4], vb[4];
+            DM_OK(a, demill_clump_get(a, ca[k], f, va));
+            DM_OK(b, demill_clump_get(b, cb[k], f, vb));
+            ck_assert_msg(!memcmp(va, vb, (size_t)demill_clump_field_size(f) * sizeof *va),
+                          "%s: clump %zu's field %d differs", what, k, (int)f);
+        }
     for (int32_t e = DEMILL_ENERGY_KINETIC_TRANSLATIONAL; e <= DEMILL_ENERGY_ELASTIC_ROLLING;
          e++) {
         double ea, eb;
@@ -352,8 +466,8 @@ START_TEST(snapshot_restores_bitwise)
     same_bytes(first, again, "the run repeated from the snapshot");
 
     /* into another world, of the other dimension, whose ids then name it */
-    const int steel = _i == 0 || _i == 4; /* the 3D scenes, of the mill's materials */
-    const int dim = steel ? 3 : 2;
+    const int steel = _i == 0 || _i == 4; /* the 3D scenes of the mill's materials */
+    const int dim = steel || _i == 6 ? 3 : 2;
     ck_assert_int_eq(demill_world_create(5 - dim, &other), DEMILL_OK);
     DM_OK(other, demill_snapshot_restore(other, snap));
     double d;
@@ -371,7 +485,7 @@ START_TEST(snapshot_restores_bitwise)
     ck_assert_uint_eq(np, (size_t)d);
     ck_assert_uint_eq(nm, steel ? 2 : 1);
     ck_assert_uint_eq(nd, _i == 0 ? 1 : 0);
-    ck_assert_uint_eq(nw, _i == 0 ? 0 : 4); /* a capped wall is one wall */
+    ck_assert_uint_eq(nw, _i == 0 ? 0 : _i == 6 ? 5 : 4); /* a capped wall is one wall */
     double density;
     DM_OK(other, demill_material_get(other, ids[0], DEMILL_MATERIAL_DENSITY, &density));
     ck_assert(density == (steel ? 7800 : 2500));
@@ -524,16 +638,34 @@ START_TEST(truncated_and_corrupt_checkpoints_are_refused)
 }
 END_TEST
 
-START_TEST(corruption_behind_a_repaired_checksum_never_crashes)
+/* Where the len bytes at v stand in a checkpoint's payload, which holds
+ * them exactly once. */
+static size_t unique_offset(bytes b, const void *v, size_t len)
 {
-    demill_world *w = small(), *target;
+    size_t at = 0, found = 0;
+    for (size_t k = DM_TEST_CKPT_HEADER; k + len <= b.n; k++)
+        if (!memcmp(b.b + k, v, len)) {
+            at = k;
+            found++;
+        }
+    ck_assert_uint_eq(found, 1);
+    return at;
+}
+
+/* Byte flips of w's checkpoint from byte `from` on (1, 7 and 8 bits),
+ * behind a repaired checksum, loaded into a new world: DEMILL_OK or
+ * DEMILL_ERR_FORMAT, the world unchanged by a refusal and able to step
+ * after a load; at least `most` of each. */
+static void flips_never_crash(demill_world *w, size_t from, size_t most)
+{
+    demill_world *target;
     ck_assert_int_eq(demill_world_create(3, &target), DEMILL_OK);
     bytes good = checkpoint_of(w), before = checkpoint_of(target);
     bytes bad = {malloc(good.n), good.n};
     ck_assert_ptr_nonnull(bad.b);
     size_t loaded = 0, refused_count = 0;
     static const unsigned char flips[3] = {0x01, 0x80, 0xff};
-    for (size_t k = 32; k < good.n; k++)
+    for (size_t k = from; k < good.n; k++)
         for (int f = 0; f < 3; f++) {
             memcpy(bad.b, good.b, good.n);
             bad.b[k] ^= flips[f];
@@ -559,29 +691,35 @@ START_TEST(corruption_behind_a_repaired_checksum_never_crashes)
                 free(now.b);
             }
         }
-    ck_assert_msg(refused_count > 100 && loaded > 100, "%zu refused, %zu loaded", refused_count,
-                  loaded);
+    ck_assert_msg(refused_count > most && loaded > most, "%zu refused, %zu loaded",
+                  refused_count, loaded);
     free(bad.b);
     free(good.b);
     free(before.b);
-    demill_world_destroy(w);
     demill_world_destroy(target);
+}
+
+START_TEST(corruption_behind_a_repaired_checksum_never_crashes)
+{
+    demill_world *w = small();
+    flips_never_crash(w, DM_TEST_CKPT_HEADER, 100);
+    demill_world_destroy(w);
 }
 END_TEST
 
-/* Where the len bytes at v stand in a checkpoint's payload, which holds
- * them exactly once. */
-static size_t unique_offset(bytes b, const void *v, size_t len)
+/* The same for the section of a world's clumps (after 100 steps of
+ * clumps3d()), byte by byte. */
+START_TEST(clump_bytes_flipped_never_crash)
 {
-    size_t at = 0, found = 0;
-    for (size_t k = DM_TEST_CKPT_HEADER; k + len <= b.n; k++)
-        if (!memcmp(b.b + k, v, len)) {
-            at = k;
-            found++;
-        }
-    ck_assert_uint_eq(found, 1);
-    return at;
+    demill_world *w = clumps3d();
+    DM_OK(w, demill_world_step(w, 100));
+    bytes b = checkpoint_of(w);
+    const size_t at = unique_offset(b, "CLMP", 4);
+    free(b.b);
+    flips_never_crash(w, at, 100);
+    demill_world_destroy(w);
 }
+END_TEST
 
 /* A checkpoint is held to the bounds the API holds a drum to: a drum value
  * or a lifter that demill_drum_set() or demill_drum_add_lifter() would
@@ -619,6 +757,67 @@ START_TEST(drum_values_the_api_refuses_are_refused)
         refused_patched(target, before, good, bad, at, &cases[c].bad, 8, cases[c].word,
                         cases[c].word);
     }
+    /* unchanged, it loads */
+    DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
+    release(w, target, good, before, bad);
+}
+END_TEST
+
+/* A checkpoint's clumps are held to what the API makes of them: a clump of
+ * a template that does not exist, of an orientation that is not a unit
+ * quaternion or not finite, a member that is no particle, a member of two
+ * clumps, a member unlike its template's sphere, a template of no spheres,
+ * a count of live clumps that is not the clumps', each written into the
+ * checkpoint of clumps3d() behind a repaired checksum, is refused on load
+ * with a message that names it. */
+START_TEST(clump_records_the_api_would_not_make_are_refused)
+{
+    demill_world *w = clumps3d(), *target;
+    ck_assert_int_eq(demill_world_create(3, &target), DEMILL_OK);
+    bytes good = checkpoint_of(w), before = checkpoint_of(target);
+    /* the layout of section CLMP (lib/world/checkpoint.c, transfer_clumps()):
+     * its name, the counts of templates (3) and of their spheres (7); each
+     * template's 3 32-bit fields (the second its number of spheres) and 22
+     * doubles; 4 doubles per sphere; the counts of clump slots (13), live
+     * clumps (12) and members; each slot's handle, and for a live clump its
+     * template and first member (32 bits each) and 23 doubles, the fourth
+     * to seventh its orientation; then the members' particle handles */
+    const size_t clmp = unique_offset(good, "CLMP", 4), tmpl0 = clmp + 12;
+    const size_t counts = tmpl0 + 3 * (12 + 22 * 8) + 7 * 32, slot0 = counts + 12;
+    const size_t q0 = slot0 + 12 + 6 * 8, cmem = slot0 + 12 * (12 + 23 * 8) + 4;
+    uint32_t member[2];
+    memcpy(member, good.b + cmem, sizeof member); /* clump 0's two */
+    /* a free sphere's handle: the index bits of its id */
+    demill_id ids[64], owner[64];
+    size_t n;
+    DM_OK(w, demill_particles_read_ids(w, DEMILL_PARTICLE_ID, ids, 64, &n));
+    DM_OK(w, demill_particles_read_ids(w, DEMILL_PARTICLE_CLUMP, owner, 64, &n));
+    uint32_t sphere = 0;
+    while (owner[sphere] != DEMILL_ID_NONE)
+        sphere++;
+    sphere = (uint32_t)(ids[sphere] & 0xFFFFFFFFu);
+    const uint32_t seven = 7, none = 1000, zero = 0, thirteen = 13;
+    const double off = 0.9, nan = NAN;
+    const struct {
+        size_t at;
+        const void *patch;
+        size_t len;
+        const char *word;
+    } cases[] = {
+        {slot0 + 4, &seven, 4, "template 7 of 3"},
+        {q0, &off, 8, "orientation of norm"},
+        {q0 + 8, &nan, 8, "not finite"},
+        {cmem, &none, 4, "member 0 is not a particle"},
+        {cmem + 4, &member[0], 4, "member 1 is a member of clump 0 too"},
+        {cmem, &sphere, 4, "another material, radius or mass"},
+        {tmpl0 + 4, &zero, 4, "clump template 0 has no spheres"},
+        {counts + 4, &thirteen, 4, "12 clumps"},
+    };
+    unsigned char *bad = malloc(good.n);
+    ck_assert_ptr_nonnull(bad);
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
+        refused_patched(target, before, good, bad, cases[c].at, cases[c].patch, cases[c].len,
+                        cases[c].word, cases[c].word);
     /* unchanged, it loads */
     DM_OK(target, demill_world_load_buffer(target, good.b, good.n));
     release(w, target, good, before, bad);
@@ -1048,6 +1247,8 @@ int main(int argc, char **argv)
         {"ids", listing_ids, 1},
         {"refused", truncated_and_corrupt_checkpoints_are_refused, 1},
         {"repaired", corruption_behind_a_repaired_checksum_never_crashes, 1},
+        {"clump_flips", clump_bytes_flipped_never_crash, 1},
+        {"clumps", clump_records_the_api_would_not_make_are_refused, 1},
         {"drum", drum_values_the_api_refuses_are_refused, 1},
         {"impacts", impact_recordings_not_finite_are_refused, 1},
         {"finite_walls", finite_wall_values_the_api_refuses_are_refused, 1},

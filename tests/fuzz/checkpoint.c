@@ -5,7 +5,10 @@
  *         the magic, version, byte order, size and checksum);
  *   odd:  as a payload, behind a correct header with its size and CRC-32
  *         (reaches the checks of every size, index and parameter, which a
- *         random checksum would almost never let through).
+ *         random checksum would almost never let through), of the format
+ *         version in the byte's upper seven bits (1 when they are 0, as in
+ *         the corpus's first inputs; 5, the sections of orientations and
+ *         clumps, for 11).
  * Every load must return DEMILL_OK or DEMILL_ERR_FORMAT, never crash, leak or
  * touch memory it should not (run under AddressSanitizer and UBSan); a world
  * that loaded must survive a few steps and a save.
@@ -40,6 +43,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         static const unsigned char header[16] = {'D', 'E', 'M', 'I', 'L', 'L', 'C', 'K',
                                                  1, 0, 0, 0, 4, 3, 2, 1};
         memcpy(b, header, sizeof header);
+        if (data[0] >> 1)
+            b[8] = (unsigned char)(data[0] >> 1);
         memset(b + 28, 0, 4);
         memcpy(b + DM_TEST_CKPT_HEADER, data + 1, size - 1);
         dm_test_ckpt_repair(b, n);

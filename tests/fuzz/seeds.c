@@ -1,8 +1,10 @@
 /* seeds.c: writes the starting inputs of the checkpoint fuzzer into a
  * directory: checkpoints of an empty 2D and 3D world, a 2D box of discs with
- * a moving wall, and a small 3D mill with lifters and a collision spectrum
- * (each stepped so that contacts carry history), every one both as a whole
- * file (first byte 0) and as a payload (first byte 1, see checkpoint.c). */
+ * a moving wall, a small 3D mill with lifters and a collision spectrum, and
+ * clumps of two templates among spheres on a floor, in 3D and in 2D (each
+ * stepped so that contacts carry history; a clump removed so that a slot
+ * is free), every one both as a whole file (first byte 0) and as a payload
+ * (first byte 2 f + 1 for format f, see checkpoint.c). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,7 +31,7 @@ static void write_seed(const char *dir, const char *name, demill_world *w)
         char path[4096];
         snprintf(path, sizeof path, "%s/seed-%s-%s", dir, name, mode ? "payload" : "file");
         FILE *f = fopen(path, "wb");
-        const unsigned char first = (unsigned char)mode;
+        const unsigned char first = (unsigned char)(mode ? 2 * b[8] + 1 : 0);
         const size_t skip = mode ? 32 : 0; /* the header, rebuilt by the target */
         if (!f || fwrite(&first, 1, 1, f) != 1 || fwrite(b + skip, 1, n - skip, f) != n - skip ||
             fclose(f))
@@ -94,5 +96,27 @@ int main(int argc, char **argv)
     OK(demill_world_step(w, 300));
     write_seed(argv[1], "mill3d", w);
     demill_world_destroy(w);
+
+    for (int dim = 3; dim >= 2; dim--) {
+        OK(demill_world_create(dim, &w));
+        m = material(w, DEMILL_NORMAL_LINEAR, DEMILL_TANGENTIAL_SPRING);
+        OK(demill_wall_add_plane(w, m, floor_pt, up, &wall));
+        const double dumbbell[6] = {-0.003, 0, 0, 0.003, 0, 0}, ell[9] = {0, 0, 0, 0.005, 0, 0,
+                                                                       0, 0.005, 0};
+        const double rd[2] = {0.004, 0.003}, rl[3] = {0.004, 0.004, 0.003};
+        demill_id tmpl[2], clump[4];
+        OK(demill_clump_template_add(w, m, 2, dumbbell, rd, &tmpl[0]));
+        OK(demill_clump_template_add(w, m, 3, ell, rl, &tmpl[1]));
+        for (int k = 0; k < 4; k++) {
+            const double at[3] = {0.02 * k, 0.008, 0}, q[4] = {1, 0, 0, 0.3 * k};
+            OK(demill_clump_add(w, tmpl[k % 2], at, q, &clump[k]));
+        }
+        const double ball[3] = {0.03, 0.03, 0}, rb = 0.004;
+        OK(demill_particles_add(w, m, 1, ball, &rb, NULL, 0, NULL));
+        OK(demill_clump_remove(w, clump[1]));
+        OK(demill_world_step(w, 200));
+        write_seed(argv[1], dim == 3 ? "clumps3d" : "clumps2d", w);
+        demill_world_destroy(w);
+    }
     return 0;
 }

@@ -12,7 +12,9 @@ forces m g (nothing touches); the shell's points on the circle of radius
 D/2; lifters at their polar angle plus the drum's angle (speed times the
 world's time); the plane's patch on the plane, facing its normal, as wide as
 the scene's box; the finite walls' points on their surfaces; the series'
-frames at increasing times and in free fall between them. Without the vtk module the test fails: CI installs it.
+frames at increasing times and in free fall between them; the clumps'
+members named by their clump, at their template's place, with its
+orientation and the mass of the union of its spheres. Without the vtk module the test fails: CI installs it.
 """
 import math
 import os
@@ -206,6 +208,44 @@ class ReadBack(unittest.TestCase):
         data = read(self.path("2d_particles.vtu"))
         self.check_particles(data, particles2d(), 2)
         self.close(time_of(data), 500 * DT, 1e-15, "time")
+
+    def test_clumps(self):
+        """The clumps scene: the clump array names each member's clump by
+        the index of its id (clumps 0 and 2, clump 1 removed), -1 for the
+        free spheres; members sit at X +- R(q) (d/2, 0, 0), d = 5 mm apart
+        along the dumbbell's axis (its principal axis of least inertia, of
+        either sign), with the clump's orientation and mass: rho times the
+        union of two spheres of radius r at distance d, 2 (4/3 pi r^3)
+        minus the lens pi (4 r + d) (2 r - d)^2 / 12 (Weisstein,
+        "Sphere-Sphere Intersection", MathWorld)."""
+        data = read(self.path("clumps_particles.vtu"))
+        self.assertEqual(data.GetNumberOfPoints(), 6)
+        self.assertEqual(array(data, "clump"), [-1, 0, 0, 2, 2, -1])
+        r, d, rho = 0.004, 0.005, 7800.0
+        mass = rho * (2 * 4.0 / 3.0 * math.pi * r ** 3 -
+                      math.pi * (4 * r + d) * (2 * r - d) ** 2 / 12)
+        x, q, m, rad = points(data), array(data, "orientation"), array(data, "mass"), \
+            array(data, "radius")
+        self.close_vec(x[0], (-0.05, 0, 0), 0, "free sphere")
+        self.close_vec(x[5], (0.2, 0, 0), 0, "free sphere")
+        for k, pair in ((0, (1, 2)), (2, (3, 4))):
+            want = (1.0, 0.2 * k, -0.1, 0.3)
+            n = math.sqrt(sum(c * c for c in want))
+            w_, i, j, l = (c / n for c in want)
+            # the body x axis in the world frame: the first column of R(q)
+            axis = (1 - 2 * (j * j + l * l), 2 * (i * j + w_ * l), 2 * (i * l - w_ * j))
+            centre = (0.05 * k, 0.1, 0.0)
+            ends = [tuple(centre[c] + s * 0.5 * d * axis[c] for c in range(3)) for s in (-1, 1)]
+            got = [x[p] for p in pair]
+            if norm(sub(got[0], ends[0])) > norm(sub(got[0], ends[1])):
+                ends.reverse()
+            for p, e in zip(got, ends):
+                self.close_vec(p, e, 1e-15, "member of clump %d" % k)
+            for p in pair:
+                for c in range(4):
+                    self.close(q[p][c], (w_, i, j, l)[c], 1e-15, "orientation of member %d" % p)
+                self.close(m[p], mass, 1e-12 * mass, "mass of member %d" % p)
+                self.close(rad[p], r, 0, "radius of member %d" % p)
 
     def test_empty(self):
         data = read(self.path("empty_particles.vtu"))

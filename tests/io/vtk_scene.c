@@ -41,6 +41,12 @@
  *   (0, 2, 3), recording its loads; the rectangle of finite, not recording;
  *   a ball of radius 0.01 at rest at (0.03, 0.01 - m g / k, -0.02), m its
  *   mass and g 9.81 m/s². 500 steps: loads_walls.vtp.
+ * clumps: a 3D world, material 0 (7800 kg/m³); a template of two spheres
+ *   of radius 0.004 at (0, 0, 0) and (0.005, 0, 0); in this order: a sphere
+ *   of radius 0.003 at (-0.05, 0, 0), clumps k = 0, 1, 2 of the template
+ *   at (0.05 k, 0.1, 0) in the orientation (1, 0.2 k, -0.1, 0.3),
+ *   normalised by the add, a sphere of radius 0.003 at (0.2, 0, 0); then
+ *   clump 1 removed: clumps_particles.vtu.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -234,6 +240,26 @@ static void scene_loads(void)
     demill_world_destroy(w);
 }
 
+static void scene_clumps(void)
+{
+    demill_world *w;
+    check(demill_world_create(3, &w), "world");
+    g_world = w;
+    demill_id m = material(w, 7800), tmpl, clump[3];
+    const double c[6] = {0, 0, 0, 0.005, 0, 0}, radii[2] = {0.004, 0.004}, r = 0.003;
+    const double a[3] = {-0.05, 0, 0}, b[3] = {0.2, 0, 0};
+    check(demill_clump_template_add(w, m, 2, c, radii, &tmpl), "template");
+    check(demill_particles_add(w, m, 1, a, &r, NULL, 0, NULL), "sphere");
+    for (int k = 0; k < 3; k++) {
+        const double x[3] = {0.05 * k, 0.1, 0}, q[4] = {1, 0.2 * k, -0.1, 0.3};
+        check(demill_clump_add(w, tmpl, x, q, &clump[k]), "clump");
+    }
+    check(demill_particles_add(w, m, 1, b, &r, NULL, 0, NULL), "sphere");
+    check(demill_clump_remove(w, clump[1]), "remove");
+    check(demill_vtk_write_particles(w, path("clumps_particles.vtu")), "clumps");
+    demill_world_destroy(w);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -246,5 +272,6 @@ int main(int argc, char **argv)
     scene_empty_and_plane();
     scene_finite();
     scene_loads();
+    scene_clumps();
     return EXIT_SUCCESS;
 }
