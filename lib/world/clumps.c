@@ -165,6 +165,7 @@ DEMILL_API demill_status demill_clump_template_add(demill_world *w, demill_id ma
         for (int a = 0; a < 3; a++)
             b[a] = axes[3 * a] * d[0] + axes[3 * a + 1] * d[1] + axes[3 * a + 2] * d[2];
         b[3] = radii[k];
+        t->rpow += w->dim == 3 ? radii[k] * radii[k] * radii[k] : radii[k] * radii[k];
     }
     w->ntmem += (uint32_t)n;
     *out = dm_template_id(w, w->ntemplates++);

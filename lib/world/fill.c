@@ -385,7 +385,8 @@ DEMILL_API demill_status demill_clump_fill_region(demill_world *w, int32_t regio
     return s;
 }
 
-/* The particles' translational kinetic energy. */
+/* The particles' translational kinetic energy (a clump's member with its
+ * own part of its clump's mass). */
 static double translational_energy(const demill_world *w)
 {
     const dm_particles *P = &w->p;
@@ -393,7 +394,7 @@ static double translational_energy(const demill_world *w)
     double ke = 0.0;
     for (uint32_t i = 0; i < P->n; i++)
         for (int c = 0; c < D; c++)
-            ke += 0.5 * P->m[i] * P->v[D * i + c] * P->v[D * i + c];
+            ke += 0.5 * dm_particle_share(w, i) * P->v[D * i + c] * P->v[D * i + c];
     return ke;
 }
 

@@ -23,7 +23,13 @@
  *    and the angles' mean cosine and sine are within 4 standard errors
  *    (sqrt(1/2n)) of 0.
  *  - A fill that cannot fit, a bad template, region or target, is refused
- *    and leaves the world's particles as they were, and no clump. */
+ *    and leaves the world's particles as they were, and no clump.
+ *  - A member counts its own part of its clump's mass where a mass is a
+ *    share of the charge: a drum charged with clumps of one sphere reports
+ *    the toe, shoulder, centre-of-mass angle and power from the centre of
+ *    mass of the same spheres (to 1e-9); with dumbbells the power from the
+ *    centre of mass is -omega sum M (X x g)_z over the clumps (to 1e-12),
+ *    not twice it. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -341,6 +347,93 @@ START_TEST(refusals_leave_the_world)
 }
 END_TEST
 
+/* A 3D drum 0.2 x 0.1 m turning at 75 % of critical speed in a world of
+ * gravity, with the material's Hertz-Mindlin contacts. */
+static demill_world *turning_drum(demill_id *mat, demill_id *tmpl, demill_id *drum)
+{
+    demill_world *w = dumbbell_world(3, mat, tmpl);
+    DM_OK(w, demill_material_set(w, *mat, DEMILL_MATERIAL_YOUNGS_MODULUS, 1e8));
+    DM_OK(w, demill_material_set(w, *mat, DEMILL_MATERIAL_FRICTION, 0.5));
+    DM_OK(w, demill_pair_set(w, *mat, *mat, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN));
+    DM_OK(w, demill_drum_create(w, *mat, drum));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_DIAMETER, 0.2));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LENGTH, 0.1));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_SPEED_FRACTION, 0.75));
+    return w;
+}
+
+static double drum_get(demill_world *w, demill_id drum, int key)
+{
+    double v;
+    DM_OK(w, demill_drum_get(w, drum, key, &v));
+    return v;
+}
+
+/* A charge of clumps of one sphere is the same charge as those spheres:
+ * the drum reports the same toe, shoulder and centre of mass angles and
+ * power from the centre of mass, after 0.05 s of turning (a one-sphere
+ * clump moves as its sphere to round-off: physics_clumps). */
+START_TEST(one_sphere_clumps_are_spheres)
+{
+    demill_id mat, tmpl, drum, mat2, tmpl2, drum2, one;
+    demill_world *w = turning_drum(&mat, &tmpl, &drum), *w2 = turning_drum(&mat2, &tmpl2, &drum2);
+    const double ball[2] = {0.012, 1.0}, at[3] = {0, 0, 0}, r = 0.006;
+    size_t n;
+    DM_OK(w, demill_drum_fill(w, drum, mat, DEMILL_SIZES_CLASSES, ball, 2, DEMILL_FILL_COUNT, 300,
+                              2, NULL, 0, &n));
+    double *x = malloc(3 * n * sizeof *x);
+    ck_assert(x);
+    DM_OK(w, demill_particles_read(w, DEMILL_PARTICLE_POSITION, x, n, &n));
+    DM_OK(w2, demill_clump_template_add(w2, mat2, 1, at, &r, &one));
+    for (size_t k = 0; k < n; k++) {
+        demill_id c;
+        DM_OK(w2, demill_clump_add(w2, one, x + 3 * k, NULL, &c));
+    }
+    free(x);
+    DM_OK(w, demill_world_step(w, 5000));
+    DM_OK(w2, demill_world_step(w2, 5000));
+    const int keys[4] = {DEMILL_DRUM_TOE_ANGLE, DEMILL_DRUM_SHOULDER_ANGLE, DEMILL_DRUM_COM_ANGLE,
+                         DEMILL_DRUM_POWER_CM};
+    for (int k = 0; k < 4; k++) {
+        const double a = drum_get(w, drum, keys[k]), b = drum_get(w2, drum2, keys[k]);
+        ck_assert_msg(fabs(a - b) <= 1e-9 * fabs(a), "drum key %d: spheres %.17g, clumps %.17g",
+                      keys[k], a, b);
+    }
+    demill_world_destroy(w);
+    demill_world_destroy(w2);
+}
+END_TEST
+
+/* Dumbbells (two equal spheres: a member's share is half its clump's mass,
+ * and the members' mean place is the clump's centre of mass) in a turning
+ * drum: the power from the centre of mass, -omega (M x_cm x g)_z summed
+ * over the charge, is the clumps' own, summed from their masses and centres
+ * (DEMILL_CLUMP_MASS, _POSITION), to round-off; a member's own mass counted
+ * as the whole clump's would double it. */
+START_TEST(dumbbells_weigh_their_mass)
+{
+    demill_id mat, tmpl, drum, ids[200];
+    demill_world *w = turning_drum(&mat, &tmpl, &drum);
+    DM_OK(w, demill_clump_fill_region(w, DEMILL_REGION_DRUM, NULL, 0, tmpl, DEMILL_FILL_COUNT,
+                                      200, 4, ids, 200, NULL));
+    DM_OK(w, demill_world_step(w, 3000));
+    double g[2], torque = 0.0, mass = 0.0;
+    DM_OK(w, demill_world_get(w, DEMILL_WORLD_GRAVITY_X, &g[0]));
+    DM_OK(w, demill_world_get(w, DEMILL_WORLD_GRAVITY_Y, &g[1]));
+    for (int k = 0; k < 200; k++) {
+        double m, X[3];
+        DM_OK(w, demill_clump_get(w, ids[k], DEMILL_CLUMP_MASS, &m));
+        DM_OK(w, demill_clump_get(w, ids[k], DEMILL_CLUMP_POSITION, X));
+        torque += m * (X[0] * g[1] - X[1] * g[0]); /* about the drum's axis, z */
+        mass += m;
+    }
+    const double omega = drum_get(w, drum, DEMILL_DRUM_CURRENT_SPEED);
+    ck_assert(omega > 0.0);
+    DM_ASSERT_REL(drum_get(w, drum, DEMILL_DRUM_POWER_CM), -omega * torque, 1e-12);
+    demill_world_destroy(w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("clump_fill");
@@ -350,6 +443,8 @@ int main(void)
     tcase_add_test(tc, same_seed_same_clumps);
     tcase_add_test(tc, orientations_uniform);
     tcase_add_test(tc, refusals_leave_the_world);
+    tcase_add_test(tc, one_sphere_clumps_are_spheres);
+    tcase_add_test(tc, dumbbells_weigh_their_mass);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }

@@ -254,6 +254,7 @@ typedef struct dm_template {
     double inertia[3];      /* principal moments, increasing (2D: 0, 0, I_z) */
     double axes[9];         /* the principal axes in the input frame, one per row */
     double centre[3];       /* the centre of mass in the input frame */
+    double rpow;            /* the sum of the spheres' r³ (2D: r²), for dm_particle_share() */
 } dm_template;
 #define DM_TMEM 4 /* doubles per template member: body-frame offset (3), radius */
 
@@ -714,6 +715,23 @@ void dm_particle_set_mass(demill_world *w, uint32_t i, bool fixed);
 static inline bool dm_particle_fixed(const dm_particles *P, uint32_t i)
 {
     return P->im[i] == 0.0;
+}
+
+/* Particle i's own part of the charge's mass: a free particle's mass; a
+ * clump's member carries its clump's whole mass M in P->m (the m* of its
+ * contacts), and owns M r_i³ / Σ r_k³ of it (2D: r², the sum over its
+ * template's spheres), so that a clump's members add up to M and a clump of
+ * one sphere owns M. For a mass that is a share of the charge (its centre
+ * of mass and shape, the settling's kinetic energy, the ore's energy per
+ * unit mass), not for a contact's inertia. */
+static inline double dm_particle_share(const demill_world *w, uint32_t i)
+{
+    const dm_particles *P = &w->p;
+    if (!P->clump[i])
+        return P->m[i];
+    const dm_template *t = &w->templates[w->clumps[P->clump[i] - 1].tmpl];
+    const double r = P->r[i], rp = w->dim == 3 ? r * r * r : r * r;
+    return P->m[i] * (rp / t->rpow);
 }
 
 /* The kinetic energy of particle i's spin, 1/2 I ω² over its W components
