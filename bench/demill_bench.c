@@ -7,6 +7,12 @@
  *   bench scene=drum3d code=libdemill threads=1 particles=10000 steps=10000
  *   particle_steps_per_s=1.23e7 peak_rss_mb=42.0
  *
+ * --scene drum3d-clumps is drum3d's drum with its 10,000 spheres as 5,000
+ * dumbbells: clumps of two spheres of the scene's 3 mm radius whose centres
+ * are 3 mm apart, filled into the drum by demill_clump_fill_region() (seed
+ * 1; the lattice of the spheres does not hold them), the rate counted per
+ * member sphere (particles = members).
+ *
  * Energy tracking is off, as the peers do not tally energy. --dump-packing
  * writes the initial positions (x y z r per line) for the peers' inputs.
  * --set NAME=VALUE changes a parameter of the registry (demill_param_name())
@@ -23,6 +29,19 @@
 #include <time.h>
 
 #include "../examples/mill/mill.h"
+
+/* Under valgrind --tool=callgrind --instr-atstart=no, only the timed window
+ * is instrumented, so that its instructions are counted without paying
+ * callgrind's slowdown over the run-up. */
+#if defined(__has_include)
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#endif
+#endif
+#ifndef CALLGRIND_START_INSTRUMENTATION
+#define CALLGRIND_START_INSTRUMENTATION
+#define CALLGRIND_STOP_INSTRUMENTATION
+#endif
 
 static double now(void)
 {
@@ -55,11 +74,16 @@ static double peak_rss_kb(void)
 static void usage(FILE *f)
 {
     fputs("usage: demill_bench [options]\n"
-          "  --scene drum3d|drum2d   the canonical scene [drum3d]\n"
+          "  --scene drum3d|drum2d   the canonical scene [drum3d]; drum3d-clumps: drum3d with\n"
+          "                          its spheres as half as many dumbbells (two 3 mm spheres\n"
+          "                          3 mm apart), filled at random orientations\n"
           "  --particles N           scale the drum to N particles [the scene's]\n"
           "  --threads N             threads [1]\n"
           "  --steps N               timed steps [10000]\n"
           "  --settle S --rotate S   seconds before the timed window [0.3 0.3]\n"
+          "  --fill                  drum3d: the spheres placed by demill_drum_fill() (seed 1),\n"
+          "                          packed at rest at the bottom as drum3d-clumps' dumbbells\n"
+          "                          are, instead of the scene's lattice\n"
           "  --energy                keep the energy tally on\n"
           "  --no-watchdog           switch the stability watchdog off\n"
           "  --mesh FILE.stl         the drum's shell, caps and lifters from this STL file\n"
@@ -116,7 +140,7 @@ int main(int argc, char **argv)
     const char *scene = "drum3d", *dump = NULL, *mesh = NULL;
     long particles = 0, threads = 1, steps = 10000;
     double settle = 0.3, rotate = 0.3;
-    int energy = 0, watchdog = 1, nsets = 0;
+    int energy = 0, watchdog = 1, nsets = 0, filled = 0;
     const char *sets[64];
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
@@ -125,6 +149,8 @@ int main(int argc, char **argv)
             return EXIT_SUCCESS;
         } else if (!strcmp(a, "--energy")) {
             energy = 1;
+        } else if (!strcmp(a, "--fill")) {
+            filled = 1;
         } else if (!strcmp(a, "--no-watchdog")) {
             watchdog = 0;
         } else if (!v) {
@@ -153,7 +179,20 @@ int main(int argc, char **argv)
             return EXIT_FAILURE;
         }
     }
-    const int is3d = !strcmp(scene, "drum3d");
+    const int clumps = !strcmp(scene, "drum3d-clumps");
+    const int is3d = clumps || !strcmp(scene, "drum3d");
+    if ((mesh || dump) && clumps) {
+        fprintf(stderr, "demill_bench: drum3d-clumps takes no --mesh or --dump-packing\n");
+        return EXIT_FAILURE;
+    }
+    if (filled && (!is3d || clumps || mesh || dump)) {
+        fprintf(stderr, "demill_bench: --fill is for drum3d (drum3d-clumps is always filled)\n");
+        return EXIT_FAILURE;
+    }
+    if (clumps && particles % 2) {
+        fprintf(stderr, "demill_bench: drum3d-clumps needs an even --particles\n");
+        return EXIT_FAILURE;
+    }
     if (mesh && !is3d) {
         fprintf(stderr, "demill_bench: --mesh needs --scene drum3d\n");
         return EXIT_FAILURE;
@@ -215,18 +254,36 @@ int main(int argc, char **argv)
     fail(w, demill_world_set(w, DEMILL_WORLD_THREADS, (double)threads), "threads");
     fail(w, demill_world_set(w, DEMILL_WORLD_ENERGY_TRACKING, energy), "energy tracking");
     fail(w, demill_world_set(w, DEMILL_WORLD_WATCHDOG, watchdog), "watchdog");
-    fail(w, demill_particles_add(w, steel, (size_t)particles, pos, rad, NULL, 0, NULL), "charge");
+    if (clumps) {
+        const double c[6] = {-0.0015, 0, 0, 0.0015, 0, 0}, r[2] = {0.003, 0.003};
+        demill_id tmpl;
+        fail(w, demill_clump_template_add(w, steel, 2, c, r, &tmpl), "dumbbell");
+        fail(w, demill_clump_fill_region(w, DEMILL_REGION_DRUM, NULL, 0, tmpl, DEMILL_FILL_COUNT,
+                                         (double)(particles / 2), 1, NULL, 0, NULL),
+             "charge");
+    } else if (filled) {
+        const double sizes[2] = {0.006, 1.0};
+        fail(w, demill_drum_fill(w, drum, steel, DEMILL_SIZES_CLASSES, sizes, 2, DEMILL_FILL_COUNT,
+                                 (double)particles, 1, NULL, 0, NULL),
+             "charge");
+    } else {
+        fail(w, demill_particles_add(w, steel, (size_t)particles, pos, rad, NULL, 0, NULL),
+             "charge");
+    }
     free(pos);
     free(rad);
     fprintf(stderr, "demill_bench: %s, %ld particles, %ld threads: settling %g s, turning %g s, "
                     "then timing %ld steps\n",
-            mesh ? "drum3d-mesh" : scene, particles, threads, settle, rotate, steps);
+            mesh ? "drum3d-mesh" : filled ? "drum3d-fill" : scene, particles, threads, settle, rotate,
+            steps);
     fail(w, demill_world_step(w, (uint64_t)llround(settle / geo.time_step)), "settling");
     fail(w, demill_drum_set(w, drum, DEMILL_DRUM_SPEED_FRACTION, 0.75), "speed");
     fail(w, demill_world_step(w, (uint64_t)llround(rotate / geo.time_step)), "turning");
+    CALLGRIND_START_INSTRUMENTATION;
     const double t0 = now();
     fail(w, demill_world_step(w, (uint64_t)steps), "the timed window");
     const double t1 = now();
+    CALLGRIND_STOP_INSTRUMENTATION;
     double contacts, wall_contacts, rebuilds;
     fail(w, demill_world_get(w, DEMILL_WORLD_CONTACT_COUNT, &contacts), "contacts");
     fail(w, demill_world_get(w, DEMILL_WORLD_WALL_CONTACT_COUNT, &wall_contacts), "contacts");
@@ -236,7 +293,7 @@ int main(int argc, char **argv)
             contacts / particles, wall_contacts / particles, rebuilds);
     printf("bench scene=%s code=libdemill threads=%ld particles=%ld steps=%ld "
            "particle_steps_per_s=%.3g peak_rss_mb=%.1f\n",
-           mesh ? "drum3d-mesh" : scene, threads, particles, steps,
+           mesh ? "drum3d-mesh" : filled ? "drum3d-fill" : scene, threads, particles, steps,
            (double)particles * steps / (t1 - t0),
            peak_rss_kb() / 1024.0);
     demill_world_destroy(w);

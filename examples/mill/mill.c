@@ -8,8 +8,10 @@
  * drum2d run the canonical scenes exactly, as docs/scenes.md defines them. Writes a time series, a
  * summary, VTK files for ParaView and two pictures to the output folder;
  * progress goes to stderr. With --ore FILE, ore joins the charge and the
- * mill also writes the product of grinding it (ore.c). Run `mill --help`
- * for the options.
+ * mill also writes the product of grinding it (ore.c). With --shape FILE
+ * the charge is clumps of the spheres the file gives (shape.c) instead of
+ * balls, at random orientations, to the same mass or filling. Run
+ * `mill --help` for the options.
  */
 #define _POSIX_C_SOURCE 200809L /* mkdir, isatty */
 
@@ -28,7 +30,7 @@
 #define PI 3.14159265358979323846
 
 typedef struct options {
-    const char *scene, *out, *ore;
+    const char *scene, *out, *ore, *shape;
     double grind_minutes;
     int dim, lifters, threads;
     double diameter, length, speed, fill, radius, lifter_height, revolutions, dt, vtk_every;
@@ -65,6 +67,10 @@ static void usage(FILE *f)
           "                       kWh/t to summary.txt. The coupling is one way: the DEM charge\n"
           "                       keeps its balls and its ore at the feed's sizes\n"
           "  --grind-minutes M    grinding time of the product with --ore, minutes [10]\n"
+          "  --shape FILE         charge clumps instead of balls: rigid bodies of the spheres\n"
+          "                       the file gives, one a line, \"x y z r\" in m ('#' comments;\n"
+          "                       2D: z = 0), e.g. examples/mill/dumbbell.txt; filled at random\n"
+          "                       orientations to the same mass (or --fill); not with --radius\n"
           "  --help               this text\n",
           f);
 }
@@ -75,7 +81,7 @@ static int parse_options(int argc, char **argv, options *o)
                    .diameter = 0.3, .length = 0.1, .speed = 75, .fill = 0, .radius = 0.005,
                    .lifter_height = 0.015, .revolutions = 2, .dt = 1e-5, .vtk_every = 0.1,
                    .mass = 10000 * 8.8216e-4};
-    int geometry = 0;
+    int geometry = 0, radius_given = 0;
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k], *v = option_value(argc, argv, &k, usage);
         if (!v)
@@ -87,6 +93,9 @@ static int parse_options(int argc, char **argv, options *o)
             o->out = v;
         } else if (!strcmp(a, "--ore")) {
             o->ore = v;
+        } else if (!strcmp(a, "--shape")) {
+            o->shape = v;
+            geometry = 1;
         } else if (!strcmp(a, "--grind-minutes")) {
             if (parse_number(a, v, 1e-6, 1e6, &o->grind_minutes))
                 return -1;
@@ -131,6 +140,7 @@ static int parse_options(int argc, char **argv, options *o)
             if (j < sizeof num / sizeof num[0]) {
                 if (parse_number(a, v, num[j].lo, num[j].hi, num[j].dst))
                     return -1;
+                radius_given |= num[j].dst == &o->radius;
             } else if (!strcmp(a, "--lifters")) {
                 if (parse_number(a, v, 0, 64, &x))
                     return -1;
@@ -141,6 +151,11 @@ static int parse_options(int argc, char **argv, options *o)
             }
             geometry = 1;
         }
+    }
+    if (o->shape && radius_given) {
+        fprintf(stderr, "mill: --radius sets the balls' size; with --shape the file gives the "
+                        "spheres' sizes\n");
+        return -1;
     }
     if (strcmp(o->scene, "default")) {
         if (geometry) {
@@ -197,6 +212,9 @@ int main(int argc, char **argv)
     ore_def ore;
     if (o.ore && ore_read(o.ore, &ore))
         return EXIT_FAILURE;
+    shape_def spheres;
+    if (o.shape && shape_read(o.shape, &spheres))
+        return EXIT_FAILURE;
     if (mkdir(o.out, 0777) && errno != EEXIST) {
         perror(o.out);
         return EXIT_FAILURE;
@@ -213,7 +231,8 @@ int main(int argc, char **argv)
     check(demill_world_set(w, DEMILL_WORLD_THREADS, o.threads), "--threads");
 
     /* the charge */
-    size_t n;
+    size_t n, clumps = 0;
+    double clump_mass = 0.0;
     if (o.particles) {
         const scene_def sd = {o.dim, o.particles, o.site_radius, 15, -0.046};
         double *pos = malloc(3 * o.particles * sizeof *pos), *rad = malloc(o.particles * sizeof *rad);
@@ -235,13 +254,28 @@ int main(int argc, char **argv)
             check(demill_drum_set(w, drum, DEMILL_DRUM_FILL_POROSITY, 0.2), "porosity");
         /* 3D: the drum3d charge's mass unless a filling is given; 2D: 30 % */
         const double fill = o.fill > 0 ? o.fill : o.dim == 2 ? 30 : 0;
-        check(demill_drum_fill(w, drum, steel, DEMILL_SIZES_CLASSES, sizes, 2,
-                               fill > 0 ? DEMILL_FILL_FRACTION : DEMILL_FILL_MASS,
-                               fill > 0 ? fill / 100 : o.mass, 1, NULL, 0, &n),
-              "filling the drum");
+        const int32_t target = fill > 0 ? DEMILL_FILL_FRACTION : DEMILL_FILL_MASS;
+        const double value = fill > 0 ? fill / 100 : o.mass;
+        if (o.shape) {
+            demill_id tmpl;
+            check(demill_clump_template_add(w, steel, spheres.n, spheres.centres, spheres.radii, &tmpl),
+                  "the clump template of --shape");
+            check(demill_clump_template_get(w, tmpl, DEMILL_TEMPLATE_MASS, &clump_mass),
+                  "the template's mass");
+            check(demill_clump_fill_region(w, DEMILL_REGION_DRUM, NULL, 0, tmpl, target, value,
+                                           1, NULL, 0, &clumps),
+                  "filling the drum with clumps");
+            n = clumps * spheres.n;
+        } else {
+            check(demill_drum_fill(w, drum, steel, DEMILL_SIZES_CLASSES, sizes, 2, target, value,
+                                   1, NULL, 0, &n),
+                  "filling the drum");
+        }
     }
-    double mass = 0.0;
-    {
+    /* the charge's mass: the clumps', or the sum of the balls' (a member
+     * reads its clump's mass) */
+    double mass = clumps * clump_mass;
+    if (!clumps) {
         double *m = malloc(n * sizeof *m);
         size_t count;
         check(demill_particles_read(w, DEMILL_PARTICLE_MASS, m, n, &count), "masses");
@@ -263,9 +297,14 @@ int main(int argc, char **argv)
     const uint64_t vtk_steps = o.vtk_every > 0 ? (uint64_t)fmax(1, round(o.vtk_every / o.dt)) : 0;
     const double total_time = settle + (period > 0 ? o.revolutions * period : 1.0);
     const uint64_t total_steps = (uint64_t)ceil(total_time / o.dt);
-    fprintf(stderr, "mill: %s, %dD, %zu balls (%.3f kg) and %zu ore particles in a %.3f m drum, %d "
+    char what[128];
+    if (clumps)
+        snprintf(what, sizeof what, "%zu clumps of %zu spheres", clumps, spheres.n);
+    else
+        snprintf(what, sizeof what, "%zu balls", n);
+    fprintf(stderr, "mill: %s, %dD, %s (%.3f kg) and %zu ore particles in a %.3f m drum, %d "
                     "lifters, %.0f %% of critical (%.4f rad/s), %.0f revolutions, about %llu steps\n",
-            o.scene, o.dim, n, mass, n_ore, o.diameter, o.lifters, o.speed, omega, o.revolutions,
+            o.scene, o.dim, what, mass, n_ore, o.diameter, o.lifters, o.speed, omega, o.revolutions,
             (unsigned long long)total_steps);
 
     char path[4096];
@@ -348,8 +387,8 @@ int main(int argc, char **argv)
         return EXIT_FAILURE;
     const double mean_power = drum_value(w, drum, DEMILL_DRUM_POWER_MEAN);
     char title[256];
-    snprintf(title, sizeof title, "libdemill %s mill, %dD: %zu balls, %.0f %% of critical, t = %.2f s, mean power %.2f W",
-             o.scene, o.dim, n, o.speed, t, mean_power);
+    snprintf(title, sizeof title, "libdemill %s mill, %dD: %s, %.0f %% of critical, t = %.2f s, mean power %.2f W",
+             o.scene, o.dim, what, o.speed, t, mean_power);
     snprintf(path, sizeof path, "%s/charge.png", o.out);
     if (draw_charge(path, w, &shape, title, "mill"))
         return EXIT_FAILURE;
@@ -390,6 +429,9 @@ int main(int argc, char **argv)
             drum_value(w, drum, DEMILL_DRUM_COM_ANGLE_MEAN) * 180 / PI,
             contact_samples ? contacts_sum / contact_samples : NAN, (unsigned long long)steps,
             o.dt, t, wall, steps * (double)(n + n_ore) / (t_step1 - t_step0));
+    if (clumps)
+        fprintf(sum, "shape = %s\nclumps = %zu\nspheres_per_clump = %zu\n", o.shape, clumps,
+                spheres.n);
     if (o.ore)
         fprintf(sum, "ore_particles = %zu\nore_mass_kg = %.6g\ngrind_minutes = %.6g\n"
                      "F80_m = %.6g\nP80_m = %.6g\nspecific_energy_kWh_t = %.6g\n"

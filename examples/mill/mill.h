@@ -1,6 +1,7 @@
 /* mill.h: the parts of the mill example (mill.c: options and run; scene.c:
- * the canonical drums; output.c: the --ore picture; the charge and power
- * pictures are examples/common/drum_plot.h). */
+ * the canonical drums; output.c: the --ore picture; ore.c: --ore; shape.c:
+ * the clumps of --shape; the charge and power pictures are
+ * examples/common/drum_plot.h). */
 #ifndef MILL_H
 #define MILL_H
 
@@ -80,5 +81,16 @@ int ore_grind(demill_world *w, demill_id drum, const ore_def *ore, double minute
               ore_result *out);
 int ore_write_csv(const char *path, const ore_result *r);
 int draw_product(const char *path, const ore_result *r, const char *title);
+
+/* The clump template of --shape (shape.c): spheres read from a file. */
+#define SHAPE_MAX_SPHERES 256
+typedef struct shape_def {
+    size_t n;
+    double centres[3 * SHAPE_MAX_SPHERES], radii[SHAPE_MAX_SPHERES];
+} shape_def;
+
+/* Reads "x y z r" lines (m; '#' comments); 0, or -1 with a message on
+ * stderr. */
+int shape_read(const char *path, shape_def *s);
 
 #endif

@@ -311,6 +311,53 @@ DEMILL_API demill_status demill_clump_set(demill_world *world, demill_id clump, 
 DEMILL_API demill_status demill_clump_members(const demill_world *world, demill_id clump,
                                               demill_id *ids, size_t capacity, size_t *count);
 
+/** Fills a region with clumps of a template, as demill_fill_region()
+ *  (demill/insert.h) fills one with spheres: as many as the target asks,
+ *  each placed whole inside the region (its bounding sphere about the
+ *  centre of mass inside), every member clear of the walls, of the
+ *  particles already there (free spheres and other clumps' members) and of
+ *  the new clumps' members. Clumps are placed one at a time, each at the
+ *  lowest free place among 16 seeded random candidates, with further sets
+ *  of 16 tried while none is free, up to 4096; each candidate has its own
+ *  random orientation, uniform on the rotations (Shoemake 1992, "Uniform
+ *  random rotations"; 2D: a turn about z by an angle uniform in [0, 2 pi)).
+ *  The clumps are at rest. The same call on the same world gives the same
+ *  clumps, bitwise. Then let them settle (demill_world_settle()).
+ *
+ *  The target (DEMILL_FILL_* of demill/drum.h): DEMILL_FILL_COUNT, the
+ *  number of clumps; DEMILL_FILL_MASS, the mass, in whole clumps (the
+ *  nearest number); DEMILL_FILL_FRACTION, in the drum its bulk filling J
+ *  (as demill_drum_fill()), in a box or a cylinder the fraction of its
+ *  volume (2D: area) that the clumps occupy (the union of their spheres).
+ *  @param world         the world.
+ *  @param region        the region, DEMILL_REGION_* of demill/insert.h (not a
+ *                       half-space; DEMILL_REGION_DRUM: the drum's inside).
+ *  @param region_params the region's parameters.
+ *  @param nregion       the number of doubles in region_params.
+ *  @param tmpl          the template's id.
+ *  @param target        what `value` means, DEMILL_FILL_*.
+ *  @param value         how many clumps: a count, a mass or a fraction.
+ *  @param seed          seed of the random places and orientations.
+ *  @param[out] ids      receives the ids of the new clumps (may be NULL).
+ *  @param capacity      how many ids `ids` can hold.
+ *  @param[out] added    receives the number of clumps added (0 on failure;
+ *                       on DEMILL_ERR_BUFFER_TOO_SMALL the number ids must
+ *                       hold); may be NULL.
+ *  @return DEMILL_OK, DEMILL_ERR_INVALID_HANDLE (tmpl),
+ *          DEMILL_ERR_NULL_POINTER (region_params), DEMILL_ERR_UNKNOWN_KEY
+ *          (region or target), DEMILL_ERR_NOT_FINITE, DEMILL_ERR_DIMENSION
+ *          (a region with z in a 2D world), DEMILL_ERR_INVALID_VALUE (an
+ *          empty or unbounded region, the drum's region without a drum, a
+ *          value <= 0 or a fraction > 1, a target of no clump or of more
+ *          members than a world holds, about 1.07e9; the clumps do not fit:
+ *          nothing is added), DEMILL_ERR_BUFFER_TOO_SMALL or
+ *          DEMILL_ERR_OUT_OF_MEMORY. On failure nothing is added. */
+DEMILL_API demill_status demill_clump_fill_region(demill_world *world, int32_t region,
+                                                  const double *region_params, size_t nregion,
+                                                  demill_id tmpl, int32_t target, double value,
+                                                  uint64_t seed, demill_id *ids,
+                                                  size_t capacity, size_t *added);
+
 /** The clump a particle belongs to (also the field DEMILL_PARTICLE_CLUMP of
  *  demill_particles_read_ids()).
  *  @param world     the world.

@@ -696,6 +696,8 @@ static void transfer_clumps(io *s, demill_world *w)
     if (s->reading)
         w->cap_tmem = w->ntmem;
     io_f64_array(s, &w->tmem, DM_TMEM * (size_t)w->ntmem, DM_TMEM * (size_t)w->ntmem);
+    for (uint32_t k = 0; k < w->ntemplates && s->reading && !s->status; k++)
+        dm_template_set_rpow(w, &w->templates[k]); /* derived, not stored */
     io_count(s, &w->nclumps, UINT32_MAX - 1, "clump slots");
     io_count(s, &w->live_clumps, w->nclumps, "live clumps");
     io_count(s, &w->ncmem, UINT32_MAX, "clump members");

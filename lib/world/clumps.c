@@ -156,6 +156,7 @@ static demill_status add_template(demill_world *w, uint32_t mat, const char *fn,
         b[3] = radii[k];
     }
     w->ntmem += (uint32_t)n;
+    dm_template_set_rpow(w, t);
     *out = dm_template_id(w, w->ntemplates++);
     dm_changed(w);
     return DEMILL_OK;
@@ -432,25 +433,18 @@ static void moved(demill_world *w, uint32_t k)
     w->forces_valid = false;
 }
 
-/* Makes room for one more clump of n members: a slot (returned in *slot),
- * its handle and its members' handles (-1: out of memory). */
-static int clump_reserve(demill_world *w, uint32_t n, uint32_t *slot)
+int dm_clumps_reserve(demill_world *w, size_t count, size_t n)
 {
-    *slot = w->nclumps;
-    for (uint32_t k = 0; k < w->nclumps && w->live_clumps < w->nclumps; k++)
-        if (!dm_clump_live(w, k)) { /* a removed clump's */
-            *slot = k;
-            break;
-        }
-    if (*slot == w->cap_clumps) {
-        size_t cap = dm_grown_capacity(w->cap_clumps, (size_t)w->cap_clumps + 1);
+    const size_t slots = (size_t)w->nclumps + count, members = count * n;
+    if (slots > w->cap_clumps) {
+        size_t cap = dm_grown_capacity(w->cap_clumps, slots);
         void **const arrays[] = {(void **)&w->clumps};
         const size_t sizes[] = {sizeof *w->clumps};
         if (cap > UINT32_MAX - 1 || dm_grow_arrays(arrays, sizes, 1, cap))
             return -1;
         w->cap_clumps = (uint32_t)cap;
     }
-    const size_t need = (size_t)w->ncmem + n;
+    const size_t need = (size_t)w->ncmem + members;
     if (need > w->cap_cmem) {
         size_t cap = dm_grown_capacity(w->cap_cmem, need);
         void **const arrays[] = {(void **)&w->cmem};
@@ -459,33 +453,23 @@ static int clump_reserve(demill_world *w, uint32_t n, uint32_t *slot)
             return -1;
         w->cap_cmem = (uint32_t)cap;
     }
-    return dm_handles_reserve(&w->clh, 1) || dm_particles_reserve(w, w->p.n + n) ||
-                   dm_handles_reserve(&w->ph, n)
+    return dm_handles_reserve(&w->clh, (uint32_t)count) ||
+                   dm_particles_reserve(w, w->p.n + (uint32_t)members) ||
+                   dm_handles_reserve(&w->ph, (uint32_t)members)
                ? -1
                : 0;
 }
 
-DEMILL_API demill_status demill_clump_add(demill_world *w, demill_id tmpl,
-                                          const double position[3], const double orientation[4],
-                                          demill_id *out)
+demill_id dm_clump_insert(demill_world *w, uint32_t tk, const double position[3],
+                          const double q[4])
 {
-    uint32_t tk;
-    demill_status s = dm_enter(w, tmpl, DEMILL_KIND_TEMPLATE, "template", &tk);
-    if (s)
-        return s;
-    if (!position || !out)
-        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "clump_add: %s is NULL",
-                       !position ? "position" : "out");
-    double q[4] = {1.0, 0.0, 0.0, 0.0};
-    if ((s = check_vec(w, position, "clump_add", "position")) ||
-        (orientation && (s = check_orientation(w, orientation, "clump_add", q))))
-        return s;
+    uint32_t slot = w->nclumps;
+    for (uint32_t k = 0; k < w->nclumps && w->live_clumps < w->nclumps; k++)
+        if (!dm_clump_live(w, k)) { /* a removed clump's */
+            slot = k;
+            break;
+        }
     const dm_template *t = &w->templates[tk];
-    if (t->n > UINT32_MAX - 2 - (uint64_t)w->p.n || w->ncmem > UINT32_MAX - t->n)
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "clump_add: too many particles");
-    uint32_t slot;
-    if (clump_reserve(w, t->n, &slot))
-        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "clump_add: out of memory");
     dm_clump *c = &w->clumps[slot];
     memset(c, 0, sizeof *c);
     c->tmpl = tk;
@@ -513,8 +497,31 @@ DEMILL_API demill_status demill_clump_add(demill_world *w, demill_id tmpl,
     w->live_clumps++;
     c->handle = dm_handles_issue(&w->clh, slot);
     moved(w, slot);
-    *out = dm_clump_id(w, slot);
     dm_changed(w);
+    return dm_clump_id(w, slot);
+}
+
+DEMILL_API demill_status demill_clump_add(demill_world *w, demill_id tmpl,
+                                          const double position[3], const double orientation[4],
+                                          demill_id *out)
+{
+    uint32_t tk;
+    demill_status s = dm_enter(w, tmpl, DEMILL_KIND_TEMPLATE, "template", &tk);
+    if (s)
+        return s;
+    if (!position || !out)
+        return dm_fail(w, DEMILL_ERR_NULL_POINTER, "clump_add: %s is NULL",
+                       !position ? "position" : "out");
+    double q[4] = {1.0, 0.0, 0.0, 0.0};
+    if ((s = check_vec(w, position, "clump_add", "position")) ||
+        (orientation && (s = check_orientation(w, orientation, "clump_add", q))))
+        return s;
+    const dm_template *t = &w->templates[tk];
+    if (t->n > UINT32_MAX - 2 - (uint64_t)w->p.n || w->ncmem > UINT32_MAX - t->n)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "clump_add: too many particles");
+    if (dm_clumps_reserve(w, 1, t->n))
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "clump_add: out of memory");
+    *out = dm_clump_insert(w, tk, position, q);
     return DEMILL_OK;
 }
 

@@ -1,5 +1,6 @@
 /* fill.c: size distributions, filling a region (the drum, a box, a
- * cylinder) with a charge drawn from one, and letting a charge settle.
+ * cylinder) with a charge drawn from one or with clumps of a template, and
+ * letting a charge settle.
  *
  * A distribution is reduced to size classes with mass fractions: discrete
  * classes as given; Rosin-Rammler and normal distributions (by mass) as 32
@@ -14,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "demill/clump.h"
 #include "demill/insert.h"
 #include "world/world.h"
 
@@ -129,18 +131,22 @@ demill_status dm_sizes_check_mass(demill_world *w, const char *who, uint32_t mat
     return st;
 }
 
-/* Particles per class for the target in the region. */
-static demill_status class_counts(demill_world *w, const char *who, uint32_t mat,
-                                  const dm_sizes *cls, const dm_region *reg, int32_t target,
-                                  double value, size_t *count)
+/* Bodies per class for the target in the region: ncls classes, class k of
+ * relative number weight[k] (per unit mass of the whole), mass fraction
+ * fraction[k] and mean volume (2D: area) size[k] a body, each body of
+ * `members` particles, called `what` in messages. The counts are the target's share rounded by
+ * largest remainder, so that a count target is met exactly. */
+static demill_status target_counts(demill_world *w, const char *who, const dm_region *reg,
+                                   int32_t target, double value, uint32_t ncls,
+                                   const double *weight, const double *fraction,
+                                   const double *size, size_t members, const char *what,
+                                   size_t *count)
 {
-    double weight[DM_SIZE_CLASSES], wsum = 0.0, mass = 0.0, measure = 0.0;
-    dm_sizes_numbers(w, mat, cls, weight);
-    for (uint32_t k = 0; k < cls->n; k++) {
+    double wsum = 0.0, mass = 0.0, measure = 0.0;
+    for (uint32_t k = 0; k < ncls; k++) {
         wsum += weight[k];
-        mass += cls->fraction[k];
-        measure += weight[k] * (w->dim == 3 ? DM_PI / 6.0 * class_moment(cls, k, 3.0)
-                                            : DM_PI / 4.0 * class_moment(cls, k, 2.0));
+        mass += fraction[k];
+        measure += weight[k] * size[k];
     }
     double scale;
     switch (target) {
@@ -153,28 +159,70 @@ static demill_status class_counts(demill_world *w, const char *who, uint32_t mat
         break;
     default: return dm_fail(w, DEMILL_ERR_UNKNOWN_KEY, "%s: %d is not a fill target", who, (int)target);
     }
-    /* largest remainder, so that a count target is met exactly */
     double want = scale * wsum, rem[DM_SIZE_CLASSES];
-    const double most = (double)(UINT32_MAX / 4) - (double)w->p.n;
+    const double most = ((double)(UINT32_MAX / 4) - (double)w->p.n) / (double)members;
     if (!(want <= most))
         return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "%s: the target asks for %.3g particles; at most %.0f more can be added",
-                       who, want, most);
+                       "%s: the target asks for %.3g %ss; at most %.0f more can be added", who,
+                       want, what, most);
     size_t total = 0;
-    for (uint32_t k = 0; k < cls->n; k++) {
+    for (uint32_t k = 0; k < ncls; k++) {
         const double x = scale * weight[k];
         count[k] = (size_t)floor(x);
         rem[k] = x - floor(x);
         total += count[k];
     }
-    for (uint32_t it = 0; it < cls->n && (double)total + 0.5 < want; it++) {
+    for (uint32_t it = 0; it < ncls && (double)total + 0.5 < want; it++) {
         uint32_t best = 0;
-        for (uint32_t k = 1; k < cls->n; k++)
+        for (uint32_t k = 1; k < ncls; k++)
             if (rem[k] > rem[best])
                 best = k;
         count[best]++;
         rem[best] = -1.0;
         total++;
+    }
+    return DEMILL_OK;
+}
+
+/* Particles per class of a size distribution for the target in the region. */
+static demill_status class_counts(demill_world *w, const char *who, uint32_t mat,
+                                  const dm_sizes *cls, const dm_region *reg, int32_t target,
+                                  double value, size_t *count)
+{
+    double weight[DM_SIZE_CLASSES], size[DM_SIZE_CLASSES];
+    dm_sizes_numbers(w, mat, cls, weight);
+    for (uint32_t k = 0; k < cls->n; k++)
+        size[k] = w->dim == 3 ? DM_PI / 6.0 * class_moment(cls, k, 3.0)
+                              : DM_PI / 4.0 * class_moment(cls, k, 2.0);
+    return target_counts(w, who, reg, target, value, cls->n, weight, cls->fraction, size, 1,
+                         "particle", count);
+}
+
+/* The checks of a fill's target value. */
+static demill_status check_value(demill_world *w, const char *who, int32_t target, double value)
+{
+    if (!isfinite(value))
+        return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: target value %g is not finite", who, value);
+    if (!(value > 0.0) || (target == DEMILL_FILL_FRACTION && value > 1.0))
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                       "%s: target value %g must be > 0 (and at most 1 for a fraction)", who,
+                       value);
+    return DEMILL_OK;
+}
+
+/* The checks of a fill's count n of `what`s against the ids' buffer. */
+static demill_status check_count(demill_world *w, const char *who, const char *what, size_t n,
+                                 demill_id *ids, size_t capacity, size_t *added)
+{
+    if (added)
+        *added = 0;
+    if (n == 0)
+        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: the target asks for no %s", who, what);
+    if (ids && capacity < n) {
+        if (added)
+            *added = n; /* what the buffer must hold */
+        return dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL, "%s: capacity %zu, %zu %ss", who,
+                       capacity, n, what);
     }
     return DEMILL_OK;
 }
@@ -186,32 +234,18 @@ static demill_status fill(demill_world *w, const char *who, const dm_region *reg
                           int32_t target, double value, uint64_t seed, demill_id *ids,
                           size_t capacity, size_t *added)
 {
-    if (!isfinite(value))
-        return dm_fail(w, DEMILL_ERR_NOT_FINITE, "%s: target value %g is not finite", who, value);
-    if (!(value > 0.0) || (target == DEMILL_FILL_FRACTION && value > 1.0))
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE,
-                       "%s: target value %g must be > 0 (and at most 1 for a fraction)", who,
-                       value);
     dm_sizes cls;
     size_t per_class[DM_SIZE_CLASSES] = {0};
     demill_status s;
-    if ((s = dm_sizes_make(w, who, distribution, params, nparams, &cls)) ||
+    if ((s = check_value(w, who, target, value)) ||
+        (s = dm_sizes_make(w, who, distribution, params, nparams, &cls)) ||
         (s = class_counts(w, who, mat, &cls, reg, target, value, per_class)))
         return s;
     size_t n = 0;
     for (uint32_t k = 0; k < cls.n; k++)
         n += per_class[k];
-    if (added)
-        *added = 0;
-    if (n == 0)
-        return dm_fail(w, DEMILL_ERR_INVALID_VALUE, "%s: the target asks for no particle", who);
-    if (ids && capacity < n) {
-        if (added)
-            *added = n; /* what the buffer must hold */
-        return dm_fail(w, DEMILL_ERR_BUFFER_TOO_SMALL, "%s: capacity %zu, %zu particles", who,
-                       capacity, n);
-    }
-    if ((s = dm_sizes_check_mass(w, who, mat, &cls, per_class)))
+    if ((s = check_count(w, who, "particle", n, ids, capacity, added)) ||
+        (s = dm_sizes_check_mass(w, who, mat, &cls, per_class)))
         return s;
     double *rad = malloc(n * sizeof *rad), *pos = malloc(3 * n * sizeof *pos);
     if (!rad || !pos) {
@@ -233,7 +267,7 @@ static demill_status fill(demill_world *w, const char *who, const dm_region *reg
         rad[j] = t;
     }
     size_t placed;
-    if (!(s = dm_place(w, reg, n, rad, PLACE_SETS, &rng, pos, &placed)) && placed < n)
+    if (!(s = dm_place(w, reg, n, rad, NULL, PLACE_SETS, &rng, pos, NULL, &placed)) && placed < n)
         s = dm_fail(w, DEMILL_ERR_INVALID_VALUE,
                     "%s: only %zu of %zu particles fit in the region: no free place for a "
                     "particle of diameter %g m among %d candidates",
@@ -281,7 +315,78 @@ DEMILL_API demill_status demill_fill_region(demill_world *w, int32_t region,
                 ids, capacity, added);
 }
 
-/* The particles' translational kinetic energy. */
+/* The area of the union of a 2D template's discs, for a fill's fraction. */
+static demill_status template_area(demill_world *w, const dm_template *t, double *area)
+{
+    double *c = malloc(2 * t->n * sizeof *c), *r = malloc(t->n * sizeof *r), com[2], inertia;
+    const char *why = NULL;
+    demill_status s = DEMILL_ERR_OUT_OF_MEMORY;
+    if (c && r) {
+        for (uint32_t m = 0; m < t->n; m++) {
+            const double *b = w->tmem + DM_TMEM * (size_t)(t->first + m);
+            c[2 * m] = b[0];
+            c[2 * m + 1] = b[1];
+            r[m] = b[3];
+        }
+        s = dm_discs_union_mass(t->n, c, r, 1.0, 1.0, area, com, &inertia, &why);
+    }
+    free(c);
+    free(r);
+    return s ? dm_fail(w, s, "clump_fill_region: %s", why ? why : "out of memory") : DEMILL_OK;
+}
+
+DEMILL_API demill_status demill_clump_fill_region(demill_world *w, int32_t region,
+                                                  const double *region_params, size_t nregion,
+                                                  demill_id tmpl, int32_t target, double value,
+                                                  uint64_t seed, demill_id *ids,
+                                                  size_t capacity, size_t *added)
+{
+    static const char who[] = "clump_fill_region";
+    uint32_t tk;
+    dm_region reg;
+    demill_status s = dm_enter(w, tmpl, DEMILL_KIND_TEMPLATE, "template", &tk);
+    if (s || (s = dm_region_parse(w, who, region, region_params, nregion, true, &reg)) ||
+        (s = check_value(w, who, target, value)))
+        return s;
+    const dm_template *t = &w->templates[tk];
+    double size = t->volume, weight = 1.0 / t->mass, fraction = 1.0;
+    if (w->dim == 2 && target == DEMILL_FILL_FRACTION && (s = template_area(w, t, &size)))
+        return s;
+    size_t n = 0;
+    if ((s = target_counts(w, who, &reg, target, value, 1, &weight, &fraction, &size, t->n,
+                           "clump", &n)) ||
+        (s = check_count(w, who, "clump", n, ids, capacity, added)))
+        return s;
+    const dm_shape shape = {.n = t->n, .mem = w->tmem + DM_TMEM * (size_t)t->first};
+    double *pos = malloc(3 * n * sizeof *pos), *quat = malloc(4 * n * sizeof *quat);
+    if (!pos || !quat || dm_clumps_reserve(w, n, t->n)) {
+        free(pos);
+        free(quat);
+        return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "%s: out of memory", who);
+    }
+    dm_rng rng;
+    dm_rng_seed(&rng, seed);
+    size_t placed;
+    if (!(s = dm_place(w, &reg, n, NULL, &shape, PLACE_SETS, &rng, pos, quat, &placed)) &&
+        placed < n)
+        s = dm_fail(w, DEMILL_ERR_INVALID_VALUE,
+                    "%s: only %zu of %zu clumps fit in the region: no free place among %d "
+                    "candidates",
+                    who, placed, n, 16 * PLACE_SETS);
+    for (size_t k = 0; k < n && !s; k++) {
+        const demill_id id = dm_clump_insert(w, tk, pos + 3 * k, quat + 4 * k);
+        if (ids)
+            ids[k] = id;
+    }
+    free(pos);
+    free(quat);
+    if (!s && added)
+        *added = n;
+    return s;
+}
+
+/* The particles' translational kinetic energy (a clump's member with its
+ * own part of its clump's mass). */
 static double translational_energy(const demill_world *w)
 {
     const dm_particles *P = &w->p;
@@ -289,7 +394,7 @@ static double translational_energy(const demill_world *w)
     double ke = 0.0;
     for (uint32_t i = 0; i < P->n; i++)
         for (int c = 0; c < D; c++)
-            ke += 0.5 * P->m[i] * P->v[D * i + c] * P->v[D * i + c];
+            ke += 0.5 * dm_particle_share(w, i) * P->v[D * i + c] * P->v[D * i + c];
     return ke;
 }
 

@@ -190,7 +190,7 @@ static demill_status feed_act(demill_world *w, dm_feed *f, size_t *added)
     if (!n)
         return DEMILL_OK;
     size_t placed;
-    demill_status s = dm_place(w, &f->region, n, rad, FEED_SETS, &f->rng, pos, &placed);
+    demill_status s = dm_place(w, &f->region, n, rad, NULL, FEED_SETS, &f->rng, pos, NULL, &placed);
     if (s || !placed)
         return s;
     for (size_t k = 0; k < placed; k++)

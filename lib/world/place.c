@@ -1,8 +1,10 @@
 /* place.c: placing new particles in a region without overlap, for fills
- * and feeds (demill/insert.h). Random sequential addition from the bottom
- * up: each particle in turn takes the lowest free place among a set of 16
- * seeded random candidates drawn in a window below a front that rises from
- * the region's bottom as the sets find no free place. The spheres already
+ * and feeds (demill/insert.h) and fills of clumps (demill/clump.h). Random
+ * sequential addition from the bottom up: each particle (or clump) in turn
+ * takes the lowest free place among a set of 16 seeded random candidates
+ * drawn in a window below a front that rises from the region's bottom as
+ * the sets find no free place; a clump's candidate has a random orientation
+ * too, and is free when every member is. The spheres already
  * there (the world's particles near the region and the new ones) are kept
  * in a hashed grid with one level per octave of radius, each level's cells
  * as wide as twice its largest diameter, so that a query finds a sphere's
@@ -179,25 +181,78 @@ static bool is_free(const demill_world *w, const grid *g, const double *x, doubl
     return !grid_overlaps(g, x, r) && dm_wall_overlap(w, x, r, &depth) == DM_FREE;
 }
 
+/* A uniformly random orientation (w, x, y, z): in 3D uniform on SO(3) by
+ * Shoemake (1992), "Uniform random rotations", Graphics Gems III, 124-132;
+ * in 2D a turn about z by an angle uniform in [0, 2 pi). */
+static void random_turn(int dim, dm_rng *rng, double q[4])
+{
+    if (dim == 2) {
+        const double half = DM_PI * dm_rng_uniform(rng);
+        q[0] = cos(half);
+        q[1] = q[2] = 0.0;
+        q[3] = sin(half);
+        return;
+    }
+    const double u1 = dm_rng_uniform(rng), a = 2.0 * DM_PI * dm_rng_uniform(rng),
+                 b = 2.0 * DM_PI * dm_rng_uniform(rng);
+    const double s1 = sqrt(1.0 - u1), s2 = sqrt(u1);
+    q[0] = s2 * cos(b);
+    q[1] = s1 * sin(a);
+    q[2] = s1 * cos(a);
+    q[3] = s2 * sin(b);
+}
+
+/* The centres of a shape's members placed at x turned by q: 3 doubles
+ * each into out. */
+static void members_at(const dm_shape *sh, const double *x, const double *q, double *out)
+{
+    double R[9];
+    dm_quat_matrix(q, R);
+    for (uint32_t m = 0; m < sh->n; m++) {
+        const double *b = sh->mem + DM_TMEM * (size_t)m;
+        for (int a = 0; a < 3; a++)
+            out[3 * m + a] = x[a] + R[3 * a] * b[0] + R[3 * a + 1] * b[1] + R[3 * a + 2] * b[2];
+    }
+}
+
+double dm_shape_reach(const dm_shape *sh)
+{
+    double reach = 0.0;
+    for (uint32_t m = 0; m < sh->n; m++) {
+        const double *b = sh->mem + DM_TMEM * (size_t)m;
+        reach = fmax(reach, sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]) + b[3]);
+    }
+    return reach;
+}
+
 demill_status dm_place(demill_world *w, const dm_region *reg, size_t n, const double *radii,
-                       uint32_t sets, dm_rng *rng, double *pos, size_t *placed)
+                       const dm_shape *shape, uint32_t sets, dm_rng *rng, double *pos,
+                       double *quat, size_t *placed)
 {
     const dm_particles *P = &w->p;
     const int D = w->dim;
     *placed = 0;
     if (!n)
         return DEMILL_OK;
+    /* a clump's members count as spheres of the grid; rmax bounds a body */
+    const size_t per = shape ? shape->n : 1;
+    const double reach = shape ? dm_shape_reach(shape) : 0.0;
     double rmin = INFINITY, rmax = 0.0, lo[3], hi[3];
-    for (size_t k = 0; k < n; k++) {
-        rmin = fmin(rmin, radii[k]);
-        rmax = fmax(rmax, radii[k]);
+    for (size_t k = 0; k < (shape ? shape->n : n); k++) {
+        const double r = shape ? shape->mem[DM_TMEM * k + 3] : radii[k];
+        rmin = fmin(rmin, r);
+        rmax = fmax(rmax, shape ? reach : r);
     }
     /* the world's particles that a new one could touch: their centres
      * within their radius and the largest new one of the region's box */
     dm_region_bounds(w, reg, lo, hi);
     uint32_t *near = malloc((P->n ? P->n : 1) * sizeof *near);
-    if (!near)
+    double *mx = malloc(3 * per * sizeof *mx);
+    if (!near || !mx) {
+        free(near);
+        free(mx);
         return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory placing particles");
+    }
     size_t nnear = 0;
     for (uint32_t i = 0; i < P->n; i++) {
         bool in = true;
@@ -211,9 +266,10 @@ demill_status dm_place(demill_world *w, const dm_region *reg, size_t n, const do
         }
     }
     grid g;
-    if (grid_init(&g, D, nnear + n, rmin)) {
+    if (grid_init(&g, D, nnear + n * per, rmin)) {
         grid_free(&g);
         free(near);
+        free(mx);
         return dm_fail(w, DEMILL_ERR_OUT_OF_MEMORY, "out of memory placing particles");
     }
     for (size_t q = 0; q < nnear; q++) {
@@ -227,7 +283,8 @@ demill_status dm_place(demill_world *w, const dm_region *reg, size_t n, const do
      * that starts at the bottom and rises each time a set of candidates
      * finds no free place: by the height that the particle's volume at a
      * solid fraction of 1/2 takes in the region's mean cross-section,
-     * doubled at each further set without a place for the same particle. */
+     * doubled at each further set without a place for the same particle
+     * (a clump's volume taken as its bounding sphere's). */
     int axis = 1;
     for (int c = 0; c < D; c++)
         if (fabs(w->g[c]) > fabs(w->g[axis]))
@@ -236,7 +293,7 @@ demill_status dm_place(demill_world *w, const dm_region *reg, size_t n, const do
     const double height = hi[axis] - lo[axis], section = dm_region_measure(w, reg) / height;
     double front = fmin(thick, height);
     for (size_t k = 0; k < n; k++) {
-        const double r = radii[k];
+        const double r = shape ? reach : radii[k];
         double rise = 2.0 * (D == 3 ? 4.0 / 3.0 * DM_PI * r * r * r : DM_PI * r * r) / section;
         bool done = false;
         for (uint32_t set = 0; set < sets && !done; set++) {
@@ -247,32 +304,44 @@ demill_status dm_place(demill_world *w, const dm_region *reg, size_t n, const do
             const double a = fmax(0.0, front - 3.0 * thick);
             const double band[2] = {up > 0.0 ? lo[axis] + a : hi[axis] - front,
                                     up > 0.0 ? lo[axis] + front : hi[axis] - a};
-            double cand[CANDIDATES][3];
+            double cand[CANDIDATES][7]; /* the centre, and a clump's orientation */
             int nc = 0;
             for (int q = 0; q < CANDIDATES; q++) {
-                if (dm_region_sample(w, reg, rng, r, axis, band, cand[nc]))
+                double x[7] = {0};
+                if (dm_region_sample(w, reg, rng, r, axis, band, x))
                     continue;
+                if (shape)
+                    random_turn(D, rng, x + 3);
                 /* into the order of height, lowest first */
                 int at = nc++;
-                double x[3];
-                memcpy(x, cand[at], sizeof x);
                 while (at > 0 && up * cand[at - 1][axis] > up * x[axis]) {
                     memcpy(cand[at], cand[at - 1], sizeof x);
                     at--;
                 }
                 memcpy(cand[at], x, sizeof x);
             }
-            for (int q = 0; q < nc && !done; q++)
-                if (is_free(w, &g, cand[q], r)) {
-                    memcpy(pos + 3 * k, cand[q], sizeof cand[0]);
-                    grid_add(&g, pos + 3 * k, r);
-                    done = true;
-                }
+            for (int q = 0; q < nc && !done; q++) {
+                if (shape)
+                    members_at(shape, cand[q], cand[q] + 3, mx);
+                else
+                    memcpy(mx, cand[q], 3 * sizeof *mx);
+                done = true;
+                for (size_t m = 0; m < per && done; m++)
+                    done = is_free(w, &g, mx + 3 * m, shape ? shape->mem[DM_TMEM * m + 3] : r);
+                if (!done)
+                    continue;
+                memcpy(pos + 3 * k, cand[q], 3 * sizeof *pos);
+                if (shape)
+                    memcpy(quat + 4 * k, cand[q] + 3, 4 * sizeof *quat);
+                for (size_t m = 0; m < per; m++)
+                    grid_add(&g, mx + 3 * m, shape ? shape->mem[DM_TMEM * m + 3] : r);
+            }
         }
         if (!done)
             break;
         *placed = k + 1;
     }
     grid_free(&g);
+    free(mx);
     return DEMILL_OK;
 }

@@ -52,6 +52,17 @@ demill_id dm_template_id(const demill_world *w, uint32_t index);
 demill_id dm_feed_id(const demill_world *w, uint32_t slot);
 demill_id dm_outlet_id(const demill_world *w, uint32_t slot);
 
+/* ---- clumps (clumps.c) ---------------------------------------------------------- */
+/* Makes room for `count` more clumps of n members each: their slots,
+ * handles and members (-1: out of memory, nothing else changed but
+ * capacities). */
+int dm_clumps_reserve(demill_world *w, size_t count, size_t n);
+/* Adds a clump of template slot tk at rest at its centre of mass `position`
+ * turned by the unit quaternion q, in room made by dm_clumps_reserve(), and
+ * returns its id. */
+demill_id dm_clump_insert(demill_world *w, uint32_t tk, const double position[3],
+                          const double q[4]);
+
 /* ---- particles (particles.c, material.c) ------------------------------------------ */
 demill_status dm_particles_append(demill_world *w, uint32_t mat, size_t n, const double *positions,
                                   const double *radii, const double *velocities, demill_id *ids);
@@ -119,15 +130,29 @@ bool dm_region_fits(const demill_world *w, const dm_region *r, double m);
  * band[1]; -1 when 64 tries found none. */
 int dm_region_sample(const demill_world *w, const dm_region *r, dm_rng *rng, double m, int axis,
                      const double band[2], double *x);
-/* Places n spheres of the given radii in turn in the region, clear of the
- * walls, of the world's particles and of each other, from the bottom up:
- * each at the lowest free place of a set of random candidates in a layer at
- * the region's bottom, the layer deepened by the sphere's diameter after
- * each set without a free place, up to `sets` sets; centres into pos (3
- * doubles each). *placed: how many were placed (the first that found no
- * place stops it). Fails only when memory runs out. */
+/* A rigid shape for dm_place(): n spheres at mem (DM_TMEM doubles each: the
+ * offset from the shape's centre in its body frame, the radius). */
+typedef struct dm_shape {
+    uint32_t n;
+    const double *mem;
+} dm_shape;
+/* The radius of the smallest sphere about a shape's centre that holds it. */
+double dm_shape_reach(const dm_shape *sh);
+/* Places n spheres of the given radii (or, with a shape, n bodies of that
+ * shape, radii unused) in turn in the region, clear of the walls, of the
+ * world's particles and of each other, from the bottom up: each at the
+ * lowest free place of a set of random candidates in a layer at the
+ * region's bottom, the layer deepened by the sphere's diameter after each
+ * set without a free place, up to `sets` sets; centres into pos (3 doubles
+ * each). A body's candidates have random orientations (uniform on SO(3); in
+ * 2D a uniform turn about z), each lies inside the region with its bounding
+ * sphere (dm_shape_reach()) and is free when every member is; its
+ * orientation goes into quat (4 doubles each; unused without a shape).
+ * *placed: how many were placed (the first that found no place stops it).
+ * Fails only when memory runs out. */
 demill_status dm_place(demill_world *w, const dm_region *reg, size_t n, const double *radii,
-                       uint32_t sets, dm_rng *rng, double *pos, size_t *placed);
+                       const dm_shape *shape, uint32_t sets, dm_rng *rng, double *pos,
+                       double *quat, size_t *placed);
 
 /* ---- running (step.c, flows.c, progress.c, watchdog.c, timestep.c) ---------------------- */
 /* dm_integrate(), with the outlets and feeds acting after every step while

@@ -149,6 +149,8 @@ OPTIONAL_PROTOTYPES = {
     "demill_clump_set": (status, (WorldP, id_t, c_int32, dptr)),
     "demill_clump_members": (status, (WorldP, id_t, idptr, c_size_t, sizeptr)),
     "demill_particle_clump": (status, (WorldP, id_t, idptr)),
+    "demill_clump_fill_region": (status, (WorldP, c_int32, dptr, c_size_t, id_t, c_int32,
+                                          c_double, c_uint64, idptr, c_size_t, sizeptr)),
     "demill_world_set_progress": (status, (WorldP, ProgressFn, c_void_p, c_uint64)),
     "demill_vtk_write_particles": (status, (WorldP, c_char_p)),
     "demill_vtk_write_walls": (status, (WorldP, c_char_p)),

@@ -393,6 +393,25 @@ class World(Closable, Keyed):
                    None if q is None else ptr(q), ctypes.byref(out))
         return Clump(self, out.value)
 
+    def fill_clumps(self, region, region_params, template, target, value, seed=1):
+        """Fills a region (:class:`~demill.Region` and its numbers; the drum's
+        takes none) with clumps of ``template`` at random orientations, as
+        :meth:`fill_region` fills one with spheres, and returns them
+        (a list of :class:`Clump`)."""
+        r = doubles(region_params).reshape(-1)
+        args = (int(region), ptr(r), r.size, as_id(template), int(target), float(value),
+                count(seed, "seed"))
+        need = ctypes.c_size_t()
+        probe = np.empty(1, dtype=np.uint64)
+        try:  # capacity 0 asks for the number of clumps, adding none
+            self._call("demill_clump_fill_region", *args, ptr(probe), 0, ctypes.byref(need))
+        except BufferTooSmall:
+            pass
+        ids = np.empty(need.value, dtype=np.uint64)
+        added = ctypes.c_size_t()
+        self._call("demill_clump_fill_region", *args, ptr(ids), ids.size, ctypes.byref(added))
+        return [Clump(self, int(i)) for i in ids[:added.value]]
+
     def clump_of(self, particle):
         """The :class:`Clump` a particle belongs to, or None."""
         return particle_clump(self, particle)

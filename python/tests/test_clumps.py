@@ -38,6 +38,20 @@ class Clumps(unittest.TestCase):
             self.assertAlmostEqual(abs(t.principal_axes[0, 0]), 1.0, places=14)
             self.assertEqual(t.count, 2)
 
+    def test_fill(self):
+        # 50 clumps in a box by count, every member inside it (each clump's
+        # members 2 of the 100 particles)
+        w, m = linear_world()
+        with w:
+            t = w.clump_template(m, [(0, 0, 0), (0.01, 0, 0)], 0.01)
+            box = (0, 0, 0, 0.2, 0.2, 0.2)
+            clumps = w.fill_clumps(demill.Region.BOX, box, t, demill.Fill.COUNT, 50, seed=3)
+            self.assertEqual(len(clumps), 50)
+            x, r = w.particles.positions, w.particles.radii
+            self.assertEqual(len(x), 100)
+            self.assertTrue(np.all(x - r[:, None] >= 0) and np.all(x + r[:, None] <= 0.2))
+            self.assertEqual(len(clumps[0].members()), 2)
+
     def test_free_fall_and_members(self):
         g, dt, steps = -9.81, 1e-4, 1000
         w, m = linear_world(gravity=(0, g, 0))

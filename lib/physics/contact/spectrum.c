@@ -47,7 +47,7 @@ static void ore_impact(demill_world *w, uint32_t i, double energy)
 {
     const dm_spectrum *sp = &w->drum.spectrum;
     const uint32_t k = dm_spectrum_ore_class(sp, 2.0 * w->p.r[i]);
-    double x = (log10(energy / w->p.m[i]) - sp->ore_log_min) / sp->ore_log_span * sp->ore_bins;
+    double x = (log10(energy / dm_particle_share(w, i)) - sp->ore_log_min) / sp->ore_log_span * sp->ore_bins;
     uint32_t bin = x < 0.0 ? 0 : x >= sp->ore_bins ? sp->ore_bins - 1 : (uint32_t)x;
     uint64_t *count =
         &sp->counts[dm_spectrum_collision_counters(sp) + (size_t)k * sp->ore_bins + bin];

@@ -325,8 +325,9 @@ double dm_drum_power_cm(const demill_world *w, double omega)
     double mx = 0.0, my = 0.0;
     const double *c = w->drum.centre;
     for (uint32_t i = 0; i < P->n; i++) {
-        mx += P->m[i] * (P->x[D * i] - c[0]);
-        my += P->m[i] * (P->x[D * i + 1] - c[1]);
+        const double m = dm_particle_share(w, i);
+        mx += m * (P->x[D * i] - c[0]);
+        my += m * (P->x[D * i + 1] - c[1]);
     }
     return -omega * (mx * w->g[1] - my * w->g[0]);
 }

@@ -62,9 +62,10 @@ void dm_charge_shape(const demill_world *w, double angles[3])
     const double *c = d->centre; /* positions about the drum's centre */
     for (uint32_t i = 0; i < P->n; i++) {
         dmax = fmax(dmax, 2.0 * P->r[i]);
-        mx += P->m[i] * (P->x[D * i] - c[0]);
-        my += P->m[i] * (P->x[D * i + 1] - c[1]);
-        mass += P->m[i];
+        const double m = dm_particle_share(w, i);
+        mx += m * (P->x[D * i] - c[0]);
+        my += m * (P->x[D * i + 1] - c[1]);
+        mass += m;
     }
     angles[2] = charge_angle(mx / mass, my / mass, s);
 

@@ -257,6 +257,7 @@ typedef struct dm_template {
     /* made from a mesh: its volume, the fit's largest deviations out and in
      * and the grid's cube side (all 0 for a template made from spheres) */
     double mesh_volume, deviation_out, deviation_in, cell;
+    double rpow;            /* the sum of the spheres' r³ (2D: r²), for dm_particle_share() */
 } dm_template;
 #define DM_TMEM 4 /* doubles per template member: body-frame offset (3), radius */
 
@@ -717,6 +718,38 @@ void dm_particle_set_mass(demill_world *w, uint32_t i, bool fixed);
 static inline bool dm_particle_fixed(const dm_particles *P, uint32_t i)
 {
     return P->im[i] == 0.0;
+}
+
+/* r³ in 3D, r² in 2D: what a clump member's share of its clump's mass goes
+ * by. */
+static inline double dm_radius_power(const demill_world *w, double r)
+{
+    return w->dim == 3 ? r * r * r : r * r;
+}
+
+/* Particle i's own part of the charge's mass: a free particle's mass; a
+ * clump's member carries its clump's whole mass M in P->m (the m* of its
+ * contacts), and owns M r_i³ / Σ r_k³ of it (2D: r², the sum over its
+ * template's spheres), so that a clump's members add up to M and a clump of
+ * one sphere owns M. For a mass that is a share of the charge (its centre
+ * of mass and shape, the settling's kinetic energy, the ore's energy per
+ * unit mass), not for a contact's inertia. */
+static inline double dm_particle_share(const demill_world *w, uint32_t i)
+{
+    const dm_particles *P = &w->p;
+    if (!P->clump[i])
+        return P->m[i];
+    const dm_template *t = &w->templates[w->clumps[P->clump[i] - 1].tmpl];
+    return P->m[i] * (dm_radius_power(w, P->r[i]) / t->rpow);
+}
+
+/* Sets template t's rpow from its spheres in tmem (their radii at
+ * DM_TMEM k + 3), those of them that lie within tmem. */
+static inline void dm_template_set_rpow(const demill_world *w, dm_template *t)
+{
+    t->rpow = 0.0;
+    for (uint64_t m = t->first; m < (uint64_t)t->first + t->n && m < w->ntmem; m++)
+        t->rpow += dm_radius_power(w, w->tmem[DM_TMEM * m + 3]);
 }
 
 /* The kinetic energy of particle i's spin, 1/2 I ω² over its W components
