@@ -504,6 +504,19 @@ START_TEST(checkpoint_continues_bitwise)
     ck_assert_msg(!memcmp(a, b, na), "the reloaded world saves other bytes");
     free(a);
     free(b);
+    /* the drum's centre of mass weighs each member by its share of its
+     * clump's mass, from its template's sum of r³ (r²), which a load derives
+     * from the spheres: one step on, the same angle, bitwise */
+    demill_id drum[2];
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_DRUM, &drum[0], 1, NULL));
+    DM_OK(v, demill_world_ids(v, DEMILL_KIND_DRUM, &drum[1], 1, NULL));
+    DM_OK(w, demill_world_step(w, 1));
+    DM_OK(v, demill_world_step(v, 1));
+    double angle[2];
+    DM_OK(w, demill_drum_get(w, drum[0], DEMILL_DRUM_COM_ANGLE, &angle[0]));
+    DM_OK(v, demill_drum_get(v, drum[1], DEMILL_DRUM_COM_ANGLE, &angle[1]));
+    ck_assert_msg(isfinite(angle[0]) && !memcmp(&angle[0], &angle[1], sizeof *angle),
+                  "centre of mass at %.17g deg, reloaded %.17g deg", angle[0], angle[1]);
     demill_world_destroy(v);
     dm_test_copies_run_on(w, 500, same_clumps, NULL);
     demill_world_destroy(w);
