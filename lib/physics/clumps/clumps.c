@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "physics/clumps/clumps.h"
+#include "physics/state/orient.h"
 
 void dm_quat_matrix(const double q[4], double R[9])
 {
@@ -160,10 +161,25 @@ void dm_clump_energies(const demill_world *w, uint32_t k, double *kt, double *kr
         *kr += 0.5 * c->om[a] * c->L[a];
 }
 
-/* q ← q ⊗ (cos φ/2, sin φ/2 e_a): a turn by φ about body axis a. */
-static void turn(double q[4], int a, double phi)
+/* sin and cos of a (half a turn's angle): from the series of orient.h while
+ * a² <= DM_QUAT_SERIES_A2 (every turn of a stable step), from libm beyond. */
+static void half_angle(double a, double *s, double *c)
 {
-    const double s = sin(0.5 * phi), co = cos(0.5 * phi);
+    const double a2 = a * a;
+    if (a2 <= DM_QUAT_SERIES_A2) {
+        double sa;
+        dm_quat_series(a2, c, &sa);
+        *s = sa * a;
+    } else {
+        *s = sin(a);
+        *c = cos(a);
+    }
+}
+
+/* q ← q ⊗ (co, s e_a), co = cos φ/2 and s = sin φ/2: a turn by φ about body
+ * axis a. */
+static void turn(double q[4], int a, double s, double co)
+{
     double p[3] = {0.0, 0.0, 0.0};
     p[a] = s;
     const double w = q[0], v[3] = {q[1], q[2], q[3]};
@@ -188,8 +204,10 @@ static void free_rotation(const dm_template *t, dm_clump *c, double dt)
     for (int s = 0; s < 5; s++) {
         const int a = axis[s], b = (a + 1) % 3, e = (a + 2) % 3;
         const double phi = part[s] * dt * pi[a] / t->inertia[a];
-        turn(c->q, a, phi);
-        const double co = cos(phi), si = sin(phi), pb = pi[b], pe = pi[e];
+        double sh, ch; /* of φ/2; those of φ by the double angle */
+        half_angle(0.5 * phi, &sh, &ch);
+        turn(c->q, a, sh, ch);
+        const double co = 1.0 - 2.0 * sh * sh, si = 2.0 * sh * ch, pb = pi[b], pe = pi[e];
         pi[b] = co * pb + si * pe;
         pi[e] = -si * pb + co * pe;
     }

@@ -28,7 +28,7 @@
 #include "physics/broadphase/broadphase.h"
 #include "physics/contact/contact.h"
 #include "physics/integrate/integrate.h"
-#include "physics/integrate/orient.h"
+#include "physics/state/orient.h"
 #include "physics/mill/mill.h"
 
 #define DM_INLINE static inline __attribute__((always_inline))

@@ -1,6 +1,6 @@
 /* orient.h: the turn of a 3D particle's orientation quaternion by its
  * angular velocity over a step (docs/shapes.md, Orientation), shared by the
- * integrators of integrate.c and refine.c. */
+ * integrators of integrate.c and refine.c and by the clumps' turns. */
 #ifndef DM_ORIENT_H
 #define DM_ORIENT_H
 
