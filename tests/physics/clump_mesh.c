@@ -69,62 +69,6 @@ static double field(demill_world *w, demill_id t, int32_t f)
     return v[0];
 }
 
-static double dist3(const double *a, const double *b)
-{
-    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                (a[2] - b[2]) * (a[2] - b[2]));
-}
-
-/* The planes of the faces of mesh m: unit outward normal and offset (n . x
- * = off on the plane), 4 doubles each, in a new array. */
-static double *planes(const dm_test_mesh *m)
-{
-    double *p = malloc(4 * m->nt * sizeof *p);
-    ck_assert_ptr_nonnull(p);
-    for (size_t t = 0; t < m->nt; t++) {
-        const double *a = m->v + 3 * m->t[3 * t], *b = m->v + 3 * m->t[3 * t + 1],
-                     *c = m->v + 3 * m->t[3 * t + 2];
-        const double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
-                     f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        double *n = p + 4 * t;
-        n[0] = e[1] * f[2] - e[2] * f[1], n[1] = e[2] * f[0] - e[0] * f[2];
-        n[2] = e[0] * f[1] - e[1] * f[0];
-        const double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        for (int k = 0; k < 3; k++)
-            n[k] /= l;
-        n[3] = n[0] * a[0] + n[1] * a[1] + n[2] * a[2];
-    }
-    return p;
-}
-
-/* The least distance from x to the planes of the nt faces of a convex
- * mesh: from inside, the distance to its surface. */
-static double depth(const double *pl, size_t nt, const double x[3])
-{
-    double d = INFINITY;
-    for (size_t t = 0; t < nt; t++) {
-        const double *p = pl + 4 * t;
-        d = fmin(d, p[3] - (p[0] * x[0] + p[1] * x[1] + p[2] * x[2]));
-    }
-    return d;
-}
-
-/* The volume of the mesh as tetrahedra from p. */
-static double volume(const dm_test_mesh *m, const double p[3])
-{
-    double v = 0.0;
-    for (size_t t = 0; t < m->nt; t++) {
-        double x[3][3];
-        for (int j = 0; j < 3; j++)
-            for (int a = 0; a < 3; a++)
-                x[j][a] = m->v[3 * m->t[3 * t + j] + a] - p[a];
-        v += x[0][0] * (x[1][1] * x[2][2] - x[1][2] * x[2][1]) -
-             x[0][1] * (x[1][0] * x[2][2] - x[1][2] * x[2][0]) +
-             x[0][2] * (x[1][0] * x[2][1] - x[1][1] * x[2][0]);
-    }
-    return v / 6.0;
-}
-
 /* The template's n spheres in the frame it was made in: x = c + Σ b_i a_i
  * (c its centre of mass, a_i its principal axes, b the body-frame centre),
  * into x (3 n doubles) and r. */
@@ -151,8 +95,8 @@ START_TEST(test_sphere_one)
     const double s[3] = {R0, R0, R0};
     dm_test_mesh m = dm_test_icosphere(3, s, P0);
     ck_assert_uint_eq(m.nt, 1280);
-    double *pl = planes(&m);
-    const double r_in = depth(pl, m.nt, P0), tess = R0 - r_in;
+    double *pl = dm_test_mesh_planes(&m);
+    const double r_in = dm_test_convex_depth(pl, m.nt, P0), tess = R0 - r_in;
     demill_id mat, t;
     demill_world *w = world(&mat);
     DM_OK(w, demill_clump_template_from_mesh(w, mat, m.nv, m.v, m.nt, m.t, 1, CELLS, &t));
@@ -170,14 +114,14 @@ START_TEST(test_sphere_one)
     double com[3], mom[3];
     DM_OK(w, demill_clump_template_get(w, t, DEMILL_TEMPLATE_CENTRE, com));
     DM_OK(w, demill_clump_template_get(w, t, DEMILL_TEMPLATE_PRINCIPAL_MOMENTS, mom));
-    ck_assert(dist3(com, P0) <= 0.1 * tess);
+    ck_assert(dm_test_dist3(com, P0) <= 0.1 * tess);
     for (int a = 0; a < 3; a++)
         DM_ASSERT_REL(mom[a], 0.4 * mass * r * r, 1e-12);
     /* the fit */
-    const double v = volume(&m, P0);
+    const double v = dm_test_mesh_volume(&m, P0);
     double far = 0.0, lo = INFINITY, hi = -INFINITY;
     for (size_t k = 0; k < m.nv; k++) {
-        far = fmax(far, dist3(m.v + 3 * k, c) - r);
+        far = fmax(far, dm_test_dist3(m.v + 3 * k, c) - r);
         for (int a = 0; a < 3; a++)
             lo = fmin(lo, m.v[3 * k + a] - P0[a]), hi = fmax(hi, m.v[3 * k + a] - P0[a]);
     }
@@ -204,8 +148,8 @@ START_TEST(test_ellipsoid)
 {
     const double s[3] = {R0, 0.7 * R0, 0.5 * R0};
     dm_test_mesh m = dm_test_icosphere(3, s, P0);
-    double *pl = planes(&m);
-    const double v_ell = 4.0 / 3.0 * M_PI * s[0] * s[1] * s[2], v_mesh = volume(&m, P0);
+    double *pl = dm_test_mesh_planes(&m);
+    const double v_ell = 4.0 / 3.0 * M_PI * s[0] * s[1] * s[2], v_mesh = dm_test_mesh_volume(&m, P0);
     printf("ellipsoid: V = %.9g m^3, the mesh's %.9g (%.4f of V)\n", v_ell, v_mesh,
            v_mesh / v_ell);
     demill_id mat;
@@ -220,7 +164,7 @@ START_TEST(test_ellipsoid)
         ck_assert_uint_eq(n, ns[q]);
         double gap = 0.0; /* the largest |r - depth| */
         for (size_t k = 0; k < n; k++)
-            gap = fmax(gap, fabs(r[k] - depth(pl, m.nt, x + 3 * k)));
+            gap = fmax(gap, fabs(r[k] - dm_test_convex_depth(pl, m.nt, x + 3 * k)));
         const double mass = field(w, t, DEMILL_TEMPLATE_MASS);
         const double err = field(w, t, DEMILL_TEMPLATE_FIT_VOLUME_ERROR);
         printf("  N = %2zu: volume error %.4f, mass %.5f of rho V, deviations out %.3f, in "

@@ -114,3 +114,56 @@ char *dm_test_temp_file(const char *name, const void *bytes, size_t size)
     }
     return path;
 }
+
+double dm_test_dist3(const double *a, const double *b)
+{
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+double dm_test_mesh_plane(const dm_test_mesh *m, size_t t, double n[3])
+{
+    const double *a = m->v + 3 * m->t[3 * t], *b = m->v + 3 * m->t[3 * t + 1],
+                 *c = m->v + 3 * m->t[3 * t + 2];
+    const double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+                 f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    n[0] = e[1] * f[2] - e[2] * f[1], n[1] = e[2] * f[0] - e[0] * f[2];
+    n[2] = e[0] * f[1] - e[1] * f[0];
+    const double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int k = 0; k < 3; k++)
+        n[k] /= l;
+    return n[0] * a[0] + n[1] * a[1] + n[2] * a[2];
+}
+
+double *dm_test_mesh_planes(const dm_test_mesh *m)
+{
+    double *p = grow(NULL, 4 * m->nt * sizeof *p);
+    for (size_t t = 0; t < m->nt; t++)
+        p[4 * t + 3] = dm_test_mesh_plane(m, t, p + 4 * t);
+    return p;
+}
+
+double dm_test_convex_depth(const double *planes, size_t nt, const double x[3])
+{
+    double d = INFINITY;
+    for (size_t t = 0; t < nt; t++) {
+        const double *p = planes + 4 * t;
+        d = fmin(d, p[3] - (p[0] * x[0] + p[1] * x[1] + p[2] * x[2]));
+    }
+    return d;
+}
+
+double dm_test_mesh_volume(const dm_test_mesh *m, const double p[3])
+{
+    double v = 0.0;
+    for (size_t t = 0; t < m->nt; t++) {
+        double x[3][3];
+        for (int j = 0; j < 3; j++)
+            for (int a = 0; a < 3; a++)
+                x[j][a] = m->v[3 * m->t[3 * t + j] + a] - p[a];
+        v += x[0][0] * (x[1][1] * x[2][2] - x[1][2] * x[2][1]) -
+             x[0][1] * (x[1][0] * x[2][2] - x[1][2] * x[2][0]) +
+             x[0][2] * (x[1][0] * x[2][1] - x[1][1] * x[2][0]);
+    }
+    return v / 6.0;
+}

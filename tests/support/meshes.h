@@ -31,6 +31,27 @@ void dm_test_mesh_triangle(dm_test_mesh *m, uint32_t a, uint32_t b, uint32_t c);
  * its corners numbers them. */
 dm_test_mesh dm_test_icosphere(int level, const double s[3], const double p[3]);
 
+/* |a - b| for points of 3 doubles. */
+double dm_test_dist3(const double *a, const double *b);
+
+/* Triangle t's unit outward normal n and plane offset (n . x = offset on
+ * it), returned. */
+double dm_test_mesh_plane(const dm_test_mesh *m, size_t t, double n[3]);
+
+/* The planes of the faces of mesh m (normal and offset, 4 doubles each,
+ * as dm_test_mesh_plane() gives them), in a new array (free it); exits if
+ * out of memory. */
+double *dm_test_mesh_planes(const dm_test_mesh *m);
+
+/* The least distance from x to the planes (4 doubles each, as
+ * dm_test_mesh_planes() gives them) of the nt faces of a convex mesh: from
+ * inside, the distance to its surface (negative outside). */
+double dm_test_convex_depth(const double *planes, size_t nt, const double x[3]);
+
+/* The volume of the closed mesh m, as the sum of the tetrahedra from p to
+ * its faces. */
+double dm_test_mesh_volume(const dm_test_mesh *m, const double p[3]);
+
 /* The mesh's triangles as corners, 9 doubles each (for stl_write.h), in a
  * new array (free it). */
 double *dm_test_mesh_corners(const dm_test_mesh *m);

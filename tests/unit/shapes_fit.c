@@ -110,65 +110,6 @@ static mesh box(const double lo[3], const double hi[3])
     return m;
 }
 
-static double dist3(const double *a, const double *b)
-{
-    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                (a[2] - b[2]) * (a[2] - b[2]));
-}
-
-/* Triangle t's unit outward normal n and plane offset (n . x = off on it). */
-static double plane(const mesh *m, size_t t, double n[3])
-{
-    const double *a = m->v + 3 * m->t[3 * t], *b = m->v + 3 * m->t[3 * t + 1],
-                 *c = m->v + 3 * m->t[3 * t + 2];
-    const double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
-                 f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    n[0] = e[1] * f[2] - e[2] * f[1], n[1] = e[2] * f[0] - e[0] * f[2];
-    n[2] = e[0] * f[1] - e[1] * f[0];
-    const double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    for (int k = 0; k < 3; k++)
-        n[k] /= l;
-    return n[0] * a[0] + n[1] * a[1] + n[2] * a[2];
-}
-
-/* The least distance from x to the planes (n, off, 4 doubles each) of the
- * nt faces of a convex mesh: from inside, the distance to its surface
- * (negative outside). */
-static double convex_depth(const double *planes, size_t nt, const double x[3])
-{
-    double d = INFINITY;
-    for (size_t t = 0; t < nt; t++) {
-        const double *p = planes + 4 * t;
-        d = fmin(d, p[3] - (p[0] * x[0] + p[1] * x[1] + p[2] * x[2]));
-    }
-    return d;
-}
-
-/* The faces' planes of mesh m, for convex_depth() (free them). */
-static double *planes(const mesh *m)
-{
-    double *p = malloc(4 * m->nt * sizeof *p);
-    for (size_t t = 0; t < m->nt; t++)
-        p[4 * t + 3] = plane(m, t, p + 4 * t);
-    return p;
-}
-
-/* The volume of the mesh as tetrahedra from p. */
-static double volume(const mesh *m, const double p[3])
-{
-    double v = 0.0;
-    for (size_t t = 0; t < m->nt; t++) {
-        double x[3][3];
-        for (int j = 0; j < 3; j++)
-            for (int a = 0; a < 3; a++)
-                x[j][a] = m->v[3 * m->t[3 * t + j] + a] - p[a];
-        v += x[0][0] * (x[1][1] * x[2][2] - x[1][2] * x[2][1]) -
-             x[0][1] * (x[1][0] * x[2][2] - x[1][2] * x[2][0]) +
-             x[0][2] * (x[1][0] * x[2][1] - x[1][1] * x[2][0]);
-    }
-    return v / 6.0;
-}
-
 static demill_status fit(const mesh *m, size_t n, int cells, double *c, double *r,
                          dm_fit_report *rep, char *err)
 {
@@ -183,7 +124,7 @@ START_TEST(test_sphere_one)
     double r_in = INFINITY;
     for (size_t t = 0; t < m.nt; t++) {
         double n[3];
-        r_in = fmin(r_in, plane(&m, t, n) - (n[0] * P0[0] + n[1] * P0[1] + n[2] * P0[2]));
+        r_in = fmin(r_in, dm_test_mesh_plane(&m, t, n) - (n[0] * P0[0] + n[1] * P0[1] + n[2] * P0[2]));
     }
     const double tess = R0 - r_in;
     double c[3], r;
@@ -192,13 +133,13 @@ START_TEST(test_sphere_one)
     ck_assert_int_eq(fit(&m, 1, CELLS, c, &r, &rep, err), DEMILL_OK);
     printf("sphere, N = 1: r_in %.9g, tessellation error %.3g of R; r - r_in = %.3g of R, "
            "|c - p| = %.3g of R\n",
-           r_in, tess / R0, (r - r_in) / R0, dist3(c, P0) / R0);
+           r_in, tess / R0, (r - r_in) / R0, dm_test_dist3(c, P0) / R0);
     ck_assert_uint_eq(rep.n, 1);
     ck_assert(r <= r_in * (1.0 + 1e-12));
     ck_assert(r >= r_in - 0.1 * tess);
-    ck_assert(dist3(c, P0) <= 0.1 * tess);
+    ck_assert(dm_test_dist3(c, P0) <= 0.1 * tess);
     /* the volume error of one ball in the polytope */
-    const double v = volume(&m, P0), want = 1.0 - 4.0 / 3.0 * M_PI * r * r * r / v;
+    const double v = dm_test_mesh_volume(&m, P0), want = 1.0 - 4.0 / 3.0 * M_PI * r * r * r / v;
     printf("  volume error %.6g (exact %.6g, resolution error %.2g)\n", rep.volume_error, want,
            rep.volume_error_tol);
     DM_ASSERT_REL(rep.volume, v, 1e-12);
@@ -206,16 +147,16 @@ START_TEST(test_sphere_one)
     /* from the mesh to the ball: the farthest corner */
     double far = 0.0;
     for (size_t k = 0; k < m.nv; k++)
-        far = fmax(far, dist3(m.v + 3 * k, c) - r);
+        far = fmax(far, dm_test_dist3(m.v + 3 * k, c) - r);
     DM_ASSERT_REL(rep.deviation_out, far, 1e-12);
     /* from the ball to the mesh: the deepest point of the ball's surface */
-    double deep = 0.0, *pl = planes(&m);
+    double deep = 0.0, *pl = dm_test_mesh_planes(&m);
     for (int i = 0; i < 200; i++)
         for (int j = 0; j < 400; j++) {
             const double th = M_PI * (i + 0.5) / 200, ph = 2.0 * M_PI * j / 400;
             const double x[3] = {c[0] + r * sin(th) * cos(ph), c[1] + r * sin(th) * sin(ph),
                                  c[2] + r * cos(th)};
-            deep = fmax(deep, convex_depth(pl, m.nt, x));
+            deep = fmax(deep, dm_test_convex_depth(pl, m.nt, x));
         }
     printf("  deviations: out %.4g (corners %.4g), in %.4g (sampled here %.4g, spacing %.2g), "
            "of R\n",
@@ -233,7 +174,7 @@ static int face_of(const mesh *m, size_t t, const double p[3])
 {
     int on = 1;
     for (int j = 0; j < 3; j++)
-        on = on && fabs(dist3(m->v + 3 * m->t[3 * t + j], p) - R0) < 1e-12 * R0;
+        on = on && fabs(dm_test_dist3(m->v + 3 * m->t[3 * t + j], p) - R0) < 1e-12 * R0;
     return on;
 }
 
@@ -253,7 +194,7 @@ START_TEST(test_dumbbell)
     rho[0] = rho[2 * K] = 0.0;
     z[K] = 0.0;
     mesh m = revolve(rho, z, 2 * K, SEG, P0);
-    ck_assert(volume(&m, P0) > 0.0);
+    ck_assert(dm_test_mesh_volume(&m, P0) > 0.0);
     const double want[2][3] = {{P0[0], P0[1], P0[2] + D}, {P0[0], P0[1], P0[2] - D}};
     /* the largest ball about each bulb's centre: the least distance to the
      * planes of its faces (the other bulb's faces are farther, outside the
@@ -263,7 +204,7 @@ START_TEST(test_dumbbell)
     for (int b = 0; b < 2; b++)
         for (size_t t = 0; t < m.nt; t++) {
             double n[3];
-            const double off = plane(&m, t, n);
+            const double off = dm_test_mesh_plane(&m, t, n);
             if (face_of(&m, t, want[b]))
                 r_in[b] = fmin(r_in[b], off - (n[0] * want[b][0] + n[1] * want[b][1] +
                                                n[2] * want[b][2]));
@@ -278,12 +219,12 @@ START_TEST(test_dumbbell)
         const int k = (c[2] > P0[2]) == (b == 0) ? 0 : 1; /* the ball in bulb b */
         printf("dumbbell, N = 2: bulb %d: |c - c_b| = %.3g h, r - r_in = %.3g h "
                "(r_in = %.6g R, h = %.4g R)\n",
-               b, dist3(c + 3 * k, want[b]) / h, (r[k] - r_in[b]) / h, r_in[b] / R0, h / R0);
-        ck_assert(dist3(c + 3 * k, want[b]) <= 0.1 * h);
+               b, dm_test_dist3(c + 3 * k, want[b]) / h, (r[k] - r_in[b]) / h, r_in[b] / R0, h / R0);
+        ck_assert(dm_test_dist3(c + 3 * k, want[b]) <= 0.1 * h);
         double below = INFINITY; /* inscribed: r at most the fit's centre's depth */
         for (size_t t = 0; t < m.nt; t++) {
             double n[3];
-            const double off = plane(&m, t, n);
+            const double off = dm_test_mesh_plane(&m, t, n);
             if (face_of(&m, t, want[b]))
                 below = fmin(below, off - (n[0] * c[3 * k] + n[1] * c[3 * k + 1] +
                                            n[2] * c[3 * k + 2]));
@@ -300,7 +241,7 @@ START_TEST(test_dumbbell)
 }
 END_TEST
 
-/* Whether x is inside the convex mesh of the planes pl (as planes() gives
+/* Whether x is inside the convex mesh of the planes pl (as dm_test_mesh_planes() gives
  * them, nt of them). */
 typedef struct convex {
     const double *pl;
@@ -310,7 +251,7 @@ typedef struct convex {
 static int in_convex(const void *ctx, const double *x)
 {
     const convex *cv = ctx;
-    return convex_depth(cv->pl, cv->nt, x) > 0.0;
+    return dm_test_convex_depth(cv->pl, cv->nt, x) > 0.0;
 }
 
 /* Fits N = 5, 20, 50 spheres to the mesh m and checks that the volume error
@@ -347,7 +288,7 @@ static void falls(const char *name, const mesh *m, int (*inside)(const void *, c
         for (int k = 0; k < POINTS; k++) {
             int in_union = 0;
             for (size_t b = 0; b < rep.n && !in_union; b++)
-                in_union = dist3(x + 3 * k, c + 3 * b) < r[b];
+                in_union = dm_test_dist3(x + 3 * k, c + 3 * b) < r[b];
             missed += in[k] && !in_union;
             outside += in_union && !in[k];
         }
@@ -369,7 +310,7 @@ START_TEST(test_ellipsoid)
 {
     const double s[3] = {R0, 0.7 * R0, 0.5 * R0};
     mesh m = dm_test_icosphere(3, s, P0);
-    const convex cv = {planes(&m), m.nt};
+    const convex cv = {dm_test_mesh_planes(&m), m.nt};
     falls("ellipsoid", &m, in_convex, &cv);
     free((void *)cv.pl);
     dm_test_mesh_free(&m);
@@ -381,7 +322,7 @@ START_TEST(test_box)
     const double lo[3] = {P0[0] - 0.7 * R0, P0[1] - 0.7 * R0, P0[2] - 0.5 * R0},
                  hi[3] = {P0[0] + 0.7 * R0, P0[1] + 0.7 * R0, P0[2] + 0.5 * R0};
     mesh m = box(lo, hi);
-    const convex cv = {planes(&m), m.nt};
+    const convex cv = {dm_test_mesh_planes(&m), m.nt};
     falls("box", &m, in_convex, &cv);
     free((void *)cv.pl);
     dm_test_mesh_free(&m);
@@ -441,7 +382,7 @@ START_TEST(test_tripod)
 {
     mesh m = tripod();
     ck_assert_uint_eq(m.nt, 2 * (7 * 6 - 2 * 6)); /* 6 shared faces hidden on both sides */
-    DM_ASSERT_REL(volume(&m, P0), 7.0 * TRIPOD * TRIPOD * TRIPOD, 1e-12);
+    DM_ASSERT_REL(dm_test_mesh_volume(&m, P0), 7.0 * TRIPOD * TRIPOD * TRIPOD, 1e-12);
     falls("tripod", &m, in_tripod, NULL);
     dm_test_mesh_free(&m);
 }
@@ -481,7 +422,7 @@ START_TEST(test_grid_lines_on_edges)
            rep.inside, want, r, 32.5 / sqrt(3.0));
     ck_assert_uint_eq(rep.inside, want);
     /* its largest inscribed ball: centred, of radius a/sqrt(3) */
-    ck_assert(fabs(r - 32.5 / sqrt(3.0)) <= 1e-4 * rep.h && dist3(c, (double[3]){0}) <= 1e-4 * rep.h);
+    ck_assert(fabs(r - 32.5 / sqrt(3.0)) <= 1e-4 * rep.h && dm_test_dist3(c, (double[3]){0}) <= 1e-4 * rep.h);
     dm_test_mesh_free(&m);
     /* the unit cube on 64 cubes: the lines run along its faces' diagonals */
     const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, mid[3] = {0.5, 0.5, 0.5};
@@ -490,7 +431,7 @@ START_TEST(test_grid_lines_on_edges)
     ck_assert_uint_eq(rep.inside, 64 * 64 * 64);
     printf("cube: r = %.17g, volume error %.9f (1 - pi/6 = %.9f)\n", r, rep.volume_error,
            1.0 - M_PI / 6.0);
-    ck_assert(fabs(r - 0.5) <= 1e-4 * rep.h && dist3(c, mid) <= 1e-4 * rep.h);
+    ck_assert(fabs(r - 0.5) <= 1e-4 * rep.h && dm_test_dist3(c, mid) <= 1e-4 * rep.h);
     ck_assert(fabs(rep.volume_error - (1.0 - 4.0 / 3.0 * M_PI * r * r * r)) <=
               rep.volume_error_tol);
     dm_test_mesh_free(&m);
