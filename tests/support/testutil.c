@@ -275,3 +275,22 @@ demill_world *dm_test_reloaded(demill_world *w, uint32_t *format)
     free(b);
     return v;
 }
+
+void dm_test_check_no_overlap(size_t n, const double *x, const double *r, const demill_id *clump)
+{
+    size_t bad = 0, bi = 0, bj = 0;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = i + 1; j < n; j++) {
+            if (clump && clump[i] != DEMILL_ID_NONE && clump[i] == clump[j])
+                continue;
+            double d2 = 0.0;
+            for (int k = 0; k < 3; k++)
+                d2 += (x[3 * i + k] - x[3 * j + k]) * (x[3 * i + k] - x[3 * j + k]);
+            const double s = r[i] + r[j];
+            if (d2 < s * s && !bad++) {
+                bi = i;
+                bj = j;
+            }
+        }
+    ck_assert_msg(!bad, "%zu pairs overlap, the first particles %zu and %zu", bad, bi, bj);
+}

@@ -120,4 +120,10 @@ dm_collision dm_test_bounce_on(demill_world *w, demill_id mat, demill_id wall_ma
 dm_collision dm_test_hit_fixed(demill_world *w, demill_id mat, double r, double v0, double dt,
                                double phase);
 
+/* Asserts that no two of the n spheres (centres x, 3 doubles each, radii r)
+ * overlap, except members of one clump (clump: each sphere's clump id,
+ * DEMILL_ID_NONE for a free one; NULL: no clumps). Every pair is checked,
+ * with one assertion at the end (each costs Check a write). */
+void dm_test_check_no_overlap(size_t n, const double *x, const double *r, const demill_id *clump);
+
 #endif

@@ -81,27 +81,6 @@ static void free_members(members *m)
     free(m->clump);
 }
 
-/* No two particles overlap unless they are members of one clump (every
- * pair; one assertion, as each costs Check a write). */
-static void check_no_overlap(const members *m)
-{
-    size_t bad = 0, bi = 0, bj = 0;
-    for (size_t i = 0; i < m->n; i++)
-        for (size_t j = i + 1; j < m->n; j++) {
-            if (m->clump[i] != DEMILL_ID_NONE && m->clump[i] == m->clump[j])
-                continue;
-            double d2 = 0.0;
-            for (int k = 0; k < 3; k++)
-                d2 += (m->x[3 * i + k] - m->x[3 * j + k]) * (m->x[3 * i + k] - m->x[3 * j + k]);
-            const double s = m->r[i] + m->r[j];
-            if (d2 < s * s && !bad++) {
-                bi = i;
-                bj = j;
-            }
-        }
-    ck_assert_msg(!bad, "%zu pairs overlap, the first particles %zu and %zu", bad, bi, bj);
-}
-
 START_TEST(drum_by_count_with_balls)
 {
     demill_id mat, tmpl, drum;
@@ -124,7 +103,7 @@ START_TEST(drum_by_count_with_balls)
     ck_assert_uint_eq(nclumps, 400);
     members m = read_members(w);
     ck_assert_uint_eq(m.n, 100 + 2 * 400);
-    check_no_overlap(&m);
+    dm_test_check_no_overlap(m.n, m.x, m.r, m.clump);
     size_t outside = 0, in_clumps = 0;
     for (size_t i = 0; i < m.n; i++) {
         const double *x = m.x + 3 * i, Rr = 0.5 * D - m.r[i];
@@ -187,7 +166,7 @@ START_TEST(mass_and_fraction_targets)
         ck_assert_msg(fabs((double)added - want) <= 1.0, "%dD: %zu clumps for %.2f", dim, added,
                       want);
         members m = read_members(w2);
-        check_no_overlap(&m);
+        dm_test_check_no_overlap(m.n, m.x, m.r, m.clump);
         size_t outside = 0;
         for (size_t i = 0; i < m.n; i++)
             for (int c = 0; c < dim; c++)

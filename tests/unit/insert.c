@@ -76,25 +76,6 @@ static void free_charge(charge *c)
     free(c->m);
 }
 
-/* No two particles of the charge overlap (every pair; one assertion, as
- * each costs Check a write). */
-static void check_no_overlap(const charge *c)
-{
-    size_t bad = 0, bi = 0, bj = 0;
-    for (size_t i = 0; i < c->n; i++)
-        for (size_t j = i + 1; j < c->n; j++) {
-            double d2 = 0.0;
-            for (int k = 0; k < 3; k++)
-                d2 += (c->x[3 * i + k] - c->x[3 * j + k]) * (c->x[3 * i + k] - c->x[3 * j + k]);
-            const double s = c->r[i] + c->r[j];
-            if (d2 < s * s && !bad++) {
-                bi = i;
-                bj = j;
-            }
-        }
-    ck_assert_msg(!bad, "%zu pairs overlap, the first particles %zu and %zu", bad, bi, bj);
-}
-
 /* Fills a drum with discrete classes (diameter, count) by count, and checks
  * counts, overlaps, the drum's walls and the mass fractions. */
 static void check_drum_charge(double diameter, double length, size_t ncls, const double *d,
@@ -115,7 +96,7 @@ static void check_drum_charge(double diameter, double length, size_t ncls, const
     ck_assert_uint_eq(added, (size_t)n);
     charge c = read_charge(w);
     ck_assert_uint_eq(c.n, (size_t)n);
-    check_no_overlap(&c);
+    dm_test_check_no_overlap(c.n, c.x, c.r, NULL);
     double mass = 0.0, cls_mass[8] = {0};
     size_t got[8] = {0};
     for (size_t i = 0; i < c.n; i++) {
@@ -180,7 +161,7 @@ START_TEST(region_fill_fraction)
     for (int k = 0; k < 2; k++)
         ck_assert_msg(fabs((double)n[k] * v1 - 0.2 * volume[k]) <= v1, "region %d: %zu balls", k,
                       n[k]);
-    check_no_overlap(&c);
+    dm_test_check_no_overlap(c.n, c.x, c.r, NULL);
     for (size_t i = 0; i < c.n; i++) {
         const double *x = c.x + 3 * i, r = c.r[i];
         if (i < n[0])
