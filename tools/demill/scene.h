@@ -16,6 +16,7 @@
 #define SCENE_MAX_EDGES 16
 #define SCENE_MAX_OUTLETS 16
 #define SCENE_MAX_BODIES 64
+#define SCENE_MAX_TEMPLATES 64
 
 /* A quantity of the time series or of a steady stop: a world or drum key
  * of the registry (key, body < 0, outlet < 0), a component of a body's
@@ -74,6 +75,11 @@ typedef struct scene {
     size_t namp;                /* outputs.amplitude: half the peak-to-peak of these */
     scene_quantity amp[SCENE_MAX_COLUMNS];
     double amp_window;          /* over the last amp_window s before stop.time */
+    size_t ntmpl;               /* templates: the clump templates, by name */
+    const char *tmplname[SCENE_MAX_TEMPLATES]; /* point into the tree */
+    demill_id tmpl[SCENE_MAX_TEMPLATES]; /* DEMILL_ID_NONE for a mesh's in SCENE_CHECK */
+    size_t tmpl_clumps[SCENE_MAX_TEMPLATES]; /* the clumps of each the fills added */
+    int tmpl_counted;           /* tmpl_clumps is known (not on a restart) */
 } scene;
 
 /* What scene_build() does with the world. */
