@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""scenes/clump-mill.yaml reduced (docs/scenes.md, The clump mill): 1 kg of
+"""scenes/clump-mill.yaml reduced (docs/scenes.md, clump-mill.yaml): 1 kg of
 its rocks, the drum turning from t = 0, run for 30 ms.
 
 - The rock's template is read from examples/rock/rock.stl at the scene's
