@@ -321,9 +321,10 @@ START_TEST(test_clumps)
     const double want = s.tmpl_clumps[0] * m_pair + s.tmpl_clumps[1] * m_oct;
     ck_assert_msg(fabs(mass / want - 1) < 1e-12, "charge %.17g kg against %.17g", mass, want);
     demill_world_destroy(w);
-    /* demill check reads no STL file: the mesh's template is not made */
+    /* demill check makes no template and reads no STL file */
     tree_set(t, "templates.oct.stl.file", "missing.stl", err, sizeof err);
     ck_assert_msg(!scene_build(&s, t, dir, SCENE_CHECK, err, sizeof err), "%s", err);
+    ck_assert_uint_eq(s.tmpl[0], DEMILL_ID_NONE);
     ck_assert_uint_eq(s.tmpl[1], DEMILL_ID_NONE);
     demill_world_destroy(s.w);
     tree_free(t);

@@ -77,7 +77,7 @@ typedef struct scene {
     double amp_window;          /* over the last amp_window s before stop.time */
     size_t ntmpl;               /* templates: the clump templates, by name */
     const char *tmplname[SCENE_MAX_TEMPLATES]; /* point into the tree */
-    demill_id tmpl[SCENE_MAX_TEMPLATES]; /* DEMILL_ID_NONE for a mesh's in SCENE_CHECK */
+    demill_id tmpl[SCENE_MAX_TEMPLATES]; /* DEMILL_ID_NONE in SCENE_CHECK */
     size_t tmpl_clumps[SCENE_MAX_TEMPLATES]; /* the clumps of each the fills added */
     int tmpl_counted;           /* tmpl_clumps is known (not on a restart) */
 } scene;
@@ -86,8 +86,9 @@ typedef struct scene {
 enum {
     SCENE_BUILD = 0,   /* a new world from the file */
     SCENE_CHECK = 1,   /* check everything, build the world's settings, materials, pairs, drum
-                          and bodies, but read no file and add no particle, wall, feed or
-                          outlet (demill check, sweeps before they run, the fuzz target) */
+                          and bodies, but read no file and add no template, particle, wall,
+                          feed or outlet (demill check, sweeps before they run, the fuzz
+                          target) */
     SCENE_RESTART = 2  /* s->w holds a loaded checkpoint: map the file's names to its ids and
                           apply only the entries set on the command line (--set) */
 };
