@@ -1171,6 +1171,14 @@ static int outlets_section(ctx *c, const tree *t)
             return -1;
         c->s->noutlets = c->mode == SCENE_BUILD ? k + 1 : 0;
     }
+    if (c->mode == SCENE_RESTART) {
+        /* the checkpoint's outlets, made from this list in its order */
+        size_t have = 0;
+        if (demill_world_ids(c->s->w, DEMILL_KIND_OUTLET, c->s->outlet, SCENE_MAX_OUTLETS,
+                             &have) != DEMILL_OK || have != t->n)
+            return fail(c, t, "the checkpoint has %zu outlets, the scene %zu", have, t->n);
+        c->s->noutlets = have;
+    }
     return 0;
 }
 
@@ -1226,9 +1234,6 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
         }
         if (!outlet_quantity(n->text, &q->outlet, &q->outlet_count)) {
             const tree *o = tree_get(c->root, "outlets");
-            if (c->mode == SCENE_RESTART)
-                return fail(c, n, "an outlet's quantity on a restart (the checkpoint's outlets "
-                                  "are not the scene's)");
             if (!o || o->kind != TREE_SEQ || (size_t)q->outlet >= o->n)
                 return fail(c, n, "'%s': the scene has %zu outlets", n->text,
                             o && o->kind == TREE_SEQ ? o->n : 0);
@@ -1409,12 +1414,8 @@ static int outputs_section(ctx *c, const tree *t)
                 return fail(c, e->kid[k], "expected increasing diameters > 0, got '%s'",
                             e->kid[k]->text);
     }
-    if ((e = tree_get(t, "discharge"))) {
-        if (c->mode == SCENE_RESTART)
-            return fail(c, e, "the discharge is measured from a scene's start, not on a restart");
-        if (discharge_of(c, e))
-            return -1;
-    }
+    if ((e = tree_get(t, "discharge")) && discharge_of(c, e))
+        return -1;
     if ((e = tree_get(t, "amplitude"))) {
         const tree *of, *win;
         if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_amplitude, 2) ||

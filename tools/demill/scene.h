@@ -46,7 +46,7 @@ typedef struct scene {
     int32_t speed_key;          /* the drum's speed key given, 0 for none */
     double speed_value;
     int speed_set;              /* the speed was given with --set */
-    size_t noutlets;            /* the outlets made (none on a restart) */
+    size_t noutlets;            /* the outlets made, or the checkpoint's on a restart */
     demill_id outlet[SCENE_MAX_OUTLETS];
     double stop_time, stop_revolutions; /* NAN when not given */
     int32_t empty_kind;         /* stop when this region holds no particle: DEMILL_REGION_BOX or
