@@ -1262,6 +1262,17 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
                 kind_name(n));
 }
 
+const char *scene_quantity_unit(const scene_quantity *q)
+{
+    if (q->body >= 0)
+        return q->field == DEMILL_BODY_POSITION ? "m" : q->field == DEMILL_BODY_VELOCITY ? "m/s" : "N";
+    if (q->centre)
+        return "m";
+    if (q->outlet >= 0)
+        return q->outlet_count ? "1" : "kg";
+    return demill_param_unit(q->key);
+}
+
 demill_status scene_quantity_read(const scene *s, const scene_quantity *q, double *value)
 {
     if (q->body >= 0) {
@@ -1361,7 +1372,7 @@ static int outputs_section(ctx *c, const tree *t)
     s->csv_file[0] = '\0';
     s->ncol = 0;
     s->vtk_every = s->checkpoint_every = 0;
-    s->charge_png = s->power_png = 0;
+    s->charge_png = s->power_png = s->series_png = 0;
     s->nedges = 0;
     s->discharge_on = 0;
     s->namp = 0;
@@ -1391,15 +1402,21 @@ static int outputs_section(ctx *c, const tree *t)
     }
     if ((e = tree_get(t, "pictures"))) {
         if (e->kind != TREE_SEQ)
-            return fail(c, e, "expected a list of pictures (charge, power), got %s", kind_name(e));
+            return fail(c, e, "expected a list of pictures (charge, power, series), got %s",
+                        kind_name(e));
         for (size_t k = 0; k < e->n; k++) {
             const tree *q = e->kid[k];
             if (q->kind == TREE_SCALAR && !strcmp(q->text, "charge"))
                 s->charge_png = 1;
             else if (q->kind == TREE_SCALAR && !strcmp(q->text, "power"))
                 s->power_png = 1;
-            else
-                return fail(c, q, "expected charge or power, got '%s'", kind_name(q));
+            else if (q->kind == TREE_SCALAR && !strcmp(q->text, "series")) {
+                if (!tree_get(t, "columns"))
+                    return fail(c, q, "the series picture draws outputs.columns, which are not given");
+                s->series_png = 1;
+                continue;
+            } else
+                return fail(c, q, "expected charge, power or series, got '%s'", kind_name(q));
             if (!tree_get(c->root, "drum"))
                 return fail(c, q, "the %s picture needs a drum", q->text);
         }
