@@ -243,10 +243,16 @@ static void particle_friction(demill_world *w, double *mu, double *mu_r)
 int shear_report(const scene *s, const shear_trace *tr, FILE *sum, const char *dir)
 {
     curve c;
+    const size_t n = tr->tau.n;
+    if (!n) {
+        fprintf(sum, "shear_samples = 0\n");
+        fprintf(stderr, "demill: the run stopped before the shear started (%g s): no shear "
+                        "results\n", s->shear_start);
+        return 0;
+    }
     if (curve_of(tr, s->shear_bin, &c))
         return -1;
-    const size_t n = tr->tau.n;
-    const double dmax = n ? tr->tau.a[n - 1] : 0;
+    const double dmax = tr->tau.a[n - 1];
     double sig = 0, res = 0, peak = -INFINITY, dpeak = NAN, mu, mu_r;
     size_t nres = 0;
     for (size_t k = 0; k < n; k++) {
@@ -392,8 +398,13 @@ int shear_sweep_report(const char *out, char *const *dirs, char *const *sums, si
 {
     double sig[MAX_RUNS], peak[MAX_RUNS], res[MAX_RUNS], fit[4];
     curve c[MAX_RUNS];
-    if (n < 2 || n > MAX_RUNS || isnan(summary_number(sums[0], "peak_shear_stress_Pa")))
+    if (n < 2 || isnan(summary_number(sums[0], "peak_shear_stress_Pa")))
         return 0;
+    if (n > MAX_RUNS) {
+        fprintf(stderr, "demill: a sweep of %zu shear tests: the Mohr-Coulomb fit takes at most %d\n",
+                n, MAX_RUNS);
+        return 0;
+    }
     for (size_t k = 0; k < n; k++) {
         sig[k] = summary_number(sums[k], "normal_stress_Pa");
         peak[k] = summary_number(sums[k], "peak_shear_stress_Pa");

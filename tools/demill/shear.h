@@ -36,8 +36,8 @@ int shear_report(const scene *s, const shear_trace *tr, FILE *sum, const char *d
  * Mohr-Coulomb lines through their peak and their residual points, in
  * shear_box.txt, with shear_stress.png (every run's curve) and
  * mohr_coulomb.png in the folder `out`, and a line on stdout. 0 (also when
- * the runs are no shear tests, or fewer than 2), or -1 with a message on
- * stderr. */
+ * the runs are no shear tests, fewer than 2 or more than 16), or -1 with
+ * a message on stderr. */
 int shear_sweep_report(const char *out, char *const *dirs, char *const *sums, size_t n);
 
 /* Frees the trace's series. */
