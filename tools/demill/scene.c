@@ -965,7 +965,8 @@ static int bodies_section(ctx *c, const tree *t)
         s->load[k].on = 0;
         if ((e = tree_get(b, "load"))) {
             /* a constant force from start, reached over ramp: the runner sets
-             * it at every sample as the external force of frequency 0 */
+             * it, at the samples where it changes, as the external force of
+             * frequency 0 */
             const tree *f, *st, *rp;
             scene_load *ld = &s->load[k];
             ld->start = ld->ramp = ld->applied = 0;

@@ -44,7 +44,8 @@ typedef struct scene_motion {
 } scene_motion;
 
 /* A body's load (bodies.NAME.load): a constant force from a start time,
- * reached linearly over a ramp; the runner sets it at every sample. */
+ * reached linearly over a ramp; the runner sets it at a sample when it
+ * changes. */
 typedef struct scene_load {
     int on;
     double force[3]; /* N */
