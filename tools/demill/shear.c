@@ -130,23 +130,18 @@ static void y_title(cairo_t *cr, double x, double y, const char *text)
     cairo_restore(cr);
 }
 
-/* A key: a short line (dashed if asked) or a dot, and its text. */
-static void key_line(cairo_t *cr, double x, double y, const double rgb[3], int dashed, int dot_only,
+/* A key: a short line, dashed if asked, and its text. */
+static void key_line(cairo_t *cr, double x, double y, const double rgb[3], int dashed,
                      const char *text)
 {
     cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-    if (dot_only) {
-        cairo_arc(cr, x + 15, y, 5, 0, 2 * PI);
-        cairo_fill(cr);
-    } else {
-        if (dashed)
-            cairo_set_dash(cr, (const double[2]){8, 5}, 2, 0);
-        cairo_set_line_width(cr, 2.5);
-        cairo_move_to(cr, x, y);
-        cairo_line_to(cr, x + 30, y);
-        cairo_stroke(cr);
-        cairo_set_dash(cr, NULL, 0, 0);
-    }
+    if (dashed)
+        cairo_set_dash(cr, (const double[2]){8, 5}, 2, 0);
+    cairo_set_line_width(cr, 2.5);
+    cairo_move_to(cr, x, y);
+    cairo_line_to(cr, x + 30, y);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, NULL, 0, 0);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, x + 38, y + 4);
     cairo_show_text(cr, text);
@@ -205,7 +200,7 @@ static int draw_curves(const char *dir, const char *name, const curve *c, size_t
         }
         snprintf(text, sizeof text, "normal stress %.1f kPa: peak %.1f kPa at %.1f mm (dot)", 1e-3 * sig,
                  c[k].n ? t[peak] : NAN, c[k].n ? dm[peak] : NAN);
-        key_line(cr, l + 20, tp + 20 + 22 * k, rgb, 0, 0, text);
+        key_line(cr, l + 20, tp + 20 + 22 * k, rgb, 0, text);
         free(dm);
         free(t);
         free(rs);
@@ -377,20 +372,21 @@ static int draw_mohr(const char *out, const double *sig, const double *peak, con
         cairo_arc(cr, plot_px(&a, 1e-3 * sig[k]), plot_py(&a, 1e-3 * res[k]), 6, 0, 2 * PI);
         cairo_fill(cr);
     }
-    snprintf(text, sizeof text, "peak: phi = %.1f deg, c = %.2f kPa (least squares through the dots)",
-             fit[0], 1e-3 * fit[1]);
-    key_line(cr, l + 20, tp + 20, red, 0, 0, text);
-    snprintf(text, sizeof text, "residual: phi = %.1f deg, c = %.2f kPa (mean over the last quarter)",
+    snprintf(text, sizeof text, "peak (the curve's largest): phi = %.1f deg, c = %.2f kPa", fit[0],
+             1e-3 * fit[1]);
+    key_line(cr, l + 20, tp + 20, red, 0, text);
+    snprintf(text, sizeof text, "residual (mean over the last quarter): phi = %.1f deg, c = %.2f kPa",
              fit[2], 1e-3 * fit[3]);
-    key_line(cr, l + 20, tp + 42, blue, 0, 0, text);
+    key_line(cr, l + 20, tp + 42, blue, 0, text);
     if (isfinite(mu)) {
         snprintf(text, sizeof text, "contact friction: atan %.3g = %.1f deg", mu, atan(mu) * 180 / PI);
-        key_line(cr, l + 20, tp + 64, grey, 1, 0, text);
+        key_line(cr, l + 20, tp + 64, grey, 1, text);
     }
     plot_frame(cr, l, tp, wd - l - r, ht - tp - bt, ht, wd / 2 - 60, "normal stress [kPa]");
     y_title(cr, 28, tp + 0.5 * (ht - tp - bt) + 70, "shear stress [kPa]");
     cairo_move_to(cr, l, 32);
-    cairo_show_text(cr, "Mohr-Coulomb lines of the direct shear tests: tau = c + sigma tan phi");
+    cairo_show_text(cr, "Direct shear tests: each run's peak and residual shear stress (dots) and "
+                        "the least-squares lines tau = c + sigma tan phi");
     return plot_finish(cr, s, out, "mohr_coulomb.png", "demill");
 }
 
