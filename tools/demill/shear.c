@@ -385,8 +385,8 @@ static int draw_mohr(const char *out, const double *sig, const double *peak, con
     plot_frame(cr, l, tp, wd - l - r, ht - tp - bt, ht, wd / 2 - 60, "normal stress [kPa]");
     y_title(cr, 28, tp + 0.5 * (ht - tp - bt) + 70, "shear stress [kPa]");
     cairo_move_to(cr, l, 32);
-    cairo_show_text(cr, "Direct shear tests: each run's peak and residual shear stress (dots) and "
-                        "the least-squares lines tau = c + sigma tan phi");
+    cairo_show_text(cr, "Direct shear: each run's peak and residual (dots), least-squares lines "
+                        "tau = c + sigma tan phi");
     return plot_finish(cr, s, out, "mohr_coulomb.png", "demill");
 }
 
