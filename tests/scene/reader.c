@@ -479,6 +479,23 @@ START_TEST(test_bad)
          "  - {template: r, region: {box: [0, 0, 0, 1, 1, 1]}, count: 20}\nstop: {time: 1}\n",
          NULL, "t.yaml:4: particles.0.template: only 1 of 20 clumps fit in the region: no free place "
                "among 4096 candidates"},
+        {"materials: {m: {}}\nwalls:\n  - {material: m, plane: {point: [0, 0, 0], normal: [0, 1, 0]}, "
+         "motion: {velocity: [1, 0, 0], start: -1}}\nstop: {time: 1}\n",
+         NULL, "t.yaml:3: walls.0.motion.start: expected a number >= 0, got '-1'"},
+        {"bodies: {lid: {mass: 1, force: {amplitude: [0, 1, 0], frequency: 0}, load: {force: [0, -1, "
+         "0]}}}\nstop: {time: 1}\n",
+         NULL, "t.yaml:1: bodies.lid.load: a body has a force or a load, not both"},
+        {"materials: {m: {}}\nbodies: {lid: {mass: 1}}\nwalls:\n  - {material: m, plane: {point: [0, "
+         "0, 0], normal: [0, 1, 0]}}\noutputs: {shear: {wall: 0, held: [lid], lid: lid, area: 1}}\n"
+         "stop: {time: 1}\n",
+         NULL, "t.yaml:5: outputs.shear.wall: wall 0 has no motion.velocity to shear the sample with"},
+        {"bodies: {lid: {mass: 1}}\noutputs: {shear: {wall: 0, held: [lid], lid: lid, area: 1}}\n"
+         "stop: {time: 1}\n",
+         NULL, "t.yaml:2: outputs.shear.wall: expected the index of one of the scene's 0 walls, got '0'"},
+        {"materials: {m: {}}\nbodies: {lid: {mass: 1}}\nwalls:\n  - {material: m, plane: {point: [0, "
+         "0, 0], normal: [0, 1, 0]}, motion: {velocity: [1, 0, 0]}}\noutputs: {shear: {wall: 0, held: "
+         "[box], lid: lid, area: 1}}\nstop: {time: 1}\n",
+         NULL, "t.yaml:5: outputs.shear.held.0: expected a body of 'bodies', got 'box'"},
         {"materials: {m: {}}\nstop: {time: 1}\n", "materials.m.restitution=high",
          "--set materials.m.restitution: expected a number in [0, 1], got 'high'"},
         {"world: {}\nstop: {time: 1}\n", "world.gravity=[0, x, 0]",

@@ -20,6 +20,7 @@
 #include "plot.h"
 #include "run.h"
 #include "scene.h"
+#include "shear.h"
 
 #define PI 3.14159265358979323846
 #define MAX_SETS 64
@@ -364,6 +365,7 @@ static int run_one(const run_args *a, char **summary)
         free(m);
         free(r);
     }
+    shear_trace shear = {0}; /* outputs.shear */
     const size_t steady_win = s.steady_on ? (size_t)fmax(1, round(s.steady_window / s.every)) : 0;
     double emptied = NAN;
     uint64_t steps = 0;
@@ -390,6 +392,30 @@ static int run_one(const run_args *a, char **summary)
         if (drum && s.speed_key && !turning && t >= s.drum_start - 0.5 * s.dt) {
             check(demill_drum_set(w, drum, s.speed_key, s.speed_value), "the drum's speed");
             turning = bar.turning = 1;
+        }
+        for (size_t k = 0; k < s.nmotion; k++) {
+            scene_motion *m = &s.motion[k];
+            if (m->started || t < m->start - 0.5 * s.dt)
+                continue;
+            check(demill_wall_set_motion(w, m->wall, m->given[0] ? m->v[0] : NULL,
+                                         m->given[1] ? m->v[1] : NULL, m->given[2] ? m->v[2] : NULL),
+                  "a wall's motion");
+            m->started = 1;
+            if (s.shear_on && m->index == s.shear_wall)
+                s.shear_start = t; /* the shear's displacement counts from here */
+        }
+        for (size_t k = 0; k < s.nbody; k++) {
+            /* a load: F sin(2 pi 0 t + pi/2) = F, scaled up over its ramp;
+             * set only when it changes (a change through the API restarts
+             * the watchdog's energy balance) */
+            scene_load *l = &s.load[k];
+            const double f = t < l->start - 0.5 * s.dt ? 0
+                             : l->ramp > 0               ? fmin(1, (t - l->start) / l->ramp)
+                                                         : 1;
+            const double amp[3] = {f * l->force[0], f * l->force[1], f * l->force[2]};
+            if (l->on && f != l->applied)
+                check(demill_body_set_force(w, s.body[k], amp, 0, 0.5 * PI), "a body's load");
+            l->applied = f;
         }
         check(demill_world_step(w, chunk), "step");
         steps += chunk;
@@ -420,6 +446,8 @@ static int run_one(const run_args *a, char **summary)
             amp_lo[k] = fmin(amp_lo[k], v);
             amp_hi[k] = fmax(amp_hi[k], v);
         }
+        if (s.shear_on)
+            shear_sample(&s, &shear, t);
         if (s.discharge_on) {
             series_add(&discharged, t, quantity(&s, &out_mass));
             series_add(&bulk, t, discharge_solid_fraction(&s));
@@ -526,6 +554,8 @@ static int run_one(const run_args *a, char **summary)
                                        mean_diameter, density};
         rc = discharge_report(&s, &trace, sum, a->out);
     }
+    if (s.shear_on && shear_report(&s, &shear, sum, a->out))
+        rc = -1;
     if (s.steady_on)
         fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
                 steady(&watched, steady_win, s.steady_tolerance) ? "yes" : "no",
@@ -568,6 +598,7 @@ static int run_one(const run_args *a, char **summary)
     series_free(&watched);
     series_free(&discharged);
     series_free(&bulk);
+    shear_trace_free(&shear);
     for (size_t k = 0; k < s.ncol; k++)
         series_free(&cols[k]);
     demill_world_destroy(w);
@@ -610,7 +641,7 @@ static int run_sweep(run_args *a, size_t which)
     char *values = strdup(eq + 1), *save = NULL;
     const char *base_out = a->out;
     char *sums[MAX_SWEEP];
-    char *vals[MAX_SWEEP];
+    char *vals[MAX_SWEEP], *dirs[MAX_SWEEP];
     size_t nv = 0;
     int rc = 0;
     if (!values)
@@ -642,7 +673,8 @@ static int run_sweep(run_args *a, size_t which)
         fprintf(stderr, "demill: sweep %.*s = %s\n", (int)(eq - set), set, v);
         sums[nv] = NULL;
         vals[nv] = v;
-        if (run_one(&b, &sums[nv])) {
+        if (run_one(&b, &sums[nv]) || !(dirs[nv] = strdup(out))) {
+            free(sums[nv]);
             rc = -1;
             break;
         }
@@ -682,9 +714,12 @@ static int run_sweep(run_args *a, size_t which)
         free(keys);
         output_close(f, "sweep.csv");
         printf("demill: sweep of %zu runs; table in %s/sweep.csv\n", nv, base_out);
+        rc = shear_sweep_report(base_out, dirs, sums, nv);
     }
-    for (size_t k = 0; k < nv; k++)
+    for (size_t k = 0; k < nv; k++) {
         free(sums[k]);
+        free(dirs[k]);
+    }
     free(values);
     return rc;
 }

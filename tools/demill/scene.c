@@ -1058,11 +1058,11 @@ static int particles_section(ctx *c, const tree *t)
     return 0;
 }
 
-static const char *const k_motion[] = {"velocity", "angular_velocity", "centre"};
+static const char *const k_motion[] = {"velocity", "angular_velocity", "centre", "start"};
 
 static const char *const k_harmonic[] = {"mode", "axis", "amplitude", "frequency", "phase"};
 
-static int motion_of(ctx *c, const tree *wall, demill_id id)
+static int motion_of(ctx *c, const tree *wall, size_t index, demill_id id)
 {
     const tree *m = tree_get(wall, "motion"), *h = tree_get(wall, "harmonic"),
                *sv = tree_get(wall, "surface_velocity");
@@ -1070,16 +1070,28 @@ static int motion_of(ctx *c, const tree *wall, demill_id id)
         return fail(c, h, "a wall has motion or harmonic, not both");
     if (m) {
 
-        double v[3][3];
-        const tree *e[3];
-        if (need_kind(c, m, TREE_MAP) || check_keys(c, m, k_motion, 3))
+        double v[3][3], start = 0, now = 0;
+        const tree *e[3], *st = tree_get(m, "start");
+        if (need_kind(c, m, TREE_MAP) || check_keys(c, m, k_motion, 4))
             return -1;
         for (int j = 0; j < 3; j++)
             if ((e[j] = tree_get(m, k_motion[j])) && numbers(c, e[j], 3, 3, v[j], NULL))
                 return -1;
-        if (c->mode == SCENE_BUILD &&
-            api(c, m, demill_wall_set_motion(c->s->w, id, e[0] ? v[0] : NULL, e[1] ? v[1] : NULL,
-                                             e[2] ? v[2] : NULL)))
+        if (st && number(c, st, 0, HUGE_VAL, &start))
+            return -1;
+        /* a motion from a later time: set by the runner when it comes */
+        if (c->mode == SCENE_RESTART && (demill_world_get(c->s->w, DEMILL_WORLD_TIME, &now), start > now))
+            return fail(c, st, "the motion starts at %g s, after the checkpoint's %g s: a restart "
+                               "cannot start it", start, now);
+        if (start > 0 && c->mode == SCENE_BUILD) {
+            if (c->s->nmotion == SCENE_MAX_MOTIONS)
+                return fail(c, st, "at most %d walls' motions may start late", SCENE_MAX_MOTIONS);
+            scene_motion *mo = &c->s->motion[c->s->nmotion++];
+            *mo = (scene_motion){id, (int)index, start, {{0}}, {e[0] != NULL, e[1] != NULL, e[2] != NULL}, 0};
+            memcpy(mo->v, v, sizeof v);
+        } else if (c->mode == SCENE_BUILD &&
+                   api(c, m, demill_wall_set_motion(c->s->w, id, e[0] ? v[0] : NULL,
+                                                    e[1] ? v[1] : NULL, e[2] ? v[2] : NULL)))
             return -1;
     }
     if (h) {
@@ -1115,9 +1127,11 @@ static int motion_of(ctx *c, const tree *wall, demill_id id)
     return 0;
 }
 
-static const char *const k_bodies[] = {"mass", "centre", "free_axes", "gravity", "springs", "force"};
+static const char *const k_bodies[] = {"mass", "centre", "free_axes", "gravity", "springs", "force",
+                                       "load"};
 static const char *const k_spring[] = {"axis", "stiffness", "damping", "rest"};
 static const char *const k_force[] = {"amplitude", "frequency", "phase"};
+static const char *const k_load[] = {"force", "start", "ramp"};
 static const char *const k_axes[] = {"x", "y", "z"};
 
 /* An axis's name: 0 for x, 1 for y, 2 for z; -1 with a message. */
@@ -1127,6 +1141,17 @@ static int axis_of(ctx *c, const tree *n)
         if (n->kind == TREE_SCALAR && !strcmp(n->text, k_axes[k]))
             return k;
     return fail(c, n, "expected x, y or z, got '%s'", kind_name(n));
+}
+
+/* The index in 'bodies' of the body named by n: 0, or -1 with a message. */
+static int body_index(ctx *c, const tree *n, int *at)
+{
+    for (size_t j = 0; j < c->s->nbody; j++)
+        if (n->kind == TREE_SCALAR && !strcmp(n->text, c->s->bodyname[j])) {
+            *at = (int)j;
+            return 0;
+        }
+    return fail(c, n, "expected a body of 'bodies', got '%s'", kind_name(n));
 }
 
 /* bodies: a map of named bodies (demill/body.h), before the walls that
@@ -1210,6 +1235,23 @@ static int bodies_section(ctx *c, const tree *t)
             if (c->mode != SCENE_RESTART &&
                 api(c, e, demill_body_set_force(s->w, s->body[k], amp, freq, phase)))
                 return -1;
+        }
+        s->load[k].on = 0;
+        if ((e = tree_get(b, "load"))) {
+            /* a constant force from start, reached over ramp: the runner sets
+             * it, at the samples where it changes, as the external force of
+             * frequency 0 */
+            const tree *f, *st, *rp;
+            scene_load *ld = &s->load[k];
+            ld->start = ld->ramp = ld->applied = 0;
+            if (tree_get(b, "force"))
+                return fail(c, e, "a body has a force or a load, not both");
+            if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_load, 3) ||
+                !(f = need(c, e, "force")) || numbers(c, f, 3, 3, ld->force, NULL) ||
+                ((st = tree_get(e, "start")) && number(c, st, 0, HUGE_VAL, &ld->start)) ||
+                ((rp = tree_get(e, "ramp")) && number(c, rp, 0, HUGE_VAL, &ld->ramp)))
+                return -1;
+            ld->on = 1;
         }
     }
     return 0;
@@ -1326,6 +1368,7 @@ static int add_polyline(ctx *c, const tree *t, demill_id mat, demill_id *id)
 
 static int walls_section(ctx *c, const tree *t)
 {
+    c->s->nmotion = 0;
     if (!t)
         return 0;
     if (need_kind(c, t, TREE_SEQ))
@@ -1357,16 +1400,13 @@ static int walls_section(ctx *c, const tree *t)
             : which == NSHAPES ? add_stl(c, geometry, mat, &id)
                                : add_polyline(c, geometry, mat, &id))
             return -1;
-        if (motion_of(c, wl, id))
+        if (motion_of(c, wl, k, id))
             return -1;
         const tree *b = tree_get(wl, "body");
         if (b) {
-            size_t j = 0;
-            while (j < c->s->nbody && (b->kind != TREE_SCALAR || strcmp(b->text, c->s->bodyname[j])))
-                j++;
-            if (j == c->s->nbody)
-                return fail(c, b, "expected a body of 'bodies', got '%s'", kind_name(b));
-            if (c->mode == SCENE_BUILD && api(c, b, demill_body_attach_wall(c->s->w, c->s->body[j], id)))
+            int j = 0;
+            if (body_index(c, b, &j) ||
+                (c->mode == SCENE_BUILD && api(c, b, demill_body_attach_wall(c->s->w, c->s->body[j], id))))
                 return -1;
         }
     }
@@ -1578,10 +1618,60 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
 
 static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
                                         "checkpoint_every", "pictures", "power_by_size",
-                                        "discharge", "amplitude"};
+                                        "discharge", "amplitude", "shear"};
 static const char *const k_amplitude[] = {"of", "window"};
 static const char *const k_discharge[] = {"outlet", "orifice_diameter", "half_angle",
                                           "stagnant_angle", "bulk_region"};
+
+static const char *const k_shear[] = {"wall", "held", "lid", "area", "bin"};
+
+/* outputs.shear: a direct shear test (shear.h): the wall (its index in
+ * walls) whose motion, from its start, shears the sample, the bodies that
+ * hold the other half, the lid's body, the shear plane's area and the
+ * displacement over which the curve is averaged. */
+static int shear_of(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    const tree *e, *wl = tree_get(c->root, "walls"), *m, *v, *st;
+    double index, vel[3];
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_shear, 5))
+        return -1;
+    if (!(e = need(c, t, "wall")) || number(c, e, 0, HUGE_VAL, &index))
+        return -1;
+    if (index != floor(index) || !wl || wl->kind != TREE_SEQ || index >= (double)wl->n)
+        return fail(c, e, "expected the index of one of the scene's %zu walls, got '%s'",
+                    wl && wl->kind == TREE_SEQ ? wl->n : 0, e->text);
+    s->shear_wall = (int)index;
+    m = tree_get(wl->kid[s->shear_wall], "motion");
+    if (!(v = m ? tree_get(m, "velocity") : NULL))
+        return fail(c, e, "wall %d has no motion.velocity to shear the sample with", s->shear_wall);
+    if (numbers(c, v, 3, 3, vel, NULL))
+        return -1;
+    s->shear_speed = sqrt(vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2]);
+    if (!(s->shear_speed > 0))
+        return fail(c, v, "the shearing wall's velocity is zero");
+    for (int k = 0; k < 3; k++)
+        s->shear_dir[k] = vel[k] / s->shear_speed;
+    s->shear_start = 0;
+    if ((st = tree_get(m, "start")) && number(c, st, 0, HUGE_VAL, &s->shear_start))
+        return -1;
+    if (!(e = need(c, t, "held")))
+        return -1;
+    if (e->kind != TREE_SEQ || e->n < 1 || e->n > SCENE_MAX_BODIES)
+        return fail(c, e, "expected a list of bodies, got %s", kind_name(e));
+    for (size_t k = 0; k < e->n; k++)
+        if (body_index(c, e->kid[k], &s->held[k]))
+            return -1;
+    s->nheld = e->n;
+    if (!(e = need(c, t, "lid")) || body_index(c, e, &s->lid) || !(e = need(c, t, "area")) ||
+        positive(c, e, &s->shear_area))
+        return -1;
+    s->shear_bin = 1e-3;
+    if ((e = tree_get(t, "bin")) && positive(c, e, &s->shear_bin))
+        return -1;
+    s->shear_on = 1;
+    return 0;
+}
 
 /* outputs.discharge: the outlet whose discharge rate is measured, the
  * orifice, the hopper's half-angle and a flat bottom's stagnant-zone angle
@@ -1635,10 +1725,11 @@ static int outputs_section(ctx *c, const tree *t)
     s->nedges = 0;
     s->discharge_on = 0;
     s->namp = 0;
+    s->shear_on = 0;
     if (!t)
         return 0;
     const tree *e;
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 9))
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 10))
         return -1;
     if ((e = tree_get(t, "every")) && positive(c, e, &s->every))
         return -1;
@@ -1704,6 +1795,12 @@ static int outputs_section(ctx *c, const tree *t)
             if (quantity_of(c, of->kid[k], &s->amp[k]))
                 return -1;
         s->namp = of->n;
+    }
+    if ((e = tree_get(t, "shear"))) {
+        if (c->mode == SCENE_RESTART)
+            return fail(c, e, "the shear test is measured from a scene's start, not on a restart");
+        if (shear_of(c, e))
+            return -1;
     }
     return 0;
 }
@@ -1856,6 +1953,7 @@ static const section sections[] = {
     {"bodies.NAME", KEYS(k_bodies)},
     {"bodies.NAME.springs[]", KEYS(k_spring)},
     {"bodies.NAME.force", KEYS(k_force)},
+    {"bodies.NAME.load", KEYS(k_load)},
     {"walls[]", KEYS(k_walls)},
     {"walls[].plane", shapes[0].keys, 2},
     {"walls[].rectangle", shapes[1].keys, 5},
@@ -1871,6 +1969,7 @@ static const section sections[] = {
     {"outputs", KEYS(k_outputs)},
     {"outputs.discharge", KEYS(k_discharge)},
     {"outputs.amplitude", KEYS(k_amplitude)},
+    {"outputs.shear", KEYS(k_shear)},
     {"stop", KEYS(k_stop)},
     {"stop.steady", KEYS(k_steady)},
 };

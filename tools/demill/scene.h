@@ -17,6 +17,7 @@
 #define SCENE_MAX_OUTLETS 16
 #define SCENE_MAX_BODIES 64
 #define SCENE_MAX_TEMPLATES 64
+#define SCENE_MAX_MOTIONS 16
 
 /* A quantity of the time series or of a steady stop: a world or drum key
  * of the registry (key, body < 0, outlet < 0), a component of a body's
@@ -32,6 +33,27 @@ typedef struct scene_quantity {
     int centre;        /* 1: a component (comp) of the particles' centre of mass */
 } scene_quantity;
 
+/* A wall's motion (walls[].motion) from a time after the start: the
+ * runner sets it (demill_wall_set_motion()) when the world's time comes. */
+typedef struct scene_motion {
+    demill_id wall;
+    int index;      /* in walls */
+    double start;   /* world time, s */
+    double v[3][3]; /* velocity, angular velocity, centre */
+    int given[3];   /* which of v were given (the others NULL) */
+    int started;
+} scene_motion;
+
+/* A body's load (bodies.NAME.load): a constant force from a start time,
+ * reached linearly over a ramp; the runner sets it at a sample when it
+ * changes. */
+typedef struct scene_load {
+    int on;
+    double force[3]; /* N */
+    double start, ramp; /* world time and duration, s */
+    double applied;     /* the fraction of the force the world has now */
+} scene_load;
+
 typedef struct scene {
     demill_world *w;
     int dim;
@@ -43,6 +65,7 @@ typedef struct scene {
     size_t nbody;
     const char *bodyname[SCENE_MAX_BODIES]; /* point into the tree */
     demill_id body[SCENE_MAX_BODIES];
+    scene_load load[SCENE_MAX_BODIES];
     double drum_start;          /* world time at which the drum's speed is set, s */
     int32_t speed_key;          /* the drum's speed key given, 0 for none */
     double speed_value;
@@ -81,6 +104,17 @@ typedef struct scene {
     demill_id tmpl[SCENE_MAX_TEMPLATES]; /* DEMILL_ID_NONE in SCENE_CHECK */
     size_t tmpl_clumps[SCENE_MAX_TEMPLATES]; /* the clumps of each the fills added */
     int tmpl_counted;           /* tmpl_clumps is known (not on a restart) */
+    size_t nmotion;             /* walls' motions that start late (not on a restart) */
+    scene_motion motion[SCENE_MAX_MOTIONS];
+    int shear_on;               /* outputs.shear: a direct shear test (shear.h) */
+    int shear_wall;             /* the index in walls of the moving half */
+    double shear_dir[3];        /* the unit direction of its motion */
+    double shear_speed, shear_start; /* its speed (m/s) and when it starts (s) */
+    size_t nheld;               /* the bodies whose force along shear_dir is the shear force */
+    int held[SCENE_MAX_BODIES];
+    int lid;                    /* the body that loads the sample */
+    double shear_area;          /* the shear plane's area, m^2 */
+    double shear_bin;           /* the displacement over which the curve is averaged, m */
 } scene;
 
 /* What scene_build() does with the world. */
