@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "conveyor.h"
 #include "discharge.h"
 #include "drum_plot.h"
 #include "plot.h"
@@ -329,6 +330,7 @@ static int run_one(const run_args *a, char **summary)
     const scene_quantity out_mass = {.name = "outlet mass", .body = -1,
                                      .outlet = s.discharge_outlet};
     double mean_diameter = NAN, density = NAN;
+    conveyor_trace conveyor = {0}; /* outputs.conveyor: the outlet's mass, the belt's and chute's forces */
     /* outputs.amplitude: the least and largest values in its window */
     double amp_lo[SCENE_MAX_COLUMNS], amp_hi[SCENE_MAX_COLUMNS];
     for (size_t k = 0; k < s.namp; k++) {
@@ -406,6 +408,8 @@ static int run_one(const run_args *a, char **summary)
             amp_lo[k] = fmin(amp_lo[k], v);
             amp_hi[k] = fmax(amp_hi[k], v);
         }
+        if (s.conveyor_on)
+            conveyor_sample(&s, &conveyor, t);
         if (s.discharge_on) {
             series_add(&discharged, t, quantity(&s, &out_mass));
             series_add(&bulk, t, discharge_solid_fraction(&s));
@@ -497,6 +501,11 @@ static int run_one(const run_args *a, char **summary)
         }
         fprintf(sum, "outlet_%zu_particles = %llu\noutlet_%zu_mass_kg = %.6g\n", k, c, k, m);
     }
+    {
+        double end_count;
+        check(demill_world_get(w, DEMILL_WORLD_PARTICLE_COUNT, &end_count), "particles");
+        fprintf(sum, "particles_end = %.0f\n", end_count);
+    }
     if (s.empty_kind)
         fprintf(sum, "emptied_s = %.6g\n", emptied);
     for (size_t k = 0; k < s.namp; k++)
@@ -509,6 +518,8 @@ static int run_one(const run_args *a, char **summary)
                                        mean_diameter, density};
         rc = discharge_report(&s, &trace, sum, a->out);
     }
+    if (s.conveyor_on && conveyor_report(&s, &conveyor, sum, a->out))
+        rc = -1;
     if (s.steady_on)
         fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
                 steady(&watched, steady_win, s.steady_tolerance) ? "yes" : "no",
@@ -549,6 +560,7 @@ static int run_one(const run_args *a, char **summary)
     series_free(&watched);
     series_free(&discharged);
     series_free(&bulk);
+    conveyor_free(&conveyor);
     demill_world_destroy(w);
     example_world = NULL;
     tree_free(doc);

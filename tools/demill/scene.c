@@ -1303,7 +1303,7 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
 
 static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
                                         "checkpoint_every", "pictures", "power_by_size",
-                                        "discharge", "amplitude"};
+                                        "discharge", "amplitude", "conveyor"};
 static const char *const k_amplitude[] = {"of", "window"};
 static const char *const k_discharge[] = {"outlet", "orifice_diameter", "half_angle",
                                           "stagnant_angle", "bulk_region"};
@@ -1348,6 +1348,91 @@ static int discharge_of(ctx *c, const tree *t)
     return 0;
 }
 
+static const char *const k_conveyor[] = {"belt", "chute", "feed", "outlet", "from"};
+
+/* The index of the body a scene names in n (outputs.conveyor's belt and
+ * chute): 0, or -1 with a message. */
+static int conveyor_body(ctx *c, const tree *n, int *index)
+{
+    for (size_t k = 0; n->kind == TREE_SCALAR && k < c->s->nbody; k++)
+        if (!strcmp(n->text, c->s->bodyname[k])) {
+            *index = (int)k;
+            return 0;
+        }
+    return fail(c, n, "expected a body of 'bodies', got '%s'", kind_name(n));
+}
+
+/* The index of an item of the scene's list `list` (feeds, outlets) in n:
+ * 0, or -1 with a message. */
+static int conveyor_item(ctx *c, const tree *n, const char *list, int *index)
+{
+    const tree *l = tree_get(c->root, list);
+    double v = 0;
+    if (number(c, n, 0, 1e9, &v))
+        return -1;
+    if (v != floor(v) || !l || l->kind != TREE_SEQ || v >= (double)l->n)
+        return fail(c, n, "expected the index of one of the scene's %zu %s, got '%s'",
+                    l && l->kind == TREE_SEQ ? l->n : 0, list, n->text);
+    *index = (int)v;
+    return 0;
+}
+
+/* outputs.conveyor: the body holding the belt (whose walls' surface
+ * velocity is the belt's, the same on each), the body holding the chute
+ * (none by default), the feed and the outlet, and when the steady state
+ * is taken to begin. */
+static int conveyor_of(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    const tree *e, *walls = tree_get(c->root, "walls"), *belt_wall = NULL;
+    int feed;
+    double sv[3] = {0, 0, 0}, v[3] = {0, 0, 0};
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_conveyor, 5))
+        return -1;
+    if (!(e = need(c, t, "belt")) || conveyor_body(c, e, &s->conveyor_belt))
+        return -1;
+    for (size_t k = 0; walls && walls->kind == TREE_SEQ && k < walls->n; k++) {
+        const tree *b = tree_get(walls->kid[k], "body"), *w = tree_get(walls->kid[k], "surface_velocity");
+        if (!b || b->kind != TREE_SCALAR || strcmp(b->text, e->text))
+            continue;
+        if (!w || numbers(c, w, 3, 3, v, NULL))
+            return fail(c, walls->kid[k], "a wall of the belt's body '%s' needs a surface_velocity",
+                        e->text);
+        if (belt_wall && (v[0] != sv[0] || v[1] != sv[1] || v[2] != sv[2]))
+            return fail(c, w, "expected the surface velocity of the belt's other walls");
+        belt_wall = w;
+        memcpy(sv, v, sizeof sv);
+    }
+    if (!belt_wall)
+        return fail(c, e, "the belt's body '%s' holds no wall", e->text);
+    s->belt_speed = sqrt(sv[0] * sv[0] + sv[1] * sv[1] + sv[2] * sv[2]);
+    if (!(s->belt_speed > 0))
+        return fail(c, belt_wall, "expected a belt moving (a surface velocity not 0)");
+    for (int k = 0; k < 3; k++)
+        s->belt_dir[k] = sv[k] / s->belt_speed;
+    s->conveyor_chute = -1;
+    if ((e = tree_get(t, "chute")) && conveyor_body(c, e, &s->conveyor_chute))
+        return -1;
+    if (s->conveyor_chute == s->conveyor_belt)
+        return fail(c, e, "expected a body other than the belt's");
+    if (!(e = need(c, t, "feed")) || conveyor_item(c, e, "feeds", &feed))
+        return -1;
+    const tree *f = tree_get(c->root, "feeds")->kid[feed];
+    s->feed_along = 0;
+    if ((e = tree_get(f, "velocity"))) {
+        if (numbers(c, e, 3, 3, v, NULL))
+            return -1;
+        s->feed_along = v[0] * s->belt_dir[0] + v[1] * s->belt_dir[1] + v[2] * s->belt_dir[2];
+    }
+    if (!(e = need(c, f, "mass_rate")) || positive(c, e, &s->feed_rate))
+        return -1;
+    if (!(e = need(c, t, "outlet")) || conveyor_item(c, e, "outlets", &s->conveyor_outlet) ||
+        !(e = need(c, t, "from")) || number(c, e, 0, HUGE_VAL, &s->conveyor_from))
+        return -1;
+    s->conveyor_on = 1;
+    return 0;
+}
+
 static int outputs_section(ctx *c, const tree *t)
 {
 
@@ -1360,10 +1445,11 @@ static int outputs_section(ctx *c, const tree *t)
     s->nedges = 0;
     s->discharge_on = 0;
     s->namp = 0;
+    s->conveyor_on = 0;
     if (!t)
         return 0;
     const tree *e;
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 9))
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 10))
         return -1;
     if ((e = tree_get(t, "every")) && positive(c, e, &s->every))
         return -1;
@@ -1427,6 +1513,12 @@ static int outputs_section(ctx *c, const tree *t)
             if (quantity_of(c, of->kid[k], &s->amp[k]))
                 return -1;
         s->namp = of->n;
+    }
+    if ((e = tree_get(t, "conveyor"))) {
+        if (c->mode == SCENE_RESTART)
+            return fail(c, e, "the conveyor is measured from a scene's start, not on a restart");
+        if (conveyor_of(c, e))
+            return -1;
     }
     return 0;
 }
@@ -1591,6 +1683,7 @@ static const section sections[] = {
     {"outputs", KEYS(k_outputs)},
     {"outputs.discharge", KEYS(k_discharge)},
     {"outputs.amplitude", KEYS(k_amplitude)},
+    {"outputs.conveyor", KEYS(k_conveyor)},
     {"stop", KEYS(k_stop)},
     {"stop.steady", KEYS(k_steady)},
 };
