@@ -1348,19 +1348,7 @@ static int discharge_of(ctx *c, const tree *t)
     return 0;
 }
 
-static const char *const k_conveyor[] = {"belt", "chute", "feed", "outlet", "from"};
-
-/* The index of the body a scene names in n (outputs.conveyor's belt and
- * chute): 0, or -1 with a message. */
-static int conveyor_body(ctx *c, const tree *n, int *index)
-{
-    for (size_t k = 0; n->kind == TREE_SCALAR && k < c->s->nbody; k++)
-        if (!strcmp(n->text, c->s->bodyname[k])) {
-            *index = (int)k;
-            return 0;
-        }
-    return fail(c, n, "expected a body of 'bodies', got '%s'", kind_name(n));
-}
+static const char *const k_conveyor[] = {"chute", "feed", "outlet", "from"};
 
 /* The index of an item of the scene's list `list` (feeds, outlets) in n:
  * 0, or -1 with a message. */
@@ -1377,44 +1365,58 @@ static int conveyor_item(ctx *c, const tree *n, const char *list, int *index)
     return 0;
 }
 
-/* outputs.conveyor: the body holding the belt (whose walls' surface
- * velocity is the belt's, the same on each), the body holding the chute
- * (none by default), the feed and the outlet, and when the steady state
- * is taken to begin. */
+/* outputs.conveyor: the body holding the chute (none by default), the
+ * feed and the outlet, and when the steady state is taken to begin. The
+ * belt is the walls with a surface velocity, the same on each; its power
+ * is the work the energy account tallies for moving walls, so that no
+ * other wall may move, none of the belt's may be a body's (the account
+ * leaves their work to the body's terms) and the tally must be on. */
 static int conveyor_of(ctx *c, const tree *t)
 {
     scene *s = c->s;
-    const tree *e, *walls = tree_get(c->root, "walls"), *belt_wall = NULL;
+    const tree *e, *walls = tree_get(c->root, "walls"), *belt = NULL, *world = tree_get(c->root, "world");
     int feed;
     double sv[3] = {0, 0, 0}, v[3] = {0, 0, 0};
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_conveyor, 5))
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_conveyor, 4))
         return -1;
-    if (!(e = need(c, t, "belt")) || conveyor_body(c, e, &s->conveyor_belt))
-        return -1;
+    if (tree_get(c->root, "drum"))
+        return fail(c, t, "the conveyor's belt is measured by the moving walls' work: no drum");
+    if (world && (e = tree_get(world, "energy_tracking")) && e->kind == TREE_SCALAR &&
+        !strcmp(e->text, "false"))
+        return fail(c, e, "the conveyor's belt is measured by the energy account's wall work: "
+                          "expected energy_tracking true");
     for (size_t k = 0; walls && walls->kind == TREE_SEQ && k < walls->n; k++) {
-        const tree *b = tree_get(walls->kid[k], "body"), *w = tree_get(walls->kid[k], "surface_velocity");
-        if (!b || b->kind != TREE_SCALAR || strcmp(b->text, e->text))
+        const tree *wl = walls->kid[k], *w = tree_get(wl, "surface_velocity");
+        if (w && tree_get(wl, "body"))
+            return fail(c, w, "a belt on a body: the conveyor measures the belt by the moving walls' "
+                              "work, which leaves out bodies' walls");
+        if (tree_get(wl, "motion") || tree_get(wl, "harmonic"))
+            return fail(c, wl, "the conveyor's belt must be the only moving wall (its power is "
+                               "the moving walls' work)");
+        if (!w)
             continue;
-        if (!w || numbers(c, w, 3, 3, v, NULL))
-            return fail(c, walls->kid[k], "a wall of the belt's body '%s' needs a surface_velocity",
-                        e->text);
-        if (belt_wall && (v[0] != sv[0] || v[1] != sv[1] || v[2] != sv[2]))
+        if (numbers(c, w, 3, 3, v, NULL))
+            return -1;
+        if (belt && (v[0] != sv[0] || v[1] != sv[1] || v[2] != sv[2]))
             return fail(c, w, "expected the surface velocity of the belt's other walls");
-        belt_wall = w;
+        belt = w;
         memcpy(sv, v, sizeof sv);
     }
-    if (!belt_wall)
-        return fail(c, e, "the belt's body '%s' holds no wall", e->text);
+    if (!belt)
+        return fail(c, t, "the conveyor needs a belt: a wall with a surface_velocity");
     s->belt_speed = sqrt(sv[0] * sv[0] + sv[1] * sv[1] + sv[2] * sv[2]);
     if (!(s->belt_speed > 0))
-        return fail(c, belt_wall, "expected a belt moving (a surface velocity not 0)");
+        return fail(c, belt, "expected a belt moving (a surface velocity not 0)");
     for (int k = 0; k < 3; k++)
         s->belt_dir[k] = sv[k] / s->belt_speed;
     s->conveyor_chute = -1;
-    if ((e = tree_get(t, "chute")) && conveyor_body(c, e, &s->conveyor_chute))
-        return -1;
-    if (s->conveyor_chute == s->conveyor_belt)
-        return fail(c, e, "expected a body other than the belt's");
+    if ((e = tree_get(t, "chute"))) {
+        for (size_t k = 0; e->kind == TREE_SCALAR && k < s->nbody && s->conveyor_chute < 0; k++)
+            if (!strcmp(e->text, s->bodyname[k]))
+                s->conveyor_chute = (int)k;
+        if (s->conveyor_chute < 0)
+            return fail(c, e, "expected a body of 'bodies', got '%s'", kind_name(e));
+    }
     if (!(e = need(c, t, "feed")) || conveyor_item(c, e, "feeds", &feed))
         return -1;
     const tree *f = tree_get(c->root, "feeds")->kid[feed];

@@ -76,7 +76,7 @@ typedef struct scene {
     double amp_window;          /* over the last amp_window s before stop.time */
     int conveyor_on;            /* outputs.conveyor: a belt's resistance against the momentum
                                    balance */
-    int conveyor_belt, conveyor_chute; /* the bodies holding the belt and the chute (-1: none) */
+    int conveyor_chute;         /* the body holding the chute (-1: none) */
     int conveyor_outlet;        /* the outlet's index */
     double belt_dir[3], belt_speed; /* the belt walls' surface velocity: its direction, its m/s */
     double feed_rate, feed_along; /* the feed's kg/s and its velocity along the belt, m/s */
