@@ -89,26 +89,6 @@ static steady_state steady_of(const scene *s, const conveyor_trace *tr)
     return st;
 }
 
-/* A horizontal line at y over [t0, t1] in a colour, dashed if asked, and
- * its key at (kx, ky). */
-static void level_line(cairo_t *cr, const plot_area *a, double y, double t0, double t1,
-                       const double rgb[3], int dashed, double kx, double ky, const char *key)
-{
-    const double x[2] = {t0, t1}, v[2] = {y, y};
-    if (dashed)
-        cairo_set_dash(cr, (const double[2]){8, 5}, 2, 0);
-    plot_curve(cr, a, x, v, 2, rgb, 2.2);
-    cairo_move_to(cr, kx, ky);
-    cairo_line_to(cr, kx + 30, ky);
-    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-    cairo_set_line_width(cr, 2.2);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, NULL, 0, 0);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_move_to(cr, kx + 38, ky + 4);
-    cairo_show_text(cr, key);
-}
-
 /* The particles seen from the side (along -z) coloured by speed, with the
  * colour bar and a scale, in the canvas's band from y = top, ht high. */
 static int draw_side(cairo_t *cr, const scene *s, double top, double ht, double t)
@@ -202,10 +182,13 @@ static void draw_force(cairo_t *cr, const scene *s, const conveyor_trace *tr,
     const double kx = l + 20;
     snprintf(key, sizeof key, "belt's resistance over the window (shaded), mean: %.4f N",
              st->power / s->belt_speed);
-    level_line(cr, &a, st->power / s->belt_speed, t0, t1, (const double[3]){0.85, 0.2, 0.1}, 0, kx, top + 20, key);
-    snprintf(key, sizeof key, "momentum balance m' (v - v_in) = %.4f kg/s x (%.3f - %.3f) m/s = %.4f N",
+    plot_line_key(cr, &a, t0, st->power / s->belt_speed, 0, t0, t1,
+                  (const double[3]){0.85, 0.2, 0.1}, 0, kx, top + 20, key);
+    snprintf(key, sizeof key,
+             "momentum balance m' (v - v_in) = %.4f kg/s x (%.3f - %.3f) m/s = %.4f N",
              st->rate, s->belt_speed, v_in, balance);
-    level_line(cr, &a, balance, t[0], t1, (const double[3]){0.1, 0.55, 0.2}, 1, kx, top + 42, key);
+    plot_line_key(cr, &a, t0, balance, 0, t[0], t1, (const double[3]){0.1, 0.55, 0.2}, 1, kx,
+                  top + 42, key);
     cairo_set_source_rgb(cr, blue[0], blue[1], blue[2]);
     cairo_move_to(cr, kx + 38, top + 68);
     cairo_show_text(cr, "the particles' force on the belt against its motion, mean over 50 ms "
