@@ -14,9 +14,9 @@ steady (the first particles reach the outlet at 1.4 s).
   DIN 22101 (2011), Continuous conveyors - Belt conveyors for loose bulk
   materials - Basis for calculation and dimensioning. The belt's mean
   force from conveyor.csv is within 5 % of it (the band of
-  docs/scenes.md), m' fitted here from the outlet's mass column, the belt's
-  force its work over the window (the energy account's, conveyor.csv)
-  over the window's length and v, the chute's its samples' mean.
+  docs/scenes.md), m' fitted here from the outlet's mass column, the
+  belt's and the chute's forces the means of their samples (conveyor.csv,
+  every 0.2 ms).
 - Steady, what the feed puts in comes out: m' is within 5 % of the feed's
   2 kg/s.
 - The summary's numbers are those of conveyor.csv, and the power is F v.
@@ -53,7 +53,7 @@ def main():
     m = [r["discharged_kg"] for r in window]
     tm, mm = sum(t) / n, sum(m) / n
     rate = sum((a - tm) * (b - mm) for a, b in zip(t, m)) / sum((a - tm) ** 2 for a in t)
-    belt = (window[-1]["belt_work_J"] - window[0]["belt_work_J"]) / (t[-1] - t[0]) / SPEED
+    belt = sum(r["belt_force_N"] for r in window) / n
     chute = sum(r["chute_force_N"] for r in window) / n
     v_in = chute / rate
     balance = rate * (SPEED - v_in)

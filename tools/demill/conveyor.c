@@ -1,7 +1,7 @@
 /* conveyor.c: outputs.conveyor of the demill runner (conveyor.h): the
- * belt's work and the chute's force along the belt sampled through the
- * run, the steady mass flow, power and resistance against the momentum the
- * belt gives the fed particles, the time series and the picture. */
+ * belt's and the chute's forces along the belt sampled through the run,
+ * the steady mass flow, resistance and power against the momentum the belt
+ * gives the fed particles, the time series and the picture. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -17,44 +17,64 @@ static double along(const double f[3], const double u[3])
     return f[0] * u[0] + f[1] * u[1] + f[2] * u[2];
 }
 
+/* The particles' force on the belt: on every wall whose surface moves
+ * (the belt's walls, scene.c), N. */
+static void belt_force(demill_world *w, double f[3])
+{
+    size_t n;
+    f[0] = f[1] = f[2] = 0;
+    check(demill_world_ids(w, DEMILL_KIND_WALL, NULL, 0, &n), "the walls");
+    demill_id *id = malloc((n ? n : 1) * sizeof *id);
+    if (!id) {
+        fprintf(stderr, "demill: out of memory\n");
+        exit(EXIT_FAILURE);
+    }
+    check(demill_world_ids(w, DEMILL_KIND_WALL, id, n, &n), "the walls");
+    for (size_t k = 0; k < n; k++) {
+        double u[3], fk[3];
+        check(demill_wall_get(w, id[k], DEMILL_WALL_SURFACE_VELOCITY, u), "a wall");
+        if (u[0] == 0 && u[1] == 0 && u[2] == 0)
+            continue;
+        check(demill_wall_get(w, id[k], DEMILL_WALL_FORCE, fk), "the belt's force");
+        for (int c = 0; c < 3; c++)
+            f[c] += fk[c];
+    }
+    free(id);
+}
+
 void conveyor_sample(const scene *s, conveyor_trace *tr, double t)
 {
     const scene_quantity out = {.name = "the conveyor's outlet", .body = -1,
                                 .outlet = s->conveyor_outlet};
-    double m, work, fc[3] = {0, 0, 0};
+    double m, fb[3], fc[3] = {0, 0, 0};
     check(scene_quantity_read(s, &out, &m), out.name);
-    /* the belt is the only moving wall outside bodies (scene.c) */
-    check(demill_world_energy(s->w, DEMILL_ENERGY_WALL_WORK, &work), "the belt's work");
+    belt_force(s->w, fb);
     if (s->conveyor_chute >= 0)
         check(demill_body_get(s->w, s->body[s->conveyor_chute], DEMILL_BODY_FORCE_PARTICLES, fc),
               "the chute's force");
-    /* the chute's push on the particles: the reaction of theirs on it */
+    /* the particles' forces on the belt and the chute; the belt's
+     * resistance is the one against its motion, the chute's push on the
+     * particles the reaction of theirs on it */
     series_add(&tr->mass, t, m);
-    series_add(&tr->work, t, work);
+    series_add(&tr->belt, t, -along(fb, s->belt_dir));
     series_add(&tr->chute, t, -along(fc, s->belt_dir));
 }
 
 void conveyor_free(conveyor_trace *tr)
 {
     series_free(&tr->mass);
-    series_free(&tr->work);
+    series_free(&tr->belt);
     series_free(&tr->chute);
 }
 
 /* The steady state over the samples from..n-1: the outlet's rate (the
- * least-squares slope of its mass against time), the belt's power over
- * the whole window and its two halves (the work done over their length),
- * and the mean of the chute's push. */
+ * least-squares slope of its mass against time), the means of the belt's
+ * resistance over the whole window and its two halves, and of the chute's
+ * push. */
 typedef struct steady_state {
     size_t from, n;
-    double rate, power, power_half[2], chute;
+    double rate, belt, belt_half[2], chute;
 } steady_state;
-
-/* The belt's mean power between the samples j < k: its work over the time. */
-static double power_between(const conveyor_trace *tr, size_t j, size_t k)
-{
-    return (tr->work.b[k] - tr->work.b[j]) / (tr->work.a[k] - tr->work.a[j]);
-}
 
 static double mean_of(const double *b, size_t from, size_t to)
 {
@@ -67,7 +87,6 @@ static double mean_of(const double *b, size_t from, size_t to)
 static steady_state steady_of(const scene *s, const conveyor_trace *tr)
 {
     steady_state st = {0, 0, NAN, NAN, {NAN, NAN}, NAN};
-    const size_t last = tr->mass.n - 1;
     const double *t = tr->mass.a;
     while (st.from < tr->mass.n && t[st.from] < s->conveyor_from - 0.5 * s->dt)
         st.from++;
@@ -82,9 +101,9 @@ static steady_state steady_of(const scene *s, const conveyor_trace *tr)
     }
     const size_t mid = st.from + st.n / 2;
     st.rate = stm / stt;
-    st.power = power_between(tr, st.from, last);
-    st.power_half[0] = power_between(tr, st.from, mid);
-    st.power_half[1] = power_between(tr, mid, last);
+    st.belt = mean_of(tr->belt.b, st.from, tr->belt.n);
+    st.belt_half[0] = mean_of(tr->belt.b, st.from, mid);
+    st.belt_half[1] = mean_of(tr->belt.b, mid, tr->belt.n);
     st.chute = mean_of(tr->chute.b, st.from, tr->chute.n);
     return st;
 }
@@ -144,16 +163,15 @@ static int draw_side(cairo_t *cr, const scene *s, double top, double ht, double 
     return 0;
 }
 
-/* The belt's resistance against time, its mean over 50 ms before each
- * sample (the work done over that time over it and the belt's speed), with
- * the chute's push averaged over the same samples, the window's mean and
- * the momentum balance, in the band from y = top, ht high. */
+/* The belt's resistance against time, averaged over 50 ms, with the
+ * chute's push, the window's mean and the momentum balance, in the band
+ * from y = top, ht high. */
 static void draw_force(cairo_t *cr, const scene *s, const conveyor_trace *tr,
                        const steady_state *st, double v_in, double balance, double top, double ht,
                        double wd)
 {
-    const size_t n = tr->work.n;
-    const double *t = tr->work.a;
+    const size_t n = tr->belt.n;
+    const double *t = tr->belt.a;
     const size_t win = (size_t)fmax(1, round(0.05 / s->every));
     double *belt = malloc(n * sizeof *belt), *chute = malloc(n * sizeof *chute);
     if (!belt || !chute) {
@@ -162,9 +180,9 @@ static void draw_force(cairo_t *cr, const scene *s, const conveyor_trace *tr,
     }
     double lo = 0, hi = fmax(balance, 0);
     for (size_t k = 0; k < n; k++) {
-        const size_t from = k >= win ? k - win : 0;
-        belt[k] = k ? power_between(tr, from, k) / s->belt_speed : 0;
-        chute[k] = mean_of(tr->chute.b, from + !!k, k + 1);
+        const size_t from = k + 1 >= win ? k + 1 - win : 0;
+        belt[k] = mean_of(tr->belt.b, from, k + 1);
+        chute[k] = mean_of(tr->chute.b, from, k + 1);
         lo = fmin(lo, fmin(belt[k], chute[k]));
         hi = fmax(hi, fmax(belt[k], chute[k]));
     }
@@ -180,9 +198,8 @@ static void draw_force(cairo_t *cr, const scene *s, const conveyor_trace *tr,
     plot_curve(cr, &a, t, chute, n, grey, 1.5);
     plot_curve(cr, &a, t, belt, n, blue, 2);
     const double kx = l + 20;
-    snprintf(key, sizeof key, "belt's resistance over the window (shaded), mean: %.4f N",
-             st->power / s->belt_speed);
-    plot_line_key(cr, &a, t0, st->power / s->belt_speed, 0, t0, t1,
+    snprintf(key, sizeof key, "belt's resistance over the window (shaded), mean: %.4f N", st->belt);
+    plot_line_key(cr, &a, t0, st->belt, 0, t0, t1,
                   (const double[3]){0.85, 0.2, 0.1}, 0, kx, top + 20, key);
     snprintf(key, sizeof key,
              "momentum balance m' (v - v_in) = %.4f kg/s x (%.3f - %.3f) m/s = %.4f N",
@@ -191,8 +208,7 @@ static void draw_force(cairo_t *cr, const scene *s, const conveyor_trace *tr,
                   top + 42, key);
     cairo_set_source_rgb(cr, blue[0], blue[1], blue[2]);
     cairo_move_to(cr, kx + 38, top + 68);
-    cairo_show_text(cr, "the particles' force on the belt against its motion, mean over 50 ms "
-                        "(its work / v)");
+    cairo_show_text(cr, "the particles' force on the belt against its motion, mean over 50 ms");
     cairo_set_source_rgb(cr, grey[0], grey[1], grey[2]);
     cairo_move_to(cr, kx + 38, top + 88);
     cairo_show_text(cr, "the chute's push on the particles along the belt, mean over 50 ms");
@@ -220,27 +236,22 @@ int conveyor_report(const scene *s, const conveyor_trace *tr, FILE *sum, const c
      * Belt conveyors for loose bulk materials - Basis for calculation and
      * dimensioning. */
     const double v_in = s->feed_along + st.chute / st.rate;
-    const double balance = st.rate * (s->belt_speed - v_in), force = st.power / s->belt_speed;
+    const double balance = st.rate * (s->belt_speed - v_in);
     fprintf(sum,
             "conveyor_window_from_s = %.6g\nconveyor_window_to_s = %.6g\n"
             "conveyor_window_samples = %zu\nbelt_speed_m_s = %.6g\nfeed_rate_kg_s = %.6g\n"
-            "mass_flow_kg_s = %.6g\nbelt_power_W = %.6g\nbelt_force_N = %.6g\n"
-            "belt_force_first_half_N = %.6g\nbelt_force_second_half_N = %.6g\nchute_force_N = %.6g\n"
+            "mass_flow_kg_s = %.6g\nbelt_force_N = %.6g\nbelt_force_first_half_N = %.6g\n"
+            "belt_force_second_half_N = %.6g\nbelt_power_W = %.6g\nchute_force_N = %.6g\n"
             "feed_velocity_m_s = %.6g\nlanding_velocity_m_s = %.6g\nmomentum_balance_N = %.6g\n"
             "belt_force_over_balance = %.4f\n",
             st.n ? tr->mass.a[st.from] : NAN, tr->mass.n ? tr->mass.a[tr->mass.n - 1] : NAN, st.n,
-            s->belt_speed, s->feed_rate, st.rate, st.power, force, st.power_half[0] / s->belt_speed,
-            st.power_half[1] / s->belt_speed, st.chute, s->feed_along, v_in, balance,
-            force / balance);
-    /* the belt's power and force over each interval between samples (from
-     * the start for the first) */
+            s->belt_speed, s->feed_rate, st.rate, st.belt, st.belt_half[0], st.belt_half[1],
+            st.belt * s->belt_speed, st.chute, s->feed_along, v_in, balance, st.belt / balance);
     FILE *f = output_open(dir, "conveyor.csv");
-    fputs("time_s,discharged_kg,belt_work_J,belt_power_W,belt_force_N,chute_force_N\n", f);
-    for (size_t k = 0; k < tr->mass.n; k++) {
-        const double p = k ? power_between(tr, k - 1, k) : tr->work.b[0] / tr->work.a[0];
-        fprintf(f, "%.6g,%.9g,%.9g,%.9g,%.9g,%.9g\n", tr->mass.a[k], tr->mass.b[k],
-                tr->work.b[k] + 0.0, p + 0.0, p / s->belt_speed + 0.0, tr->chute.b[k] + 0.0);
-    }
+    fputs("time_s,discharged_kg,belt_force_N,belt_power_W,chute_force_N\n", f);
+    for (size_t k = 0; k < tr->mass.n; k++)
+        fprintf(f, "%.6g,%.9g,%.9g,%.9g,%.9g\n", tr->mass.a[k], tr->mass.b[k], tr->belt.b[k] + 0.0,
+                tr->belt.b[k] * s->belt_speed + 0.0, tr->chute.b[k] + 0.0);
     output_close(f, "conveyor.csv");
     if (st.n < 3) {
         fprintf(stderr, "demill: %zu samples from %g s on: no steady state and no conveyor.png\n",
@@ -253,7 +264,7 @@ int conveyor_report(const scene *s, const conveyor_trace *tr, FILE *sum, const c
     char title[256];
     snprintf(title, sizeof title,
              "Belt conveyor at %.2f m/s carrying %.3f kg/s: resistance %.3f N, power %.3f W",
-             s->belt_speed, st.rate, force, st.power);
+             s->belt_speed, st.rate, st.belt, st.belt * s->belt_speed);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_set_font_size(cr, 16);
     cairo_move_to(cr, 60, 28);

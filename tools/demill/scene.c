@@ -1367,32 +1367,17 @@ static int conveyor_item(ctx *c, const tree *n, const char *list, int *index)
 
 /* outputs.conveyor: the body holding the chute (none by default), the
  * feed and the outlet, and when the steady state is taken to begin. The
- * belt is the walls with a surface velocity, the same on each; its power
- * is the work the energy account tallies for moving walls, so that no
- * other wall may move, none of the belt's may be a body's (the account
- * leaves their work to the body's terms) and the tally must be on. */
+ * belt is the walls with a surface velocity, the same on each. */
 static int conveyor_of(ctx *c, const tree *t)
 {
     scene *s = c->s;
-    const tree *e, *walls = tree_get(c->root, "walls"), *belt = NULL, *world = tree_get(c->root, "world");
+    const tree *e, *walls = tree_get(c->root, "walls"), *belt = NULL;
     int feed;
     double sv[3] = {0, 0, 0}, v[3] = {0, 0, 0};
     if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_conveyor, 4))
         return -1;
-    if (tree_get(c->root, "drum"))
-        return fail(c, t, "the conveyor's belt is measured by the moving walls' work: no drum");
-    if (world && (e = tree_get(world, "energy_tracking")) && e->kind == TREE_SCALAR &&
-        !strcmp(e->text, "false"))
-        return fail(c, e, "the conveyor's belt is measured by the energy account's wall work: "
-                          "expected energy_tracking true");
     for (size_t k = 0; walls && walls->kind == TREE_SEQ && k < walls->n; k++) {
-        const tree *wl = walls->kid[k], *w = tree_get(wl, "surface_velocity");
-        if (w && tree_get(wl, "body"))
-            return fail(c, w, "a belt on a body: the conveyor measures the belt by the moving walls' "
-                              "work, which leaves out bodies' walls");
-        if (tree_get(wl, "motion") || tree_get(wl, "harmonic"))
-            return fail(c, wl, "the conveyor's belt must be the only moving wall (its power is "
-                               "the moving walls' work)");
+        const tree *w = tree_get(walls->kid[k], "surface_velocity");
         if (!w)
             continue;
         if (numbers(c, w, 3, 3, v, NULL))
