@@ -209,3 +209,22 @@ void plot_curve(cairo_t *cr, const plot_area *a, const double *x, const double *
     cairo_stroke(cr);
     cairo_restore(cr);
 }
+
+void plot_line_key(cairo_t *cr, const plot_area *a, double xc, double yc, double slope, double x0,
+                   double x1, const double rgb[3], int dashed, double kx, double ky,
+                   const char *key)
+{
+    const double x[2] = {x0, x1}, y[2] = {yc + slope * (x0 - xc), yc + slope * (x1 - xc)};
+    if (dashed)
+        cairo_set_dash(cr, (const double[2]){8, 5}, 2, 0);
+    plot_curve(cr, a, x, y, 2, rgb, 2.2);
+    cairo_move_to(cr, kx, ky);
+    cairo_line_to(cr, kx + 30, ky);
+    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+    cairo_set_line_width(cr, 2.2);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, NULL, 0, 0);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_move_to(cr, kx + 38, ky + 4);
+    cairo_show_text(cr, key);
+}

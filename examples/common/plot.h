@@ -74,4 +74,11 @@ void plot_ticks(cairo_t *cr, const plot_area *a);
 void plot_curve(cairo_t *cr, const plot_area *a, const double *x, const double *y, size_t n,
                 const double rgb[3], double width);
 
+/* The straight line through (xc, yc) with the given slope over [x0, x1],
+ * clipped to the area, 2.2 pixels wide in a colour, dashed if asked, and
+ * its key at (kx, ky): a stroke of 30 pixels and the text after it. */
+void plot_line_key(cairo_t *cr, const plot_area *a, double xc, double yc, double slope, double x0,
+                   double x1, const double rgb[3], int dashed, double kx, double ky,
+                   const char *key);
+
 #endif

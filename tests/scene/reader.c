@@ -496,6 +496,19 @@ START_TEST(test_bad)
          "0, 0], normal: [0, 1, 0]}, motion: {velocity: [1, 0, 0]}}\noutputs: {shear: {wall: 0, held: "
          "[box], lid: lid, area: 1}}\nstop: {time: 1}\n",
          NULL, "t.yaml:5: outputs.shear.held.0: expected a body of 'bodies', got 'box'"},
+        {"outputs: {conveyor: {feed: 0, outlet: 0, from: 1}}\nstop: {time: 1}\n", NULL,
+         "t.yaml:1: outputs.conveyor: the conveyor needs a belt: a wall with a surface_velocity"},
+        {"materials: {m: {}}\nwalls:\n  - {material: m, plane: {point: [0, 0, 0], normal: [0, 1, 0]}, "
+         "surface_velocity: [1, 0, 0]}\n  - {material: m, plane: {point: [0, 1, 0], normal: [0, -1, "
+         "0]}, surface_velocity: [2, 0, 0]}\noutputs: {conveyor: {feed: 0, outlet: 0, from: 1}}\n"
+         "stop: {time: 1}\n",
+         NULL,
+         "t.yaml:4: walls.1.surface_velocity: expected the surface velocity of the belt's other "
+         "walls"},
+        {"materials: {m: {}}\nwalls:\n  - {material: m, plane: {point: [0, 0, 0], normal: [0, 1, 0]}, "
+         "surface_velocity: [1, 0, 0]}\noutputs: {conveyor: {feed: 0, outlet: 0, from: 1}}\nstop: "
+         "{time: 1}\n",
+         NULL, "t.yaml:4: outputs.conveyor.feed: expected the index of one of the scene's 0 feeds, got '0'"},
         {"materials: {m: {}}\nstop: {time: 1}\n", "materials.m.restitution=high",
          "--set materials.m.restitution: expected a number in [0, 1], got 'high'"},
         {"world: {}\nstop: {time: 1}\n", "world.gravity=[0, x, 0]",

@@ -66,27 +66,6 @@ static fit fit_window(const discharge_trace *tr, double lo, double hi)
     return f;
 }
 
-/* A line of mass against time through (tc, mc) with the given slope, drawn
- * over [t0, t1] in a colour, dashed if asked, and its key at (kx, ky). */
-static void rate_line(cairo_t *cr, const plot_area *a, double tc, double mc, double slope, double t0,
-                      double t1, const double rgb[3], int dashed, double kx, double ky,
-                      const char *key)
-{
-    const double x[2] = {t0, t1}, y[2] = {mc + slope * (t0 - tc), mc + slope * (t1 - tc)};
-    if (dashed)
-        cairo_set_dash(cr, (const double[2]){8, 5}, 2, 0);
-    plot_curve(cr, a, x, y, 2, rgb, 2.2);
-    cairo_move_to(cr, kx, ky);
-    cairo_line_to(cr, kx + 30, ky);
-    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-    cairo_set_line_width(cr, 2.2);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, NULL, 0, 0);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_move_to(cr, kx + 38, ky + 4);
-    cairo_show_text(cr, key);
-}
-
 static int draw_discharge(const char *dir, const discharge_trace *tr, const fit *f,
                           const double beverloo[2], double orifice)
 {
@@ -107,14 +86,14 @@ static int draw_discharge(const char *dir, const discharge_trace *tr, const fit 
     const double t0 = tr->t[0], t1 = tr->t[tr->n - 1], kx = l + 20;
     snprintf(key, sizeof key, "simulated: %.4f kg/s, fitted where 20-80 %% of the mass is out (shaded)",
              f->slope);
-    rate_line(cr, &a, tc, mc, f->slope, f->from, f->to, (const double[3]){0.85, 0.2, 0.1}, 0, kx,
-              tp + 20, key);
+    plot_line_key(cr, &a, tc, mc, f->slope, f->from, f->to, (const double[3]){0.85, 0.2, 0.1}, 0,
+                  kx, tp + 20, key);
     snprintf(key, sizeof key, "Beverloo with Rose and Tanaka's hopper factor: %.4f kg/s", beverloo[1]);
-    rate_line(cr, &a, tc, mc, beverloo[1], t0, t1, (const double[3]){0.1, 0.55, 0.2}, 1, kx, tp + 42,
-              key);
+    plot_line_key(cr, &a, tc, mc, beverloo[1], t0, t1, (const double[3]){0.1, 0.55, 0.2}, 1, kx,
+                  tp + 42, key);
     snprintf(key, sizeof key, "Beverloo, flat bottom: %.4f kg/s", beverloo[0]);
-    rate_line(cr, &a, tc, mc, beverloo[0], t0, t1, (const double[3]){0.5, 0.5, 0.5}, 1, kx, tp + 64,
-              key);
+    plot_line_key(cr, &a, tc, mc, beverloo[0], t0, t1, (const double[3]){0.5, 0.5, 0.5}, 1, kx,
+                  tp + 64, key);
     cairo_set_source_rgb(cr, 0.13, 0.37, 0.66);
     cairo_move_to(cr, kx + 38, tp + 90);
     cairo_show_text(cr, "mass discharged through the outlet");

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "clumps.h"
+#include "conveyor.h"
 #include "discharge.h"
 #include "series_plot.h"
 #include "drum_plot.h"
@@ -344,6 +345,7 @@ static int run_one(const run_args *a, char **summary)
     const scene_quantity out_mass = {.name = "outlet mass", .body = -1,
                                      .outlet = s.discharge_outlet};
     double mean_diameter = NAN, density = NAN;
+    conveyor_trace conveyor = {0}; /* outputs.conveyor: the outlet's mass, the belt's and chute's forces */
     /* outputs.amplitude: the least and largest values in its window */
     double amp_lo[SCENE_MAX_COLUMNS], amp_hi[SCENE_MAX_COLUMNS];
     for (size_t k = 0; k < s.namp; k++) {
@@ -448,6 +450,8 @@ static int run_one(const run_args *a, char **summary)
         }
         if (s.shear_on)
             shear_sample(&s, &shear, t);
+        if (s.conveyor_on)
+            conveyor_sample(&s, &conveyor, t);
         if (s.discharge_on) {
             series_add(&discharged, t, quantity(&s, &out_mass));
             series_add(&bulk, t, discharge_solid_fraction(&s));
@@ -542,6 +546,11 @@ static int run_one(const run_args *a, char **summary)
         }
         fprintf(sum, "outlet_%zu_particles = %llu\noutlet_%zu_mass_kg = %.6g\n", k, c, k, m);
     }
+    {
+        double end_count;
+        check(demill_world_get(w, DEMILL_WORLD_PARTICLE_COUNT, &end_count), "particles");
+        fprintf(sum, "particles_end = %.0f\n", end_count);
+    }
     if (s.empty_kind)
         fprintf(sum, "emptied_s = %.6g\n", emptied);
     for (size_t k = 0; k < s.namp; k++)
@@ -555,6 +564,8 @@ static int run_one(const run_args *a, char **summary)
         rc = discharge_report(&s, &trace, sum, a->out);
     }
     if (s.shear_on && shear_report(&s, &shear, sum, a->out))
+        rc = -1;
+    if (s.conveyor_on && conveyor_report(&s, &conveyor, sum, a->out))
         rc = -1;
     if (s.steady_on)
         fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
@@ -601,6 +612,7 @@ static int run_one(const run_args *a, char **summary)
     shear_trace_free(&shear);
     for (size_t k = 0; k < s.ncol; k++)
         series_free(&cols[k]);
+    conveyor_free(&conveyor);
     demill_world_destroy(w);
     example_world = NULL;
     tree_free(doc);

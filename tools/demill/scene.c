@@ -1618,7 +1618,8 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
 
 static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
                                         "checkpoint_every", "pictures", "power_by_size",
-                                        "discharge", "amplitude", "shear"};
+                                        "discharge", "amplitude", "shear",
+                                        "conveyor"};
 static const char *const k_amplitude[] = {"of", "window"};
 static const char *const k_discharge[] = {"outlet", "orifice_diameter", "half_angle",
                                           "stagnant_angle", "bulk_region"};
@@ -1713,6 +1714,78 @@ static int discharge_of(ctx *c, const tree *t)
     return 0;
 }
 
+static const char *const k_conveyor[] = {"chute", "feed", "outlet", "from"};
+
+/* The index of an item of the scene's list `list` (feeds, outlets) in n:
+ * 0, or -1 with a message. */
+static int conveyor_item(ctx *c, const tree *n, const char *list, int *index)
+{
+    const tree *l = tree_get(c->root, list);
+    double v = 0;
+    if (number(c, n, 0, 1e9, &v))
+        return -1;
+    if (v != floor(v) || !l || l->kind != TREE_SEQ || v >= (double)l->n)
+        return fail(c, n, "expected the index of one of the scene's %zu %s, got '%s'",
+                    l && l->kind == TREE_SEQ ? l->n : 0, list, n->text);
+    *index = (int)v;
+    return 0;
+}
+
+/* outputs.conveyor: the body holding the chute (none by default), the
+ * feed and the outlet, and when the steady state is taken to begin. The
+ * belt is the walls with a surface velocity, the same on each. */
+static int conveyor_of(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    const tree *e, *walls = tree_get(c->root, "walls"), *belt = NULL;
+    int feed;
+    double sv[3] = {0, 0, 0}, v[3] = {0, 0, 0};
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_conveyor, 4))
+        return -1;
+    for (size_t k = 0; walls && walls->kind == TREE_SEQ && k < walls->n; k++) {
+        const tree *w = tree_get(walls->kid[k], "surface_velocity");
+        if (!w)
+            continue;
+        if (numbers(c, w, 3, 3, v, NULL))
+            return -1;
+        if (belt && (v[0] != sv[0] || v[1] != sv[1] || v[2] != sv[2]))
+            return fail(c, w, "expected the surface velocity of the belt's other walls");
+        belt = w;
+        memcpy(sv, v, sizeof sv);
+    }
+    if (!belt)
+        return fail(c, t, "the conveyor needs a belt: a wall with a surface_velocity");
+    s->belt_speed = sqrt(sv[0] * sv[0] + sv[1] * sv[1] + sv[2] * sv[2]);
+    if (!(s->belt_speed > 0))
+        return fail(c, belt, "expected a belt moving (a surface velocity not 0)");
+    for (int k = 0; k < 3; k++)
+        s->belt_dir[k] = sv[k] / s->belt_speed;
+    s->conveyor_chute = -1;
+    if ((e = tree_get(t, "chute"))) {
+        for (size_t k = 0; e->kind == TREE_SCALAR && k < s->nbody && s->conveyor_chute < 0; k++)
+            if (!strcmp(e->text, s->bodyname[k]))
+                s->conveyor_chute = (int)k;
+        if (s->conveyor_chute < 0)
+            return fail(c, e, "expected a body of 'bodies', got '%s'", kind_name(e));
+    }
+    if (!(e = need(c, t, "feed")) || conveyor_item(c, e, "feeds", &feed))
+        return -1;
+    const tree *f = tree_get(c->root, "feeds")->kid[feed];
+    s->feed_along = 0;
+    if ((e = tree_get(f, "velocity"))) {
+        if (numbers(c, e, 3, 3, v, NULL))
+            return -1;
+        s->feed_along = v[0] * s->belt_dir[0] + v[1] * s->belt_dir[1] + v[2] * s->belt_dir[2];
+    }
+    if (!(e = need(c, f, "mass_rate")) || positive(c, e, &s->feed_rate))
+        return -1;
+    if (!(e = need(c, t, "outlet")) || conveyor_item(c, e, "outlets", &s->conveyor_outlet) ||
+        !(e = need(c, t, "from")) || number(c, e, 0, HUGE_VAL, &s->conveyor_from))
+        return -1;
+    s->conveyor_on = 1;
+    return 0;
+}
+
 static int outputs_section(ctx *c, const tree *t)
 {
 
@@ -1726,10 +1799,11 @@ static int outputs_section(ctx *c, const tree *t)
     s->discharge_on = 0;
     s->namp = 0;
     s->shear_on = 0;
+    s->conveyor_on = 0;
     if (!t)
         return 0;
     const tree *e;
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 10))
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, sizeof k_outputs / sizeof k_outputs[0]))
         return -1;
     if ((e = tree_get(t, "every")) && positive(c, e, &s->every))
         return -1;
@@ -1800,6 +1874,12 @@ static int outputs_section(ctx *c, const tree *t)
         if (c->mode == SCENE_RESTART)
             return fail(c, e, "the shear test is measured from a scene's start, not on a restart");
         if (shear_of(c, e))
+            return -1;
+    }
+    if ((e = tree_get(t, "conveyor"))) {
+        if (c->mode == SCENE_RESTART)
+            return fail(c, e, "the conveyor is measured from a scene's start, not on a restart");
+        if (conveyor_of(c, e))
             return -1;
     }
     return 0;
@@ -1970,6 +2050,7 @@ static const section sections[] = {
     {"outputs.discharge", KEYS(k_discharge)},
     {"outputs.amplitude", KEYS(k_amplitude)},
     {"outputs.shear", KEYS(k_shear)},
+    {"outputs.conveyor", KEYS(k_conveyor)},
     {"stop", KEYS(k_stop)},
     {"stop.steady", KEYS(k_steady)},
 };

@@ -115,6 +115,13 @@ typedef struct scene {
     int lid;                    /* the body that loads the sample */
     double shear_area;          /* the shear plane's area, m^2 */
     double shear_bin;           /* the displacement over which the curve is averaged, m */
+    int conveyor_on;            /* outputs.conveyor: a belt's resistance against the momentum
+                                   balance */
+    int conveyor_chute;         /* the body holding the chute (-1: none) */
+    int conveyor_outlet;        /* the outlet's index */
+    double belt_dir[3], belt_speed; /* the belt walls' surface velocity: its direction, its m/s */
+    double feed_rate, feed_along; /* the feed's kg/s and its velocity along the belt, m/s */
+    double conveyor_from;       /* the steady window's start, s */
 } scene;
 
 /* What scene_build() does with the world. */
