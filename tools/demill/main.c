@@ -15,6 +15,7 @@
 
 #include "discharge.h"
 #include "drum_plot.h"
+#include "janssen.h"
 #include "plot.h"
 #include "run.h"
 #include "scene.h"
@@ -329,6 +330,7 @@ static int run_one(const run_args *a, char **summary)
     const scene_quantity out_mass = {.name = "outlet mass", .body = -1,
                                      .outlet = s.discharge_outlet};
     double mean_diameter = NAN, density = NAN;
+    janssen_acc silo = {0}; /* outputs.janssen: the sums over its window */
     /* outputs.amplitude: the least and largest values in its window */
     double amp_lo[SCENE_MAX_COLUMNS], amp_hi[SCENE_MAX_COLUMNS];
     for (size_t k = 0; k < s.namp; k++) {
@@ -410,6 +412,8 @@ static int run_one(const run_args *a, char **summary)
             series_add(&discharged, t, quantity(&s, &out_mass));
             series_add(&bulk, t, discharge_solid_fraction(&s));
         }
+        if (s.janssen_on && t >= s.stop_time - s.silo_window - 0.5 * s.dt && janssen_sample(&s, &silo))
+            return -1;
         if (csv) {
             for (size_t k = 0; k < s.ncol; k++)
                 fprintf(csv, "%s%.9g", k ? "," : "", quantity(&s, &s.col[k]) + 0.0);
@@ -509,6 +513,8 @@ static int run_one(const run_args *a, char **summary)
                                        mean_diameter, density};
         rc = discharge_report(&s, &trace, sum, a->out);
     }
+    if (s.janssen_on && janssen_report(&s, &silo, sum, a->out))
+        rc = -1;
     if (s.steady_on)
         fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
                 steady(&watched, steady_win, s.steady_tolerance) ? "yes" : "no",
@@ -549,6 +555,7 @@ static int run_one(const run_args *a, char **summary)
     series_free(&watched);
     series_free(&discharged);
     series_free(&bulk);
+    janssen_free(&silo);
     demill_world_destroy(w);
     example_world = NULL;
     tree_free(doc);
