@@ -160,7 +160,7 @@ void janssen_free(janssen_acc *a)
 typedef struct profile {
     size_t n;                /* the bands below the surface */
     double *depth, *wall, *vertical;
-    double fill, k, rho_g, length, sat, floor_stress;
+    double fill, k, rho_g, g, length, sat, floor_stress;
     double zone_depth[2];
 } profile;
 
@@ -241,14 +241,19 @@ static int draw_silo(const char *dir, const profile *p, double diameter, double 
     cairo_rectangle(cr, plot_px(&a, p->fill) - 6, plot_py(&a, p->floor_stress) - 6, 12, 12);
     cairo_fill(cr);
     const double kx = l + 20;
+    cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
+    cairo_rectangle(cr, kx - 8, tp + 6, 640, 138);
+    cairo_fill(cr);
     key_line(cr, kx, tp + 20, blue, 0, 1, "simulated wall normal stress, by bands of height");
-    snprintf(key, sizeof key, "Janssen's wall stress K sigma_v: K = %.3f, mu_w = %.3f measured (shaded zone)",
+    snprintf(key, sizeof key, "Janssen's wall stress K σ_v: K = %.3f and μ_w = %.3f measured in the shaded zone",
              p->k, mu);
     key_line(cr, kx, tp + 42, red, 0, 0, key);
-    key_line(cr, kx, tp + 64, lblue, 0, 1, "simulated vertical stress sigma_v (force balance of the column above)");
-    snprintf(key, sizeof key, "Janssen's sigma_v, saturating at %.0f Pa", p->sat);
+    key_line(cr, kx, tp + 64, lblue, 0, 1, "simulated vertical stress σ_v: the weight above less the wall's support, over the area");
+    snprintf(key, sizeof key, "Janssen's σ_v = ρ_b g D/(4 μ_w K) (1 − exp(−4 μ_w K z/D)), saturating at %.0f Pa", p->sat);
     key_line(cr, kx, tp + 86, green, 0, 0, key);
-    key_line(cr, kx, tp + 108, grey, 1, 0, "hydrostatic rho_b g z, a liquid of the bulk density");
+    snprintf(key, sizeof key, "hydrostatic ρ_b g z: a liquid of the bulk density, ρ_b = %.0f kg/m³",
+             p->rho_g / p->g);
+    key_line(cr, kx, tp + 108, grey, 1, 0, key);
     cairo_rectangle(cr, kx + 9, tp + 124, 12, 12);
     cairo_fill(cr);
     snprintf(key, sizeof key, "the floor's stress: %.0f Pa; Janssen's at the floor: %.0f Pa",
@@ -303,7 +308,7 @@ int janssen_report(const scene *s, const janssen_acc *a, FILE *sum, const char *
     for (size_t k = 0; k < a->nb; k++)
         support += a->shear[k] / n;
     /* the bands below the surface */
-    profile p = {.fill = fill, .k = kr, .rho_g = rho * gn, .length = length, .sat = sat,
+    profile p = {.fill = fill, .k = kr, .rho_g = rho * gn, .g = gn, .length = length, .sat = sat,
                  .floor_stress = floor_stress, .zone_depth = {fill - z[1], fill - z[0]}};
     p.depth = malloc(a->nb * sizeof *p.depth);
     p.wall = malloc(a->nb * sizeof *p.wall);
