@@ -509,6 +509,21 @@ START_TEST(test_bad)
          "surface_velocity: [1, 0, 0]}\noutputs: {conveyor: {feed: 0, outlet: 0, from: 1}}\nstop: "
          "{time: 1}\n",
          NULL, "t.yaml:4: outputs.conveyor.feed: expected the index of one of the scene's 0 feeds, got '0'"},
+#define SILO_WALLS "materials: {m: {}}\nwalls:\n  - {material: m, plane: {point: [0, 0, 0], normal: " \
+                   "[0, 1, 0]}}\n  - {material: m, cylinder: {point: [0, 0, 0], axis: "
+#define SILO_JANSSEN "radius: 0.05, length: 0.5}}\noutputs: {janssen: {wall: 1, floor: 0, band: 0.01, " \
+                     "zone: [0, 0.1], window: 0.1}}\n"
+        {SILO_WALLS "[1, 0, 0], " SILO_JANSSEN "stop: {time: 1}\n", NULL,
+         "t.yaml:5: outputs.janssen.wall: the cylinder's axis is not along gravity"},
+        {SILO_WALLS "[0, 1, 0], " SILO_JANSSEN "stop: {time: 1}\n", "outputs.janssen.wall=0",
+         "--set outputs.janssen.wall: walls.0 is not a cylinder"},
+        {SILO_WALLS "[0, 1, 0], " SILO_JANSSEN "stop: {time: 1}\n", "outputs.janssen.floor=1",
+         "--set outputs.janssen.floor: walls.1 is not a plane or a disc"},
+        {SILO_WALLS "[0, 1, 0], " SILO_JANSSEN "stop: {time: 1}\n", "outputs.janssen.zone=[0.1, 0.1]",
+         "--set outputs.janssen.zone: expected two heights above the floor, 0 <= from < to, more "
+         "than a band apart"},
+        {SILO_WALLS "[0, 1, 0], " SILO_JANSSEN "stop: {empty: {box: [0, 0, 0, 1, 1, 1]}}\n", NULL,
+         "t.yaml:5: outputs.janssen: needs a stop.time (its window ends there)"},
         {"materials: {m: {}}\nstop: {time: 1}\n", "materials.m.restitution=high",
          "--set materials.m.restitution: expected a number in [0, 1], got 'high'"},
         {"world: {}\nstop: {time: 1}\n", "world.gravity=[0, x, 0]",

@@ -18,6 +18,7 @@
 #include "discharge.h"
 #include "series_plot.h"
 #include "drum_plot.h"
+#include "janssen.h"
 #include "plot.h"
 #include "run.h"
 #include "scene.h"
@@ -346,6 +347,7 @@ static int run_one(const run_args *a, char **summary)
                                      .outlet = s.discharge_outlet};
     double mean_diameter = NAN, density = NAN;
     conveyor_trace conveyor = {0}; /* outputs.conveyor: the outlet's mass, the belt's and chute's forces */
+    janssen_acc silo = {0}; /* outputs.janssen: the sums over its window */
     /* outputs.amplitude: the least and largest values in its window */
     double amp_lo[SCENE_MAX_COLUMNS], amp_hi[SCENE_MAX_COLUMNS];
     for (size_t k = 0; k < s.namp; k++) {
@@ -456,6 +458,8 @@ static int run_one(const run_args *a, char **summary)
             series_add(&discharged, t, quantity(&s, &out_mass));
             series_add(&bulk, t, discharge_solid_fraction(&s));
         }
+        if (s.janssen_on && t >= s.stop_time - s.silo_window - 0.5 * s.dt && janssen_sample(&s, &silo))
+            return -1;
         if (csv) {
             for (size_t k = 0; k < s.ncol; k++)
                 fprintf(csv, "%s%.9g", k ? "," : "", quantity(&s, &s.col[k]) + 0.0);
@@ -567,6 +571,8 @@ static int run_one(const run_args *a, char **summary)
         rc = -1;
     if (s.conveyor_on && conveyor_report(&s, &conveyor, sum, a->out))
         rc = -1;
+    if (s.janssen_on && janssen_report(&s, &silo, sum, a->out))
+        rc = -1;
     if (s.steady_on)
         fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
                 steady(&watched, steady_win, s.steady_tolerance) ? "yes" : "no",
@@ -610,6 +616,7 @@ static int run_one(const run_args *a, char **summary)
     series_free(&discharged);
     series_free(&bulk);
     shear_trace_free(&shear);
+    janssen_free(&silo);
     for (size_t k = 0; k < s.ncol; k++)
         series_free(&cols[k]);
     conveyor_free(&conveyor);

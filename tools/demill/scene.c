@@ -1619,7 +1619,7 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
 static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
                                         "checkpoint_every", "pictures", "power_by_size",
                                         "discharge", "amplitude", "shear",
-                                        "conveyor"};
+                                        "conveyor", "janssen"};
 static const char *const k_amplitude[] = {"of", "window"};
 static const char *const k_discharge[] = {"outlet", "orifice_diameter", "half_angle",
                                           "stagnant_angle", "bulk_region"};
@@ -1783,6 +1783,93 @@ static int conveyor_of(ctx *c, const tree *t)
         !(e = need(c, t, "from")) || number(c, e, 0, HUGE_VAL, &s->conveyor_from))
         return -1;
     s->conveyor_on = 1;
+static const char *const k_janssen[] = {"wall", "floor", "band", "zone", "window"};
+
+/* The index of a wall of the scene's `walls` (outputs.janssen.wall, .floor):
+ * its item in *item, 0, or -1 with a message. */
+static int wall_item(ctx *c, const tree *e, const tree **item, int *index)
+{
+    const tree *ws = tree_get(c->root, "walls");
+    double k = 0;
+    if (number(c, e, 0, HUGE_VAL, &k) || k != floor(k) || !ws || ws->kind != TREE_SEQ ||
+        k >= (double)ws->n)
+        return fail(c, e, "expected the index of one of the scene's %zu walls, got '%s'",
+                    ws && ws->kind == TREE_SEQ ? ws->n : 0, kind_name(e));
+    *index = (int)k;
+    *item = ws->kid[*index];
+    return 0;
+}
+
+/* outputs.janssen: the silo's side, a cylinder of `walls` whose axis is
+ * along gravity, the floor it stands on (a plane or a disc across that
+ * axis), the bands' height, the heights above the floor where K, the wall
+ * friction and the bulk density are measured, and the window before
+ * stop.time over which the samples are averaged (the walls' own keys were
+ * checked by the walls section). */
+static int janssen_of(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    const tree *e, *side, *fl, *cyl, *f;
+    double g[3], gn = 0, axis[3], an = 0, len = 0, p[3], fp[3], fnorm[3], cross = 0, fn = 0, dot = 0;
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_janssen, 5))
+        return -1;
+    if (s->dim != 3)
+        return fail(c, t, "the silo's wall stress against Janssen's is for 3D scenes");
+    if (!(e = need(c, t, "wall")) || wall_item(c, e, &side, &s->silo_wall))
+        return -1;
+    if (!(cyl = tree_get(side, "cylinder")))
+        return fail(c, e, "walls.%d is not a cylinder", s->silo_wall);
+    numbers(c, tree_get(cyl, "point"), 3, 3, p, NULL);
+    numbers(c, tree_get(cyl, "axis"), 3, 3, axis, NULL);
+    to_number(tree_get(cyl, "radius"), &s->silo_radius);
+    to_number(tree_get(cyl, "length"), &len);
+    for (int j = 0; j < 3; j++) {
+        demill_world_get(s->w, DEMILL_WORLD_GRAVITY_X + j, &g[j]);
+        gn += g[j] * g[j];
+        an += axis[j] * axis[j];
+    }
+    gn = sqrt(gn);
+    an = sqrt(an);
+    for (int j = 0; j < 3; j++) {
+        const double cj = axis[(j + 1) % 3] * g[(j + 2) % 3] - axis[(j + 2) % 3] * g[(j + 1) % 3];
+        cross += cj * cj;
+        s->silo_up[j] = gn > 0 ? -g[j] / gn : 0;
+    }
+    if (!(gn > 0) || sqrt(cross) > 1e-9 * gn * an)
+        return fail(c, e, "the cylinder's axis is not along gravity");
+    if (!(e = need(c, t, "floor")) || wall_item(c, e, &fl, &s->silo_floor))
+        return -1;
+    if (!(f = tree_get(fl, "plane")) && !(f = tree_get(fl, "disc")))
+        return fail(c, e, "walls.%d is not a plane or a disc", s->silo_floor);
+    numbers(c, tree_get(f, tree_get(f, "point") ? "point" : "centre"), 3, 3, fp, NULL);
+    numbers(c, tree_get(f, "normal"), 3, 3, fnorm, NULL);
+    for (int j = 0; j < 3; j++) {
+        fn += fnorm[j] * fnorm[j];
+        dot += fnorm[j] * s->silo_up[j];
+    }
+    if (fabs(fabs(dot) - sqrt(fn)) > 1e-9 * sqrt(fn))
+        return fail(c, e, "the floor is not across the cylinder's axis");
+    /* the axis's point at the floor's level, and the side's top above it */
+    double level = 0, along = 0;
+    for (int j = 0; j < 3; j++) {
+        level += (fp[j] - p[j]) * s->silo_up[j];
+        along += axis[j] / an * s->silo_up[j];
+    }
+    for (int j = 0; j < 3; j++)
+        s->silo_point[j] = p[j] + level * s->silo_up[j];
+    s->silo_top = fmax(0, len * along) - level;
+    if (!(e = need(c, t, "band")) || positive(c, e, &s->silo_band))
+        return -1;
+    if (!(e = need(c, t, "zone")) || numbers(c, e, 2, 2, s->silo_zone, NULL))
+        return -1;
+    if (!(s->silo_zone[0] >= 0 && s->silo_zone[1] > s->silo_zone[0] + s->silo_band))
+        return fail(c, e, "expected two heights above the floor, 0 <= from < to, more than a band "
+                          "apart");
+    if (!(e = need(c, t, "window")) || positive(c, e, &s->silo_window))
+        return -1;
+    if (!tree_get(tree_get(c->root, "stop"), "time"))
+        return fail(c, t, "needs a stop.time (its window ends there)");
+    s->janssen_on = 1;
     return 0;
 }
 
@@ -1800,6 +1887,7 @@ static int outputs_section(ctx *c, const tree *t)
     s->namp = 0;
     s->shear_on = 0;
     s->conveyor_on = 0;
+    s->janssen_on = 0;
     if (!t)
         return 0;
     const tree *e;
@@ -1882,6 +1970,8 @@ static int outputs_section(ctx *c, const tree *t)
         if (conveyor_of(c, e))
             return -1;
     }
+    if ((e = tree_get(t, "janssen")) && janssen_of(c, e))
+        return -1;
     return 0;
 }
 
@@ -2051,6 +2141,7 @@ static const section sections[] = {
     {"outputs.amplitude", KEYS(k_amplitude)},
     {"outputs.shear", KEYS(k_shear)},
     {"outputs.conveyor", KEYS(k_conveyor)},
+    {"outputs.janssen", KEYS(k_janssen)},
     {"stop", KEYS(k_stop)},
     {"stop.steady", KEYS(k_steady)},
 };

@@ -122,6 +122,14 @@ typedef struct scene {
     double belt_dir[3], belt_speed; /* the belt walls' surface velocity: its direction, its m/s */
     double feed_rate, feed_along; /* the feed's kg/s and its velocity along the belt, m/s */
     double conveyor_from;       /* the steady window's start, s */
+    int janssen_on;             /* outputs.janssen: a silo's wall stress by depth against Janssen's */
+    int silo_wall, silo_floor;  /* the indices in walls of the silo's side (a cylinder) and floor */
+    double silo_point[3];       /* a point of the side's axis at the floor's level, m */
+    double silo_up[3];          /* the axis's unit direction against gravity */
+    double silo_radius, silo_top; /* the side's radius and its top's height above the floor, m */
+    double silo_band;           /* the height of the bands of the wall's profile, m */
+    double silo_zone[2];        /* the heights above the floor where K, mu_w and rho_b are measured */
+    double silo_window;         /* samples over the last silo_window s before stop.time */
 } scene;
 
 /* What scene_build() does with the world. */
