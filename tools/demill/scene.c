@@ -1783,6 +1783,9 @@ static int conveyor_of(ctx *c, const tree *t)
         !(e = need(c, t, "from")) || number(c, e, 0, HUGE_VAL, &s->conveyor_from))
         return -1;
     s->conveyor_on = 1;
+    return 0;
+}
+
 static const char *const k_janssen[] = {"wall", "floor", "band", "zone", "window"};
 
 /* The index of a wall of the scene's `walls` (outputs.janssen.wall, .floor):
