@@ -1185,6 +1185,42 @@ static const struct {
                    {"force_damper", DEMILL_BODY_FORCE_DAMPER},
                    {"force_external", DEMILL_BODY_FORCE_EXTERNAL}};
 
+/* The energy terms of demill_world_energy() as quantities, energy.NAME. */
+static const struct {
+    const char *name;
+    int32_t term;
+} energy_terms[] = {{"kinetic_translational", DEMILL_ENERGY_KINETIC_TRANSLATIONAL},
+                    {"kinetic_rotational", DEMILL_ENERGY_KINETIC_ROTATIONAL},
+                    {"potential", DEMILL_ENERGY_POTENTIAL},
+                    {"elastic_normal", DEMILL_ENERGY_ELASTIC_NORMAL},
+                    {"elastic_tangential", DEMILL_ENERGY_ELASTIC_TANGENTIAL},
+                    {"elastic_rolling", DEMILL_ENERGY_ELASTIC_ROLLING},
+                    {"wall_work", DEMILL_ENERGY_WALL_WORK},
+                    {"dissipated_normal", DEMILL_ENERGY_DISSIPATED_NORMAL},
+                    {"dissipated_tangential", DEMILL_ENERGY_DISSIPATED_TANGENTIAL},
+                    {"dissipated_friction", DEMILL_ENERGY_DISSIPATED_FRICTION},
+                    {"dissipated_rolling", DEMILL_ENERGY_DISSIPATED_ROLLING},
+                    {"dissipated_plastic", DEMILL_ENERGY_DISSIPATED_PLASTIC},
+                    {"dissipated_rolling_viscous", DEMILL_ENERGY_DISSIPATED_ROLLING_VISCOUS},
+                    {"dissipated_local", DEMILL_ENERGY_DISSIPATED_LOCAL},
+                    {"dissipated", DEMILL_ENERGY_DISSIPATED},
+                    {"cohesion", DEMILL_ENERGY_COHESION},
+                    {"total", DEMILL_ENERGY_TOTAL},
+                    {"flow", DEMILL_ENERGY_FLOW},
+                    {"body_kinetic", DEMILL_ENERGY_BODY_KINETIC},
+                    {"body_elastic", DEMILL_ENERGY_BODY_ELASTIC},
+                    {"body_potential", DEMILL_ENERGY_BODY_POTENTIAL},
+                    {"body_dissipated", DEMILL_ENERGY_BODY_DISSIPATED},
+                    {"body_work", DEMILL_ENERGY_BODY_WORK}};
+
+const char *scene_energy_name(int32_t term)
+{
+    for (size_t k = 0; k < sizeof energy_terms / sizeof energy_terms[0]; k++)
+        if (energy_terms[k].term == term)
+            return energy_terms[k].name;
+    return NULL;
+}
+
 /* outlet.N.mass or outlet.N.count: N's index into outlets[] in *index
  * and 1 for count in *count; 0 if n names one, else -1. */
 static int outlet_quantity(const char *n, int *index, int *count)
@@ -1202,8 +1238,9 @@ static int outlet_quantity(const char *n, int *index, int *count)
 
 /* A quantity by name: a world.* or drum.* key of the registry,
  * body.NAME.FIELD_C (FIELD a body field, C x, y or z), outlet.N.mass and
- * outlet.N.count (what outlets[N] has removed since it was made) or
- * particles.centre_C (the particles' centre of mass). */
+ * outlet.N.count (what outlets[N] has removed since it was made),
+ * particles.centre_C (the particles' centre of mass) or energy.NAME (a term
+ * of the energy account, demill_world_energy()). */
 static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
 {
     *q = (scene_quantity){.body = -1, .outlet = -1};
@@ -1218,6 +1255,11 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
             return fail(c, n, "a drum quantity without a drum");
         if (q->key)
             return 0;
+        for (size_t k = 0; k < sizeof energy_terms / sizeof energy_terms[0]; k++)
+            if (!strncmp(n->text, "energy.", 7) && !strcmp(n->text + 7, energy_terms[k].name)) {
+                q->energy = energy_terms[k].term;
+                return 0;
+            }
         if (!strncmp(n->text, "particles.centre_", 17) && n->text[17] && !n->text[18] &&
             strchr("xyz", n->text[17]) && n->text[17] - 'x' < c->s->dim) {
             q->centre = 1;
@@ -1253,7 +1295,8 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
     return fail(c, n, "expected a world.* or drum.* quantity of the parameter registry (e.g. "
                       "world.time, drum.power), body.NAME.FIELD_x (FIELD position, velocity, "
                       "force_particles, force_spring, force_damper or force_external), "
-                      "outlet.N.mass, outlet.N.count or particles.centre_x, got '%s'",
+                      "outlet.N.mass, outlet.N.count, particles.centre_x or energy.NAME "
+                      "(NAME a term of the energy account, e.g. dissipated_normal), got '%s'",
                 kind_name(n));
 }
 
@@ -1265,6 +1308,8 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
         *value = v[q->comp];
         return st;
     }
+    if (q->energy)
+        return demill_world_energy(s->w, q->energy, value);
     if (q->centre) {
         double n, mx = 0, m = 0;
         demill_status st = demill_world_get(s->w, DEMILL_WORLD_PARTICLE_COUNT, &n);
@@ -1303,8 +1348,9 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
 
 static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
                                         "checkpoint_every", "pictures", "power_by_size",
-                                        "discharge", "amplitude"};
+                                        "discharge", "amplitude", "dissipation"};
 static const char *const k_amplitude[] = {"of", "window"};
+static const char *const k_dissipation[] = {"window"};
 static const char *const k_discharge[] = {"outlet", "orifice_diameter", "half_angle",
                                           "stagnant_angle", "bulk_region"};
 
@@ -1360,10 +1406,11 @@ static int outputs_section(ctx *c, const tree *t)
     s->nedges = 0;
     s->discharge_on = 0;
     s->namp = 0;
+    s->dissipation_on = 0;
     if (!t)
         return 0;
     const tree *e;
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 9))
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 10))
         return -1;
     if ((e = tree_get(t, "every")) && positive(c, e, &s->every))
         return -1;
@@ -1428,6 +1475,13 @@ static int outputs_section(ctx *c, const tree *t)
                 return -1;
         s->namp = of->n;
     }
+    if ((e = tree_get(t, "dissipation"))) {
+        const tree *win;
+        if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_dissipation, 1) ||
+            !(win = need(c, e, "window")) || positive(c, win, &s->dissipation_window))
+            return -1;
+        s->dissipation_on = 1;
+    }
     return 0;
 }
 
@@ -1478,6 +1532,8 @@ static int stop_section(ctx *c, const tree *t)
         return fail(c, t, "expected time, revolutions, empty or steady");
     if (s->namp && isnan(s->stop_time))
         return fail(c, t, "outputs.amplitude needs a stop.time (its window ends there)");
+    if (s->dissipation_on && isnan(s->stop_time))
+        return fail(c, t, "outputs.dissipation needs a stop.time (its window ends there)");
     return 0;
 }
 
@@ -1591,6 +1647,7 @@ static const section sections[] = {
     {"outputs", KEYS(k_outputs)},
     {"outputs.discharge", KEYS(k_discharge)},
     {"outputs.amplitude", KEYS(k_amplitude)},
+    {"outputs.dissipation", KEYS(k_dissipation)},
     {"stop", KEYS(k_stop)},
     {"stop.steady", KEYS(k_steady)},
 };
