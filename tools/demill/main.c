@@ -15,6 +15,7 @@
 
 #include "discharge.h"
 #include "dissipation.h"
+#include "repose.h"
 #include "drum_plot.h"
 #include "plot.h"
 #include "run.h"
@@ -515,6 +516,8 @@ static int run_one(const run_args *a, char **summary)
                                        mean_diameter, density};
         rc = discharge_report(&s, &trace, sum, a->out);
     }
+    if (s.repose_on && repose_report(&s, sum, a->out))
+        rc = -1;
     if (s.steady_on)
         fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
                 steady(&watched, steady_win, s.steady_tolerance) ? "yes" : "no",

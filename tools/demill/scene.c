@@ -1348,9 +1348,10 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
 
 static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
                                         "checkpoint_every", "pictures", "power_by_size",
-                                        "discharge", "amplitude", "dissipation"};
+                                        "discharge", "amplitude", "dissipation", "repose"};
 static const char *const k_amplitude[] = {"of", "window"};
 static const char *const k_dissipation[] = {"window"};
+static const char *const k_repose[] = {"centre", "ring"};
 static const char *const k_discharge[] = {"outlet", "orifice_diameter", "half_angle",
                                           "stagnant_angle", "bulk_region"};
 
@@ -1406,11 +1407,11 @@ static int outputs_section(ctx *c, const tree *t)
     s->nedges = 0;
     s->discharge_on = 0;
     s->namp = 0;
-    s->dissipation_on = 0;
+    s->dissipation_on = s->repose_on = 0;
     if (!t)
         return 0;
     const tree *e;
-    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 10))
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_outputs, 11))
         return -1;
     if ((e = tree_get(t, "every")) && positive(c, e, &s->every))
         return -1;
@@ -1481,6 +1482,17 @@ static int outputs_section(ctx *c, const tree *t)
             !(win = need(c, e, "window")) || positive(c, win, &s->dissipation_window))
             return -1;
         s->dissipation_on = 1;
+    }
+    if ((e = tree_get(t, "repose"))) {
+        const tree *ce, *ring;
+        s->repose_ring = 0;
+        if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_repose, 2) ||
+            !(ce = need(c, e, "centre")) || numbers(c, ce, 3, 3, s->repose_centre, NULL) ||
+            ((ring = tree_get(e, "ring")) && positive(c, ring, &s->repose_ring)))
+            return -1;
+        if (s->dim != 3)
+            return fail(c, e, "the angle of repose of an axisymmetric heap is for 3D scenes");
+        s->repose_on = 1;
     }
     return 0;
 }
@@ -1648,6 +1660,7 @@ static const section sections[] = {
     {"outputs.discharge", KEYS(k_discharge)},
     {"outputs.amplitude", KEYS(k_amplitude)},
     {"outputs.dissipation", KEYS(k_dissipation)},
+    {"outputs.repose", KEYS(k_repose)},
     {"stop", KEYS(k_stop)},
     {"stop.steady", KEYS(k_steady)},
 };

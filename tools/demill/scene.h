@@ -77,6 +77,9 @@ typedef struct scene {
     double amp_window;          /* over the last amp_window s before stop.time */
     int dissipation_on;         /* outputs.dissipation: each mechanism's share of the energy */
     double dissipation_window;  /* dissipated over the last window s before stop.time */
+    int repose_on;              /* outputs.repose: the angle of repose of a heap */
+    double repose_centre[3];    /* a point of the heap's vertical axis on the floor, m */
+    double repose_ring;         /* the rings' width, m (0: the particles' mean diameter) */
 } scene;
 
 /* What scene_build() does with the world. */
