@@ -110,7 +110,8 @@ int dissipation_draw_sweep(const char *dir, const char *key, char *const *values
     const int wd = 1000, ht = 600, l = 80, rt = 250, tp = 60, bt = 60;
     cairo_surface_t *s;
     cairo_t *cr = plot_canvas(wd, ht, 14, &s);
-    const plot_area a = {l, tp, wd - l - rt, ht - tp - bt, x0, x1, 0, 100};
+    const double pad = 0.05 * (x1 - x0);
+    const plot_area a = {l, tp, wd - l - rt, ht - tp - bt, x0 - pad, x1 + pad, 0, 100};
     plot_ticks(cr, &a);
     static const double colours[NMECH][3] = {{0.55, 0.35, 0.2},  {0.13, 0.37, 0.66},
                                              {0.1, 0.6, 0.3},    {0.6, 0.3, 0.65},
@@ -128,6 +129,7 @@ int dissipation_draw_sweep(const char *dir, const char *key, char *const *values
         for (size_t r = 0; r < n; r++)
             y[r] = 100 * summary_value(summaries[r], name);
         plot_curve(cr, &a, x, y, n, colours[k], 2.2);
+        cairo_set_source_rgb(cr, colours[k][0], colours[k][1], colours[k][2]);
         for (size_t r = 0; r < n; r++)
             if (isfinite(y[r])) {
                 cairo_arc(cr, plot_px(&a, x[r]), plot_py(&a, y[r]), 4, 0, 2 * PI);
