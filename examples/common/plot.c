@@ -188,8 +188,10 @@ void plot_ticks(cairo_t *cr, const plot_area *a)
     }
     for (double y = ceil(a->y0 / dy) * dy; y <= a->y1 + 1e-12; y += dy) {
         snprintf(label, sizeof label, "%g", fabs(y) < 1e-9 * dy ? 0.0 : y);
-        plot_grid(cr, a->l, plot_py(a, y), right, plot_py(a, y), a->l - 45, plot_py(a, y) + 4,
-                  label);
+        cairo_text_extents_t e; /* right-aligned, clear of the frame */
+        cairo_text_extents(cr, label, &e);
+        plot_grid(cr, a->l, plot_py(a, y), right, plot_py(a, y), a->l - 8 - e.x_advance,
+                  plot_py(a, y) + 4, label);
     }
 }
 

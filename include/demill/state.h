@@ -139,7 +139,8 @@ DEMILL_API demill_status demill_world_load_buffer(demill_world *world, const voi
  *  DEMILL_KIND_WALL (the walls added with demill_wall_add_plane(), in the
  *  order of their slots: a new wall may take the slot of a removed one; the
  *  drum's own surfaces are not walls), DEMILL_KIND_DRUM (none or one),
- *  DEMILL_KIND_BODY (in the order of their slots, as walls),
+ *  DEMILL_KIND_FEED and DEMILL_KIND_OUTLET (in the order of their slots,
+ *  as walls), DEMILL_KIND_BODY (in the order of their slots, as walls),
  *  DEMILL_KIND_TEMPLATE (in the order they were made) or DEMILL_KIND_CLUMP
  *  (in the order of their slots: a new clump may take the slot of a
  *  removed one).

@@ -31,6 +31,7 @@ from .errors import *  # noqa: F403 - the exceptions
 from .flows import Feed, FeedTotals, Outlet, OutletTotals
 from .grinding import Grinding
 from .objects import Body, Contacts, Material, Pair, Particle, Particles, Wall, WallLoads
+from .scene import SceneError, run_scene, scene_program
 from .state import Snapshot, VtkSeries
 from .world import Progress, TimeStep, World
 
@@ -41,7 +42,7 @@ __all__ = (constants.__all__ + errors.__all__ + [
     "Drum", "Lifter", "Feed", "FeedTotals", "Outlet", "OutletTotals",
     "Snapshot", "VtkSeries", "Grinding", "Progress", "TimeStep", "ParamInfo", "library_path",
     "version", "version_number", "check_version", "id_kind", "param_info", "particle_field_size",
-    "contact_field_size", "strerror"])
+    "contact_field_size", "strerror", "SceneError", "run_scene", "scene_program"])
 
 
 def library_path():

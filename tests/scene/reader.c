@@ -332,6 +332,11 @@ START_TEST(test_bad)
          NULL, "t.yaml:3: walls.0.plane: normal has zero length"},
         {"outputs: {columns: [drum.power]}\nstop: {time: 1}\n", NULL,
          "t.yaml:1: outputs.columns.0: a drum quantity without a drum"},
+        {"outputs: {pictures: [series]}\nstop: {time: 1}\n", NULL,
+         "t.yaml:1: outputs.pictures.0: the series picture draws outputs.columns, which are not "
+         "given"},
+        {"outputs: {pictures: [seris]}\nstop: {time: 1}\n", NULL,
+         "t.yaml:1: outputs.pictures.0: expected charge, power or series, got 'seris'"},
         {"outputs: {columns: [outlet.0.mass]}\nstop: {time: 1}\n", NULL,
          "t.yaml:1: outputs.columns.0: 'outlet.0.mass': the scene has 0 outlets"},
         {"outputs: {columns: [outlet.0.weight]}\nstop: {time: 1}\n", NULL,

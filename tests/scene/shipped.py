@@ -5,11 +5,12 @@ stops comes first) and must run to it, writing summary.txt whose
 simulated_s is that time or later by less than one sample (the run stops at
 a sample: outputs.every, at most 1 ms in these scenes), with particles in
 the world; the progress bar of a scene without a drum shows no
-revolutions.
+revolutions; every picture its outputs.pictures names is drawn.
 
 usage: shipped.py DEMILL SCENES_DIR WORK_DIR"""
 
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -24,7 +25,10 @@ def main():
     for name in names:
         out = os.path.join(work, name[:-5])
         with open(os.path.join(scenes, name)) as f:
-            has_drum = any(line.startswith("drum:") for line in f)
+            text = f.read()
+        has_drum = any(line.startswith("drum:") for line in text.splitlines())
+        pictures = [p.strip() for m in re.findall(r"^\s*pictures:\s*\[([^\]]*)\]", text, re.M)
+                    for p in m.split(",")]
         run = subprocess.run([demill, "run", os.path.join(scenes, name), "--out", out,
                               "--set", "stop={time: 0.002}", "--set", "outputs.vtk_every=0"],
                              check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
@@ -39,6 +43,8 @@ def main():
         t = float(s["simulated_s"])
         assert 0.002 - 0.5 * dt <= t < 0.003, (name, t)
         assert int(s["particles"]) > 0, (name, s["particles"])
+        for p in pictures:
+            assert os.path.getsize(os.path.join(out, p + ".png")) > 0, (name, p)
         print(f"{name}: {s['steps']} steps of {s['particles']} particles to "
               f"{s['simulated_s']} s")
     print(f"{len(names)} shipped scenes run")

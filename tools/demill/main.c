@@ -16,6 +16,7 @@
 #include "discharge.h"
 #include "dissipation.h"
 #include "repose.h"
+#include "series_plot.h"
 #include "drum_plot.h"
 #include "plot.h"
 #include "run.h"
@@ -228,6 +229,27 @@ static int steady(const series *q, size_t win, double tol)
     return fabs(b - a) <= tol * fabs(b);
 }
 
+/* pictures: series: every column but the world's time against the time
+ * (series_plot.c). 0, or -1 with a message on stderr. */
+static int draw_series(const scene *s, const series *cols, const char *scene_path,
+                       const char *dir)
+{
+    series_panel p[SCENE_MAX_COLUMNS];
+    size_t np = 0;
+    for (size_t k = 0; k < s->ncol; k++)
+        if (s->col[k].key != DEMILL_WORLD_TIME)
+            p[np++] = (series_panel){s->col[k].name, scene_quantity_unit(&s->col[k]), cols[k].b};
+    if (!s->ncol || cols[0].n < 2 || !np) {
+        fprintf(stderr, "demill: %zu samples of %zu columns: no series.png\n",
+                s->ncol ? cols[0].n : 0, np);
+        return 0;
+    }
+    char title[600];
+    snprintf(title, sizeof title, "libdemill %s: the time series, one sample every %g s",
+             scene_path, s->every);
+    return series_plot(dir, title, cols[0].a, cols[0].n, p, np);
+}
+
 /* Runs one scene into a.out; the summary's text goes to *summary (the
  * caller frees it). 0, or -1 with a message on stderr. */
 static int run_one(const run_args *a, char **summary)
@@ -325,6 +347,7 @@ static int run_one(const run_args *a, char **summary)
     if (turning && s.speed_set)
         check(demill_drum_set(w, drum, s.speed_key, s.speed_value), "the drum's speed");
     series watched = {0}; /* the steady stop's quantity */
+    series cols[SCENE_MAX_COLUMNS] = {{0}}; /* pictures: series: time and each column */
     /* outputs.discharge: time and the outlet's mass; time and the bed's
      * solid fraction; the particles' mean diameter and density now */
     series discharged = {0}, bulk = {0};
@@ -420,6 +443,8 @@ static int run_one(const run_args *a, char **summary)
                 fprintf(csv, "%s%.9g", k ? "," : "", quantity(&s, &s.col[k]) + 0.0);
             fputc('\n', csv);
         }
+        for (size_t k = 0; k < s.ncol && s.series_png; k++)
+            series_add(&cols[k], t, quantity(&s, &s.col[k]));
         uint64_t step_count;
         {
             double sc;
@@ -550,6 +575,8 @@ static int run_one(const run_args *a, char **summary)
                 rc = -1;
         }
     }
+    if (s.series_png && draw_series(&s, cols, a->scene_path, a->out))
+        rc = -1;
     printf("demill: done in %.1f s, t = %.4g s; results in %s/\n", now() - t_wall0, t, a->out);
     if (isfinite(mean_power))
         printf("        mean power over the last revolution %.4f W\n", mean_power);
@@ -558,6 +585,8 @@ static int run_one(const run_args *a, char **summary)
     series_free(&watched);
     series_free(&discharged);
     series_free(&bulk);
+    for (size_t k = 0; k < s.ncol; k++)
+        series_free(&cols[k]);
     demill_world_destroy(w);
     example_world = NULL;
     tree_free(doc);

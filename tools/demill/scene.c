@@ -1171,6 +1171,14 @@ static int outlets_section(ctx *c, const tree *t)
             return -1;
         c->s->noutlets = c->mode == SCENE_BUILD ? k + 1 : 0;
     }
+    if (c->mode == SCENE_RESTART) {
+        /* the checkpoint's outlets, made from this list in its order */
+        size_t have = 0;
+        if (demill_world_ids(c->s->w, DEMILL_KIND_OUTLET, c->s->outlet, SCENE_MAX_OUTLETS,
+                             &have) != DEMILL_OK || have != t->n)
+            return fail(c, t, "the checkpoint has %zu outlets, the scene %zu", have, t->n);
+        c->s->noutlets = have;
+    }
     return 0;
 }
 
@@ -1268,9 +1276,6 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
         }
         if (!outlet_quantity(n->text, &q->outlet, &q->outlet_count)) {
             const tree *o = tree_get(c->root, "outlets");
-            if (c->mode == SCENE_RESTART)
-                return fail(c, n, "an outlet's quantity on a restart (the checkpoint's outlets "
-                                  "are not the scene's)");
             if (!o || o->kind != TREE_SEQ || (size_t)q->outlet >= o->n)
                 return fail(c, n, "'%s': the scene has %zu outlets", n->text,
                             o && o->kind == TREE_SEQ ? o->n : 0);
@@ -1298,6 +1303,19 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
                       "outlet.N.mass, outlet.N.count, particles.centre_x or energy.NAME "
                       "(NAME a term of the energy account, e.g. dissipated_normal), got '%s'",
                 kind_name(n));
+}
+
+const char *scene_quantity_unit(const scene_quantity *q)
+{
+    if (q->body >= 0)
+        return q->field == DEMILL_BODY_POSITION ? "m" : q->field == DEMILL_BODY_VELOCITY ? "m/s" : "N";
+    if (q->centre)
+        return "m";
+    if (q->outlet >= 0)
+        return q->outlet_count ? "1" : "kg";
+    if (q->energy)
+        return "J";
+    return demill_param_unit(q->key);
 }
 
 demill_status scene_quantity_read(const scene *s, const scene_quantity *q, double *value)
@@ -1403,7 +1421,7 @@ static int outputs_section(ctx *c, const tree *t)
     s->csv_file[0] = '\0';
     s->ncol = 0;
     s->vtk_every = s->checkpoint_every = 0;
-    s->charge_png = s->power_png = 0;
+    s->charge_png = s->power_png = s->series_png = 0;
     s->nedges = 0;
     s->discharge_on = 0;
     s->namp = 0;
@@ -1434,15 +1452,21 @@ static int outputs_section(ctx *c, const tree *t)
     }
     if ((e = tree_get(t, "pictures"))) {
         if (e->kind != TREE_SEQ)
-            return fail(c, e, "expected a list of pictures (charge, power), got %s", kind_name(e));
+            return fail(c, e, "expected a list of pictures (charge, power, series), got %s",
+                        kind_name(e));
         for (size_t k = 0; k < e->n; k++) {
             const tree *q = e->kid[k];
             if (q->kind == TREE_SCALAR && !strcmp(q->text, "charge"))
                 s->charge_png = 1;
             else if (q->kind == TREE_SCALAR && !strcmp(q->text, "power"))
                 s->power_png = 1;
-            else
-                return fail(c, q, "expected charge or power, got '%s'", kind_name(q));
+            else if (q->kind == TREE_SCALAR && !strcmp(q->text, "series")) {
+                if (!tree_get(t, "columns"))
+                    return fail(c, q, "the series picture draws outputs.columns, which are not given");
+                s->series_png = 1;
+                continue;
+            } else
+                return fail(c, q, "expected charge, power or series, got '%s'", kind_name(q));
             if (!tree_get(c->root, "drum"))
                 return fail(c, q, "the %s picture needs a drum", q->text);
         }
@@ -1457,12 +1481,8 @@ static int outputs_section(ctx *c, const tree *t)
                 return fail(c, e->kid[k], "expected increasing diameters > 0, got '%s'",
                             e->kid[k]->text);
     }
-    if ((e = tree_get(t, "discharge"))) {
-        if (c->mode == SCENE_RESTART)
-            return fail(c, e, "the discharge is measured from a scene's start, not on a restart");
-        if (discharge_of(c, e))
-            return -1;
-    }
+    if ((e = tree_get(t, "discharge")) && discharge_of(c, e))
+        return -1;
     if ((e = tree_get(t, "amplitude"))) {
         const tree *of, *win;
         if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_amplitude, 2) ||

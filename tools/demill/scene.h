@@ -47,7 +47,7 @@ typedef struct scene {
     int32_t speed_key;          /* the drum's speed key given, 0 for none */
     double speed_value;
     int speed_set;              /* the speed was given with --set */
-    size_t noutlets;            /* the outlets made (none on a restart) */
+    size_t noutlets;            /* the outlets made, or the checkpoint's on a restart */
     demill_id outlet[SCENE_MAX_OUTLETS];
     double stop_time, stop_revolutions; /* NAN when not given */
     int32_t empty_kind;         /* stop when this region holds no particle: DEMILL_REGION_BOX or
@@ -62,6 +62,7 @@ typedef struct scene {
     scene_quantity col[SCENE_MAX_COLUMNS];
     double vtk_every, checkpoint_every; /* s, 0 for none */
     int charge_png, power_png;
+    int series_png;             /* pictures: series: the columns against time */
     size_t nedges;              /* power by size class: nedges + 1 classes */
     double edges[SCENE_MAX_EDGES];
     int discharge_on;           /* outputs.discharge: an outlet's rate against Beverloo's */
@@ -102,6 +103,9 @@ int scene_region_contains(int32_t kind, const double *r, int dim, const double p
  * "FILE:LINE: KEY: what was wrong" in err and no world left (except in
  * SCENE_RESTART mode, where s->w stays the caller's). */
 int scene_build(scene *s, const tree *root, const char *dir, int mode, char *err, size_t errlen);
+
+/* The unit of a quantity, in SI ("1" for a pure number). */
+const char *scene_quantity_unit(const scene_quantity *q);
 
 /* The value of a quantity in the scene's world: DEMILL_OK or the API's
  * status. */
