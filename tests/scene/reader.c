@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "clumps.h"
 #include "scene.h"
 #include "testutil.h"
 
@@ -242,6 +243,94 @@ START_TEST(test_auto_time_step)
 }
 END_TEST
 
+/* An ASCII STL file of the regular octahedron of vertices (+-5, 0, 0), (0,
+ * +-5, 0), (0, 0, +-5) mm, wound counter-clockwise seen from outside. */
+static void write_octahedron(const char *name)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs("solid octahedron\n", f);
+    for (int o = 0; o < 8; o++) {
+        const int sx = o & 1 ? -5 : 5, sy = o & 2 ? -5 : 5, sz = o & 4 ? -5 : 5;
+        const int v[3][3] = {{sx, 0, 0}, {0, sy, 0}, {0, 0, sz}};
+        const int odd = (sx < 0) ^ (sy < 0) ^ (sz < 0); /* a mirrored octant turns the winding */
+        fputs(" facet normal 0 0 0\n  outer loop\n", f);
+        for (int k = 0; k < 3; k++) {
+            const int *p = v[odd && k ? 3 - k : k];
+            fprintf(f, "   vertex %d %d %d\n", p[0], p[1], p[2]);
+        }
+        fputs("  endloop\n endfacet\n", f);
+    }
+    fputs("endsolid octahedron\n", f);
+    fclose(f);
+}
+
+/* clumps: a template of two spheres, one of a mesh, a fill of one template
+ * by count and a mix of both by mass */
+START_TEST(test_clumps)
+{
+    write_octahedron("oct.stl");
+    tree *t = parse("materials: {steel: {density: 7800}}\n"
+                    "pairs: [{materials: [steel, steel], normal: hertz}]\n"
+                    "drum: {material: steel, diameter: 0.3, length: 0.1}\n"
+                    "templates:\n"
+                    "  pair: {material: steel, spheres: [[0, 0, 0, 0.005], [0.006, 0, 0, 0.004]]}\n"
+                    "  oct:\n"
+                    "    material: steel\n"
+                    "    stl: {file: oct.stl, scale: 0.001, spheres: 3, cells: 32}\n"
+                    "particles:\n"
+                    "  - {template: pair, region: {box: [-0.05, 0.07, -0.04, 0.05, 0.12, 0.04]},\n"
+                    "     count: 10, seed: 4}\n"
+                    "  - {template: [[pair, 0.6], [oct, 0.4]], region: drum, mass: 0.5}\n"
+                    "stop: {time: 1}\n");
+    scene s;
+    char err[1024];
+    ck_assert_msg(!scene_build(&s, t, dir, SCENE_BUILD, err, sizeof err), "%s", err);
+    demill_world *w = s.w;
+    ck_assert_uint_eq(s.ntmpl, 2);
+    ck_assert_str_eq(s.tmplname[1], "oct");
+    /* two spheres of radii a, b, centres d apart: their volumes less the
+     * lens, pi (a + b - d)^2 (d^2 + 2 d (a + b) - 3 (a - b)^2) / (12 d)
+     * (Weisstein, Sphere-Sphere Intersection, MathWorld) */
+    const double a = 0.005, b = 0.004, d = 0.006, rho = 7800;
+    const double lens = M_PI * (a + b - d) * (a + b - d) *
+                        (d * d + 2 * d * (a + b) - 3 * (a - b) * (a - b)) / (12 * d);
+    const double m_pair = rho * (4 * M_PI / 3 * (a * a * a + b * b * b) - lens);
+    double m_oct, v;
+    DM_OK(w, demill_clump_template_get(w, s.tmpl[0], DEMILL_TEMPLATE_MASS, &v));
+    ck_assert_msg(fabs(v / m_pair - 1) < 1e-12, "pair: %.17g against %.17g", v, m_pair);
+    /* the octahedron's volume, 4/3 (5 mm)^3, read at scale 0.001 */
+    DM_OK(w, demill_clump_template_get(w, s.tmpl[1], DEMILL_TEMPLATE_MESH_VOLUME, &v));
+    ck_assert_msg(fabs(v / (4.0 / 3 * 125e-9) - 1) < 1e-12, "octahedron: %.17g m^3", v);
+    DM_OK(w, demill_clump_template_get(w, s.tmpl[1], DEMILL_TEMPLATE_MASS, &m_oct));
+    /* the count exactly; the mix's mass in whole clumps of each, the
+     * nearest number to its share */
+    ck_assert_uint_eq(s.tmpl_clumps[0], 10 + (size_t)lround(0.3 / m_pair));
+    ck_assert_uint_eq(s.tmpl_clumps[1], (size_t)lround(0.2 / m_oct));
+    size_t nc, n_oct_members;
+    DM_OK(w, demill_world_ids(w, DEMILL_KIND_CLUMP, NULL, 0, &nc));
+    ck_assert_uint_eq(nc, s.tmpl_clumps[0] + s.tmpl_clumps[1]);
+    DM_OK(w, demill_clump_template_spheres(w, s.tmpl[1], NULL, NULL, 0, &n_oct_members));
+    DM_OK(w, demill_world_get(w, DEMILL_WORLD_PARTICLE_COUNT, &v));
+    ck_assert_double_eq(v, 2 * s.tmpl_clumps[0] + n_oct_members * s.tmpl_clumps[1]);
+    /* the charge's mass: each clump once */
+    double mass, centre[3];
+    DM_OK(w, clumps_charge(w, &mass, centre));
+    const double want = s.tmpl_clumps[0] * m_pair + s.tmpl_clumps[1] * m_oct;
+    ck_assert_msg(fabs(mass / want - 1) < 1e-12, "charge %.17g kg against %.17g", mass, want);
+    demill_world_destroy(w);
+    /* demill check makes no template and reads no STL file */
+    tree_set(t, "templates.oct.stl.file", "missing.stl", err, sizeof err);
+    ck_assert_msg(!scene_build(&s, t, dir, SCENE_CHECK, err, sizeof err), "%s", err);
+    ck_assert_uint_eq(s.tmpl[0], DEMILL_ID_NONE);
+    ck_assert_uint_eq(s.tmpl[1], DEMILL_ID_NONE);
+    demill_world_destroy(s.w);
+    tree_free(t);
+}
+END_TEST
+
 /* --set replaces a scalar, a list item and a whole list, and adds a key */
 START_TEST(test_set)
 {
@@ -353,6 +442,44 @@ START_TEST(test_bad)
         {"outputs: {amplitude: {of: [world.time], window: 1}}\nstop: {steady: {quantity: "
          "world.time, window: 1, tolerance: 1}}\n",
          NULL, "t.yaml:2: stop: outputs.amplitude needs a stop.time (its window ends there)"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m, sphere: [[0, 0, 0, 1]]}}\nstop: {time: 1}\n",
+         NULL, "t.yaml:2: templates.r.sphere: unknown key (did you mean 'spheres'?)"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m}}\nstop: {time: 1}\n", NULL,
+         "t.yaml:2: templates.r: expected either spheres or stl"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m, spheres: [[0, 0, 1]]}}\nstop: {time: 1}\n",
+         NULL, "t.yaml:2: templates.r.spheres.0: expected a list of 4 numbers, got a list"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m, spheres: [[0, 0, 0, 0]]}}\nstop: {time: 1}\n",
+         NULL, "t.yaml:2: templates.r.spheres: radius 0 = 0 must be > 0"},
+        {"world: {dimension: 2}\nmaterials: {m: {}}\ntemplates: {r: {material: m, spheres: [[0, 0, 1, "
+         "1]]}}\nstop: {time: 1}\n",
+         NULL, "t.yaml:3: templates.r.spheres: centre 0 has z = 1 but the world is 2D"},
+        {"world: {dimension: 2}\nmaterials: {m: {}}\ntemplates: {r: {material: m, stl: {file: r.stl, "
+         "spheres: 5}}}\nstop: {time: 1}\n",
+         NULL, "t.yaml:3: templates.r.stl: a template from a mesh needs a 3D world"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m, stl: {file: r.stl, spheres: 2.5}}}\n"
+         "stop: {time: 1}\n",
+         NULL, "t.yaml:2: templates.r.stl.spheres: expected a whole number in [1, 1e+06], got '2.5'"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m, stl: {file: r.stl, spheres: 5, cells: 300}}}\n"
+         "stop: {time: 1}\n",
+         NULL, "t.yaml:2: templates.r.stl.cells: expected a whole number in [4, 256], got '300'"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m, spheres: [[0, 0, 0, 0.01]]}}\nparticles:\n"
+         "  - {template: q, region: {box: [0, 0, 0, 1, 1, 1]}, count: 2}\nstop: {time: 1}\n",
+         NULL, "t.yaml:4: particles.0.template: expected a template of 'templates' (r), got 'q'"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m, spheres: [[0, 0, 0, 0.01]]}}\nparticles:\n"
+         "  - {template: r, material: m, region: {box: [0, 0, 0, 1, 1, 1]}, count: 2}\nstop: {time: 1}\n",
+         NULL, "t.yaml:4: particles.0: a fill of clumps has no material, sizes or csv: its templates "
+               "give them"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m, spheres: [[0, 0, 0, 0.01]]}}\nparticles:\n"
+         "  - {template: [[r, 0.5], [r, 0.5]], region: {box: [0, 0, 0, 1, 1, 1]}, count: 2}\n"
+         "stop: {time: 1}\n",
+         NULL, "t.yaml:4: particles.0.template.1.0: template 'r' given twice"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m, spheres: [[0, 0, 0, 0.01]]}}\nparticles:\n"
+         "  - {template: [[r, 0]], region: {box: [0, 0, 0, 1, 1, 1]}, mass: 2}\nstop: {time: 1}\n",
+         NULL, "t.yaml:4: particles.0.template: the mass fractions sum to 0"},
+        {"materials: {m: {}}\ntemplates: {r: {material: m, spheres: [[0, 0, 0, 0.3]]}}\nparticles:\n"
+         "  - {template: r, region: {box: [0, 0, 0, 1, 1, 1]}, count: 20}\nstop: {time: 1}\n",
+         NULL, "t.yaml:4: particles.0.template: only 1 of 20 clumps fit in the region: no free place "
+               "among 4096 candidates"},
         {"materials: {m: {}}\nstop: {time: 1}\n", "materials.m.restitution=high",
          "--set materials.m.restitution: expected a number in [0, 1], got 'high'"},
         {"world: {}\nstop: {time: 1}\n", "world.gravity=[0, x, 0]",
@@ -418,6 +545,7 @@ int main(void)
     tcase_add_test(tc, test_auto_time_step);
     tcase_add_test(tc, test_drum);
     tcase_add_test(tc, test_2d);
+    tcase_add_test(tc, test_clumps);
     tcase_add_test(tc, test_bad);
     tcase_add_test(tc, test_keys);
     suite_add_tcase(s, tc);

@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "clumps.h"
 #include "discharge.h"
 #include "dissipation.h"
 #include "repose.h"
@@ -292,19 +293,8 @@ static int run_one(const run_args *a, char **summary)
     check(demill_world_get(w, DEMILL_WORLD_TIME, &t), "time");
     check(demill_world_get(w, DEMILL_WORLD_PARTICLE_COUNT, &n_d), "particles");
     const size_t n = (size_t)n_d;
-    double mass = 0;
-    if (n) {
-        double *m = malloc(n * sizeof *m);
-        size_t count;
-        if (!m) {
-            fprintf(stderr, "demill: out of memory\n");
-            return -1;
-        }
-        check(demill_particles_read(w, DEMILL_PARTICLE_MASS, m, n, &count), "masses");
-        for (size_t k = 0; k < n; k++)
-            mass += m[k];
-        free(m);
-    }
+    double mass, centre[3];
+    check(clumps_charge(w, &mass, centre), "the charge's mass");
     if (drum) {
         critical = drum_value(w, drum, DEMILL_DRUM_CRITICAL_SPEED);
         omega = s.speed_key == DEMILL_DRUM_SPEED       ? s.speed_value
@@ -325,6 +315,7 @@ static int run_one(const run_args *a, char **summary)
     const uint64_t total_steps = (uint64_t)fmax(1, ceil((end - t) / s.dt));
     fprintf(stderr, "demill: %s, %dD, %zu particles (%.4g kg), time step %g s, about %llu steps\n",
             a->scene_path, s.dim, n, mass, s.dt, (unsigned long long)total_steps);
+    clumps_print(&s, stderr);
 
     FILE *csv = NULL;
     if (*s.csv_file) {
@@ -485,6 +476,7 @@ static int run_one(const run_args *a, char **summary)
     fprintf(sum, "scene = %s\ndim = %d\nparticles = %zu\nmass_kg = %.6g\nsteps = %llu\n"
                  "time_step_s = %g\nsimulated_s = %.6g\n",
             a->scene_path, s.dim, n, mass, (unsigned long long)steps, s.dt, t);
+    clumps_report(&s, sum);
     const double mean_power = drum ? drum_value(w, drum, DEMILL_DRUM_POWER_MEAN) : NAN;
     if (drum) {
         fprintf(sum, "speed_rad_s = %.6g\ncritical_speed_rad_s = %.6g\n"

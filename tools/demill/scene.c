@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "clumps.h"
 #include "scene.h"
 
 #define MAX_NAMES 128
@@ -304,7 +305,8 @@ static int applies(const ctx *c, const tree *n)
 /* ---- sections ------------------------------------------------------------------ */
 
 static const char *const top_keys[] = {"world", "materials", "pairs", "particles", "walls",
-                                       "drum", "bodies", "feeds", "outlets", "outputs", "stop"};
+                                       "drum", "bodies", "feeds", "outlets", "outputs", "stop",
+                                       "templates"};
 
 static int material_index(ctx *c, const tree *n, size_t *at)
 {
@@ -724,8 +726,272 @@ out:
     return rc;
 }
 
+/* ---- clumps: templates and their fills ------------------------------------------ */
+
+static const char *const k_templates[] = {"material", "spheres", "stl"};
+static const char *const k_template_stl[] = {"file", "scale", "spheres", "cells"};
+
+/* Whether n or a node below it was given with --set. */
+static int set_within(const tree *n)
+{
+    if (n->line == 0)
+        return 1;
+    for (size_t k = 0; k < n->n; k++)
+        if (set_within(n->kid[k]))
+            return 1;
+    return 0;
+}
+
+/* A whole number in [lo, hi]. */
+static int whole(ctx *c, const tree *n, double lo, double hi, double *out)
+{
+    if (to_number(n, out) || *out < lo || *out > hi || *out != floor(*out))
+        return fail(c, n, "expected a whole number in [%g, %g], got '%s'", lo, hi, kind_name(n));
+    return 0;
+}
+
+/* A template of spheres, [[x, y, z, r], ...] (demill_clump_template_add),
+ * made only when the scene is built (the union's mass properties of many
+ * overlapping spheres take long: 13 s of CPU for 400). */
+static int template_spheres(ctx *c, const tree *t, demill_id mat, demill_id *id)
+{
+    if (t->kind != TREE_SEQ || t->n < 1 || t->n > 100000)
+        return fail(c, t, "expected a list of 1 to 100000 spheres [x, y, z, radius], got %s",
+                    kind_name(t));
+    double *xyz = malloc(3 * t->n * sizeof *xyz), *r = malloc(t->n * sizeof *r);
+    int rc = xyz && r ? 0 : fail(c, t, "out of memory");
+    for (size_t k = 0; k < t->n && !rc; k++) {
+        double v[4];
+        rc = numbers(c, t->kid[k], 4, 4, v, NULL);
+        memcpy(xyz + 3 * k, v, sizeof v - sizeof v[3]);
+        r[k] = v[3];
+    }
+    if (!rc && c->mode == SCENE_BUILD)
+        rc = api(c, t, demill_clump_template_add(c->s->w, mat, t->n, xyz, r, id));
+    free(xyz);
+    free(r);
+    return rc;
+}
+
+/* A template that fills an STL file's closed mesh with spheres
+ * (demill_clump_template_from_stl), read only when the scene is built. */
+static int template_stl(ctx *c, const tree *t, demill_id mat, demill_id *id)
+{
+    const tree *f, *e;
+    double scale = 1, n = 0, cells = 64;
+    if (need_kind(c, t, TREE_MAP) || check_keys(c, t, k_template_stl, 4) ||
+        !(f = need(c, t, "file")) || !(e = need(c, t, "spheres")) || whole(c, e, 1, 1e6, &n))
+        return -1;
+    if (f->kind != TREE_SCALAR || !*f->text)
+        return fail(c, f, "expected a file name, got %s", kind_name(f));
+    if ((e = tree_get(t, "scale")) && positive(c, e, &scale))
+        return -1;
+    if ((e = tree_get(t, "cells")) && whole(c, e, 4, 256, &cells))
+        return -1;
+    if (c->s->dim != 3)
+        return fail(c, t, "a template from a mesh needs a 3D world");
+    char path[4096];
+    snprintf(path, sizeof path, "%s%s%s", f->text[0] == '/' ? "" : c->dir,
+             f->text[0] == '/' ? "" : "/", f->text);
+    if (c->mode != SCENE_BUILD)
+        return 0;
+    return api(c, t, demill_clump_template_from_stl(c->s->w, mat, path, scale, (size_t)n, (int)cells, id));
+}
+
+/* templates: a map of named clump templates, each of a material and either
+ * its spheres or an STL file's mesh filled with spheres. */
+static int templates_section(ctx *c, const tree *t)
+{
+    scene *s = c->s;
+    s->ntmpl = 0;
+    s->tmpl_counted = c->mode != SCENE_RESTART;
+    if (!t)
+        return 0;
+    if (need_kind(c, t, TREE_MAP))
+        return -1;
+    if (t->n > SCENE_MAX_TEMPLATES)
+        return fail(c, t, "expected at most %d templates", SCENE_MAX_TEMPLATES);
+    if (c->mode == SCENE_RESTART) {
+        size_t have = 0;
+        demill_world_ids(s->w, DEMILL_KIND_TEMPLATE, s->tmpl, SCENE_MAX_TEMPLATES, &have);
+        if (have != t->n)
+            return fail(c, t, "the checkpoint has %zu templates, the scene %zu", have, t->n);
+    }
+    for (size_t k = 0; k < t->n; k++) {
+        const tree *m = t->kid[k], *sp, *stl;
+        demill_id mat;
+        if (need_kind(c, m, TREE_MAP) || check_keys(c, m, k_templates, 3))
+            return -1;
+        if (c->mode == SCENE_RESTART && set_within(m))
+            return fail(c, m, "templates cannot change on a restart");
+        if (material_of(c, m, &mat))
+            return -1;
+        sp = tree_get(m, "spheres");
+        stl = tree_get(m, "stl");
+        if (!!sp == !!stl)
+            return fail(c, m, "expected either spheres or stl");
+        s->tmplname[k] = m->key;
+        if (c->mode != SCENE_RESTART)
+            s->tmpl[k] = DEMILL_ID_NONE;
+        s->tmpl_clumps[k] = 0;
+        s->ntmpl = k + 1;
+        if (sp ? template_spheres(c, sp, mat, &s->tmpl[k]) : template_stl(c, stl, mat, &s->tmpl[k]))
+            return -1;
+    }
+    return 0;
+}
+
+static int template_index(ctx *c, const tree *n, size_t *at)
+{
+    for (size_t k = 0; n->kind == TREE_SCALAR && k < c->s->ntmpl; k++)
+        if (!strcmp(c->s->tmplname[k], n->text)) {
+            *at = k;
+            return 0;
+        }
+    char list[512] = "";
+    for (size_t k = 0; k < c->s->ntmpl && strlen(list) < 400; k++)
+        snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", k ? ", " : "",
+                 c->s->tmplname[k]);
+    return fail(c, n, "expected a template of 'templates' (%s), got '%s'",
+                *list ? list : "none defined", kind_name(n));
+}
+
+/* splitmix64 (Steele, Lea and Flood 2014, Fast splittable pseudorandom
+ * number generators): the random order of a mix's clumps. */
+static uint64_t splitmix64(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9E3779B97F4A7C15u);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return z ^ (z >> 31);
+}
+
+/* A clump fill (demill_clump_fill_region): `template` names one template,
+ * or is a list of [template, mass fraction] pairs, a mix. A mix's target is
+ * shared by mass: a mass M gives template k the mass f_k M, a count N the
+ * counts n_k ∝ f_k / m_k (m_k a clump's mass), by largest remainder, and a
+ * fraction J the volume share J (f_k / ρ_k) / Σ (f_j / ρ_j), ρ_k = m_k / V_k;
+ * each template's clumps are those its share asks of
+ * demill_clump_fill_region. They are placed in a seeded random order of
+ * their templates, as demill_fill_region() mixes its sizes, each run of
+ * clumps of one template in that order by a call of its own (its own seed,
+ * drawn from the item's). */
+static int clump_fill(ctx *c, const tree *tm, int32_t kind, const double *rp, size_t nr,
+                      int32_t target, double value, uint64_t seed)
+{
+    scene *s = c->s;
+    size_t which[SCENE_MAX_TEMPLATES], nt = 1;
+    double frac[SCENE_MAX_TEMPLATES] = {1}, sum = 0;
+    if (tm->kind == TREE_SEQ) {
+        if (tm->n < 1 || tm->n > SCENE_MAX_TEMPLATES)
+            return fail(c, tm, "expected a list of 1 to %d [template, mass fraction] pairs",
+                        SCENE_MAX_TEMPLATES);
+        nt = tm->n;
+        for (size_t k = 0; k < nt; k++) {
+            const tree *pr = tm->kid[k];
+            if (pr->kind != TREE_SEQ || pr->n != 2)
+                return fail(c, pr, "expected a pair [template, mass fraction], got %s", kind_name(pr));
+            if (template_index(c, pr->kid[0], &which[k]) ||
+                number(c, pr->kid[1], 0, HUGE_VAL, &frac[k]))
+                return -1;
+            for (size_t j = 0; j < k; j++)
+                if (which[j] == which[k])
+                    return fail(c, pr->kid[0], "template '%s' given twice", pr->kid[0]->text);
+            sum += frac[k];
+        }
+        if (!(sum > 0))
+            return fail(c, tm, "the mass fractions sum to 0");
+    } else if (template_index(c, tm, &which[0])) {
+        return -1;
+    }
+    if (c->mode != SCENE_BUILD)
+        return 0;
+    demill_world *w = s->w;
+    size_t added = 0;
+    if (nt == 1) {
+        if (api(c, tm, demill_clump_fill_region(w, kind, rp, nr, s->tmpl[which[0]], target, value,
+                                                seed, NULL, 0, &added)))
+            return -1;
+        s->tmpl_clumps[which[0]] += added;
+        return 0;
+    }
+    /* each template's clumps */
+    double m[SCENE_MAX_TEMPLATES], share[SCENE_MAX_TEMPLATES], ssum = 0;
+    size_t n[SCENE_MAX_TEMPLATES];
+    for (size_t k = 0; k < nt; k++) {
+        double v;
+        demill_clump_template_get(w, s->tmpl[which[k]], DEMILL_TEMPLATE_MASS, &m[k]);
+        demill_clump_template_get(w, s->tmpl[which[k]], DEMILL_TEMPLATE_VOLUME, &v);
+        share[k] = frac[k] / (target == DEMILL_FILL_FRACTION ? m[k] / v : m[k]);
+        ssum += share[k];
+    }
+    if (target == DEMILL_FILL_COUNT) {
+        double rem[SCENE_MAX_TEMPLATES];
+        size_t total = 0;
+        for (size_t k = 0; k < nt; k++) {
+            const double x = value * share[k] / ssum;
+            n[k] = (size_t)floor(x);
+            rem[k] = x - floor(x);
+            total += n[k];
+        }
+        for (size_t it = 0; it < nt && (double)total + 0.5 < value; it++, total++) {
+            size_t best = 0;
+            for (size_t k = 1; k < nt; k++)
+                best = rem[k] > rem[best] ? k : best;
+            n[best]++;
+            rem[best] = -1;
+        }
+    } else {
+        /* the clumps the share asks for: the count a fill would add, which
+         * it reports, adding nothing, when the ids' buffer is too small */
+        for (size_t k = 0; k < nt; k++) {
+            demill_id none;
+            const double v = target == DEMILL_FILL_MASS ? value * frac[k] / sum : value * share[k] / ssum;
+            n[k] = 0;
+            if (!(frac[k] > 0))
+                continue;
+            const demill_status st = demill_clump_fill_region(w, kind, rp, nr, s->tmpl[which[k]],
+                                                              target, v, seed, &none, 0, &n[k]);
+            if (st != DEMILL_ERR_BUFFER_TOO_SMALL) {
+                api(c, tm->kid[k], st);
+                return -1;
+            }
+        }
+    }
+    size_t total = 0;
+    for (size_t k = 0; k < nt; k++)
+        total += n[k];
+    if (!total)
+        return fail(c, tm, "the target asks for no clump");
+    unsigned char *order = malloc(total);
+    if (!order)
+        return fail(c, tm, "out of memory");
+    uint64_t state = seed;
+    for (size_t k = 0, at = 0; k < nt; k++)
+        for (size_t j = 0; j < n[k]; j++)
+            order[at++] = (unsigned char)k;
+    for (size_t k = total - 1; k > 0; k--) {
+        const size_t j = (size_t)(splitmix64(&state) % (k + 1));
+        const unsigned char t = order[k];
+        order[k] = order[j];
+        order[j] = t;
+    }
+    int rc = 0;
+    for (size_t i = 0, j; i < total && !rc; i = j) {
+        const size_t k = order[i];
+        for (j = i; j < total && order[j] == k; j++)
+            ;
+        rc = api(c, tm->kid[k], demill_clump_fill_region(w, kind, rp, nr, s->tmpl[which[k]],
+                                                         DEMILL_FILL_COUNT, (double)(j - i),
+                                                         splitmix64(&state), NULL, 0, &added));
+        s->tmpl_clumps[which[k]] += rc ? 0 : added;
+    }
+    free(order);
+    return rc;
+}
+
 static const char *const k_particles[] = {"material", "csv",   "region",   "sizes",
-                                          "count",    "mass",  "fraction", "seed"};
+                                          "count",    "mass",  "fraction", "seed", "template"};
 
 static int particles_section(ctx *c, const tree *t)
 {
@@ -736,12 +1002,15 @@ static int particles_section(ctx *c, const tree *t)
         return -1;
     for (size_t k = 0; k < t->n; k++) {
         const tree *p = t->kid[k];
-        demill_id mat;
-        if (need_kind(c, p, TREE_MAP) || check_keys(c, p, k_particles, 8))
+        demill_id mat = DEMILL_ID_NONE;
+        if (need_kind(c, p, TREE_MAP) || check_keys(c, p, k_particles, 9))
             return -1;
         if (c->mode == SCENE_RESTART && applies(c, p) )
             return fail(c, p, "particles cannot change on a restart");
-        if (material_of(c, p, &mat))
+        const tree *tm = tree_get(p, "template");
+        if (tm && (tree_get(p, "material") || tree_get(p, "sizes") || tree_get(p, "csv")))
+            return fail(c, p, "a fill of clumps has no material, sizes or csv: its templates give them");
+        if (!tm && material_of(c, p, &mat))
             return -1;
         const tree *csv = tree_get(p, "csv"), *region = tree_get(p, "region");
         if (!!csv == !!region)
@@ -756,8 +1025,8 @@ static int particles_section(ctx *c, const tree *t)
         int32_t kind = 0, dist = 0, target = 0;
         double rp[7], sp[64], value = 0, seed = 1;
         size_t nr = 0, ns = 0;
-        const tree *sz = need(c, p, "sizes");
-        if (region_of(c, region, 0, &kind, rp, &nr) || !sz || sizes_of(c, sz, &dist, sp, &ns))
+        const tree *sz = tm ? NULL : need(c, p, "sizes");
+        if (region_of(c, region, 0, &kind, rp, &nr) || (!tm && (!sz || sizes_of(c, sz, &dist, sp, &ns))))
             return -1;
         static const char *const targets[] = {"count", "mass", "fraction"};
         for (int j = 0; j < 3; j++) {
@@ -775,6 +1044,11 @@ static int particles_section(ctx *c, const tree *t)
         const tree *sd = tree_get(p, "seed");
         if (sd && (number(c, sd, 0, 9007199254740992.0, &seed) || seed != floor(seed)))
             return fail(c, sd, "expected a whole number >= 0, got '%s'", kind_name(sd));
+        if (tm) {
+            if (clump_fill(c, tm, kind, rp, nr, target, value, (uint64_t)seed))
+                return -1;
+            continue;
+        }
         if (c->mode != SCENE_BUILD)
             continue;
         if (api(c, p, demill_fill_region(c->s->w, kind, rp, nr, mat, dist, sp, ns, target, value,
@@ -1329,24 +1603,9 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
     if (q->energy)
         return demill_world_energy(s->w, q->energy, value);
     if (q->centre) {
-        double n, mx = 0, m = 0;
-        demill_status st = demill_world_get(s->w, DEMILL_WORLD_PARTICLE_COUNT, &n);
-        const size_t cap = st == DEMILL_OK && n > 0 ? (size_t)n : 1;
-        double *x = malloc(3 * cap * sizeof *x), *mass = malloc(cap * sizeof *mass);
-        size_t got = 0;
-        if (!x || !mass)
-            st = DEMILL_ERR_OUT_OF_MEMORY;
-        if (st == DEMILL_OK && n > 0)
-            st = demill_particles_read(s->w, DEMILL_PARTICLE_POSITION, x, cap, &got);
-        if (st == DEMILL_OK && n > 0)
-            st = demill_particles_read(s->w, DEMILL_PARTICLE_MASS, mass, cap, &got);
-        for (size_t k = 0; st == DEMILL_OK && k < got; k++) {
-            mx += mass[k] * x[3 * k + q->comp];
-            m += mass[k];
-        }
-        free(x);
-        free(mass);
-        *value = m > 0 ? mx / m : NAN;
+        double m, c[3];
+        const demill_status st = clumps_charge(s->w, &m, c);
+        *value = c[q->comp];
         return st;
     }
     if (q->outlet >= 0) {
@@ -1584,6 +1843,7 @@ int scene_build(scene *s, const tree *root, const char *dir, int mode, char *err
         pairs_section(&c, tree_get(root, "pairs")) || drum_section(&c, tree_get(root, "drum")) ||
         bodies_section(&c, tree_get(root, "bodies")) ||
         walls_section(&c, tree_get(root, "walls")) ||
+        templates_section(&c, tree_get(root, "templates")) ||
         particles_section(&c, tree_get(root, "particles")) ||
         feeds_section(&c, tree_get(root, "feeds")) || outlets_section(&c, tree_get(root, "outlets")) ||
         outputs_section(&c, tree_get(root, "outputs")) || stop_section(&c, tree_get(root, "stop")))
@@ -1656,6 +1916,8 @@ static const section sections[] = {
     {"pairs[] (besides the registry's keys)", KEYS(k_pair_extra)},
     {"drum (besides the registry's keys)", KEYS(drum_extra)},
     {"drum.parts", KEYS(k_parts)},
+    {"templates.NAME", KEYS(k_templates)},
+    {"templates.NAME.stl", KEYS(k_template_stl)},
     {"particles[]", KEYS(k_particles)},
     {"particles[].sizes, feeds[].sizes", KEYS(k_sizes)},
     {"particles[].region, feeds[].region, outlets[].region, stop.empty, "

@@ -16,6 +16,7 @@
 #define SCENE_MAX_EDGES 16
 #define SCENE_MAX_OUTLETS 16
 #define SCENE_MAX_BODIES 64
+#define SCENE_MAX_TEMPLATES 64
 
 /* A quantity of the time series or of a steady stop: a world or drum key
  * of the registry (key, body < 0, outlet < 0), a component of a body's
@@ -81,14 +82,20 @@ typedef struct scene {
     int repose_on;              /* outputs.repose: the angle of repose of a heap */
     double repose_centre[3];    /* a point of the heap's vertical axis on the floor, m */
     double repose_ring;         /* the rings' width, m (0: the particles' mean diameter) */
+    size_t ntmpl;               /* templates: the clump templates, by name */
+    const char *tmplname[SCENE_MAX_TEMPLATES]; /* point into the tree */
+    demill_id tmpl[SCENE_MAX_TEMPLATES]; /* DEMILL_ID_NONE in SCENE_CHECK */
+    size_t tmpl_clumps[SCENE_MAX_TEMPLATES]; /* the clumps of each the fills added */
+    int tmpl_counted;           /* tmpl_clumps is known (not on a restart) */
 } scene;
 
 /* What scene_build() does with the world. */
 enum {
     SCENE_BUILD = 0,   /* a new world from the file */
     SCENE_CHECK = 1,   /* check everything, build the world's settings, materials, pairs, drum
-                          and bodies, but read no file and add no particle, wall, feed or
-                          outlet (demill check, sweeps before they run, the fuzz target) */
+                          and bodies, but read no file and add no template, particle, wall,
+                          feed or outlet (demill check, sweeps before they run, the fuzz
+                          target) */
     SCENE_RESTART = 2  /* s->w holds a loaded checkpoint: map the file's names to its ids and
                           apply only the entries set on the command line (--set) */
 };
