@@ -19,8 +19,10 @@
  * that of the least-squares line through the profile's points on the flank,
  * θ = atan(-slope): those 20 % to 80 % of the way from the top of one layer
  * lying in the floor's hollows, (1 + √2) r, to the summit (the rounded
- * summit and the toe, where a single layer runs out, left out). Writes repose-clumps.png (both profiles with
- * their fitted lines) to --out, and prints the angles.
+ * summit and the toe, where a single layer runs out, left out; heap.h,
+ * which the demill runner's outputs.repose shares). Writes
+ * repose-clumps.png (both profiles with their fitted lines) to --out, and
+ * prints the angles.
  *
  * usage: repose_clumps [--particles N] [--out DIR] */
 #include <math.h>
@@ -28,21 +30,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "heap.h"
 #include "plot.h"
 #include "run.h"
 
 #define PI 3.14159265358979323846
 #define R 0.002 /* the spheres' radius, m */
-#define RINGS 64
+#define RINGS 64 /* the picture's rings */
 
 /* A heap: its particles' (ρ, top) and its surface profile and fit. */
 typedef struct heap {
     size_t n;
     double *rho, *top;
-    int nprof;
-    double prof_rho[RINGS], prof_h[RINGS];
-    double hmax, slope, icept, angle;
-    int nfit;
+    heap_profile p;
 } heap;
 
 static void usage(FILE *f)
@@ -121,47 +121,17 @@ static void measure(demill_world *w, heap *h)
     h->rho = malloc(n * sizeof *h->rho);
     h->top = malloc(n * sizeof *h->top);
     h->n = 0;
-    double ring[RINGS];
-    for (int b = 0; b < RINGS; b++)
-        ring[b] = -INFINITY;
     for (size_t k = 0; k < n; k++) {
         if (fixed[k] != 0 || !(x[3 * k + 1] > 0)) /* the floor, and any fallen off it */
             continue;
-        const double rho = hypot(x[3 * k], x[3 * k + 2]), top = x[3 * k + 1] + R;
-        h->rho[h->n] = rho;
-        h->top[h->n++] = top;
-        const int b = (int)(rho / (2 * R));
-        if (b < RINGS)
-            ring[b] = fmax(ring[b], top);
+        h->rho[h->n] = hypot(x[3 * k], x[3 * k + 2]);
+        h->top[h->n++] = x[3 * k + 1] + R;
     }
     free(x);
     free(fixed);
-    h->nprof = 0;
-    h->hmax = 0;
-    for (int b = 0; b < RINGS; b++)
-        if (ring[b] > 0) {
-            h->prof_rho[h->nprof] = (b + 0.5) * 2 * R;
-            h->prof_h[h->nprof++] = ring[b];
-            h->hmax = fmax(h->hmax, ring[b]);
-        }
-    /* the least-squares line through the flank's points, its heights
-     * counted from the top of one layer in the floor's hollows, (1 + √2) r */
-    const double base = (1 + sqrt(2.0)) * R, rise = h->hmax - base;
-    double s1 = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (int q = 0; q < h->nprof; q++) {
-        const double u = h->prof_rho[q], v = h->prof_h[q];
-        if (v < base + 0.2 * rise || v > base + 0.8 * rise)
-            continue;
-        s1++;
-        sx += u;
-        sy += v;
-        sxx += u * u;
-        sxy += u * v;
-    }
-    h->nfit = (int)s1;
-    h->slope = (s1 * sxy - sx * sy) / (s1 * sxx - sx * sx);
-    h->icept = (sy - h->slope * sx) / s1;
-    h->angle = atan(-h->slope) * 180 / PI;
+    /* the flank counted from the top of one layer in the floor's hollows,
+     * (1 + √2) r */
+    heap_fit(h->rho, h->top, h->n, 2 * R, (1 + sqrt(2.0)) * R, &h->p);
 }
 
 /* The largest speed of a particle, m/s. */
@@ -214,7 +184,7 @@ static void pour(long n, int clumps, heap *h)
     printf("repose_clumps: %ld %s: at rest%s after %.2f s (%.0f s of wall time), heap %.1f mm "
            "high, angle of repose %.1f deg (%d rings fitted)\n",
            clumps ? n / 2 : n, clumps ? "dumbbells" : "spheres", settled ? "" : " (not quite)", t,
-           now() - t0, 1e3 * h->hmax, h->angle, h->nfit);
+           now() - t0, 1e3 * h->p.hmax, h->p.angle, h->p.nfit);
     demill_world_destroy(w);
     example_world = NULL;
 }
@@ -228,21 +198,22 @@ static void panel(cairo_t *cr, const plot_area *a, const heap *h, const char *ti
         cairo_arc(cr, plot_px(a, 1e3 * h->rho[k]), plot_py(a, 1e3 * h->top[k]), 1.2, 0, 2 * PI);
         cairo_fill(cr);
     }
-    double pr[RINGS], ph[RINGS];
-    for (int q = 0; q < h->nprof; q++) {
-        pr[q] = 1e3 * h->prof_rho[q];
-        ph[q] = 1e3 * h->prof_h[q];
+    double pr[HEAP_RINGS], ph[HEAP_RINGS];
+    for (int q = 0; q < h->p.n; q++) {
+        pr[q] = 1e3 * h->p.rho[q];
+        ph[q] = 1e3 * h->p.h[q];
     }
     const double blue[3] = {0.13, 0.35, 0.65}, red[3] = {0.8, 0.15, 0.1};
-    plot_curve(cr, a, pr, ph, (size_t)h->nprof, blue, 2);
+    plot_curve(cr, a, pr, ph, (size_t)h->p.n, blue, 2);
     const double fx[2] = {a->x0, a->x1},
-                 fy[2] = {1e3 * h->icept + h->slope * a->x0, 1e3 * h->icept + h->slope * a->x1};
+                 fy[2] = {1e3 * h->p.icept + h->p.slope * a->x0,
+                          1e3 * h->p.icept + h->p.slope * a->x1};
     plot_curve(cr, a, fx, fy, 2, red, 2);
     char text[128];
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, a->l + 10, a->tp + 20);
     cairo_show_text(cr, title);
-    snprintf(text, sizeof text, "angle of repose %.1f deg", h->angle);
+    snprintf(text, sizeof text, "angle of repose %.1f deg", h->p.angle);
     cairo_set_source_rgb(cr, red[0], red[1], red[2]);
     cairo_move_to(cr, a->l + 10, a->tp + 40);
     cairo_show_text(cr, text);
@@ -275,7 +246,7 @@ int main(int argc, char **argv)
     cairo_surface_t *s;
     const int wd = 1200, ht = 520;
     cairo_t *cr = plot_canvas(wd, ht, 14, &s);
-    const double hm = 1e3 * fmax(spheres.hmax, dumbbells.hmax) * 1.15;
+    const double hm = 1e3 * fmax(spheres.p.hmax, dumbbells.p.hmax) * 1.15;
     const double rm = 1e3 * 2 * R * RINGS * 0.6;
     plot_area left = {70, 30, 500, 420, 0, rm, 0, hm}, right = left;
     right.l = 670;
@@ -290,8 +261,8 @@ int main(int argc, char **argv)
                "distance from the axis (mm)");
     if (plot_finish(cr, s, out, "repose-clumps.png", example_program))
         return EXIT_FAILURE;
-    printf("repose_clumps: spheres %.1f deg, dumbbells %.1f deg\n", spheres.angle,
-           dumbbells.angle);
+    printf("repose_clumps: spheres %.1f deg, dumbbells %.1f deg\n", spheres.p.angle,
+           dumbbells.p.angle);
     free(spheres.rho);
     free(spheres.top);
     free(dumbbells.rho);

@@ -432,7 +432,8 @@ START_TEST(test_bad)
          "t.yaml:1: outputs.columns.0: expected a world.* or drum.* quantity of the parameter "
          "registry (e.g. world.time, drum.power), body.NAME.FIELD_x (FIELD position, velocity, "
          "force_particles, force_spring, force_damper or force_external), outlet.N.mass, "
-         "outlet.N.count or particles.centre_x, got 'outlet.0.weight'"},
+         "outlet.N.count, particles.centre_x or energy.NAME (NAME a term of the energy account, "
+         "e.g. dissipated_normal), got 'outlet.0.weight'"},
         {"outputs: {discharge: {outlet: 0, orifice_diameter: 0.04, bulk_region: {box: [0, 0, 0, 1, "
          "1, 1]}}}\nstop: {time: 1}\n",
          NULL,

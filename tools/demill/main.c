@@ -16,6 +16,8 @@
 #include "clumps.h"
 #include "conveyor.h"
 #include "discharge.h"
+#include "dissipation.h"
+#include "repose.h"
 #include "series_plot.h"
 #include "drum_plot.h"
 #include "janssen.h"
@@ -354,6 +356,7 @@ static int run_one(const run_args *a, char **summary)
         amp_lo[k] = INFINITY;
         amp_hi[k] = -INFINITY;
     }
+    dissipation_track diss = {0}; /* outputs.dissipation */
     if (s.discharge_on && n) {
         size_t nm, nr;
         double *m = plot_read_field(w, DEMILL_PARTICLE_MASS, &nm);
@@ -454,6 +457,8 @@ static int run_one(const run_args *a, char **summary)
             shear_sample(&s, &shear, t);
         if (s.conveyor_on)
             conveyor_sample(&s, &conveyor, t);
+        if (s.dissipation_on && t >= s.stop_time - s.dissipation_window - 0.5 * s.dt)
+            dissipation_sample(&s, t, &diss);
         if (s.discharge_on) {
             series_add(&discharged, t, quantity(&s, &out_mass));
             series_add(&bulk, t, discharge_solid_fraction(&s));
@@ -561,6 +566,8 @@ static int run_one(const run_args *a, char **summary)
         fprintf(sum, "amplitude_%s = %.6g\n", s.amp[k].name, 0.5 * (amp_hi[k] - amp_lo[k]));
     if (s.namp)
         fprintf(sum, "amplitude_window_s = %g\n", s.amp_window);
+    if (s.dissipation_on)
+        dissipation_report(&diss, sum);
     int rc = 0;
     if (s.discharge_on) {
         const discharge_trace trace = {discharged.a, discharged.b, bulk.b, discharged.n,
@@ -572,6 +579,8 @@ static int run_one(const run_args *a, char **summary)
     if (s.conveyor_on && conveyor_report(&s, &conveyor, sum, a->out))
         rc = -1;
     if (s.janssen_on && janssen_report(&s, &silo, sum, a->out))
+        rc = -1;
+    if (s.repose_on && repose_report(&s, sum, a->out))
         rc = -1;
     if (s.steady_on)
         fprintf(sum, "steady = %s\nsteady_mean = %.6g\n",
@@ -732,6 +741,10 @@ static int run_sweep(run_args *a, size_t which)
         }
         free(keys);
         output_close(f, "sweep.csv");
+        char swept[256];
+        snprintf(swept, sizeof swept, "%.*s", (int)(eq - set), set);
+        if (dissipation_draw_sweep(base_out, swept, vals, sums, nv))
+            rc = -1;
         printf("demill: sweep of %zu runs; table in %s/sweep.csv\n", nv, base_out);
         rc = shear_sweep_report(base_out, dirs, sums, nv);
     }

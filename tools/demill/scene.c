@@ -1507,6 +1507,42 @@ static const struct {
                    {"force_damper", DEMILL_BODY_FORCE_DAMPER},
                    {"force_external", DEMILL_BODY_FORCE_EXTERNAL}};
 
+/* The energy terms of demill_world_energy() as quantities, energy.NAME. */
+static const struct {
+    const char *name;
+    int32_t term;
+} energy_terms[] = {{"kinetic_translational", DEMILL_ENERGY_KINETIC_TRANSLATIONAL},
+                    {"kinetic_rotational", DEMILL_ENERGY_KINETIC_ROTATIONAL},
+                    {"potential", DEMILL_ENERGY_POTENTIAL},
+                    {"elastic_normal", DEMILL_ENERGY_ELASTIC_NORMAL},
+                    {"elastic_tangential", DEMILL_ENERGY_ELASTIC_TANGENTIAL},
+                    {"elastic_rolling", DEMILL_ENERGY_ELASTIC_ROLLING},
+                    {"wall_work", DEMILL_ENERGY_WALL_WORK},
+                    {"dissipated_normal", DEMILL_ENERGY_DISSIPATED_NORMAL},
+                    {"dissipated_tangential", DEMILL_ENERGY_DISSIPATED_TANGENTIAL},
+                    {"dissipated_friction", DEMILL_ENERGY_DISSIPATED_FRICTION},
+                    {"dissipated_rolling", DEMILL_ENERGY_DISSIPATED_ROLLING},
+                    {"dissipated_plastic", DEMILL_ENERGY_DISSIPATED_PLASTIC},
+                    {"dissipated_rolling_viscous", DEMILL_ENERGY_DISSIPATED_ROLLING_VISCOUS},
+                    {"dissipated_local", DEMILL_ENERGY_DISSIPATED_LOCAL},
+                    {"dissipated", DEMILL_ENERGY_DISSIPATED},
+                    {"cohesion", DEMILL_ENERGY_COHESION},
+                    {"total", DEMILL_ENERGY_TOTAL},
+                    {"flow", DEMILL_ENERGY_FLOW},
+                    {"body_kinetic", DEMILL_ENERGY_BODY_KINETIC},
+                    {"body_elastic", DEMILL_ENERGY_BODY_ELASTIC},
+                    {"body_potential", DEMILL_ENERGY_BODY_POTENTIAL},
+                    {"body_dissipated", DEMILL_ENERGY_BODY_DISSIPATED},
+                    {"body_work", DEMILL_ENERGY_BODY_WORK}};
+
+const char *scene_energy_name(int32_t term)
+{
+    for (size_t k = 0; k < sizeof energy_terms / sizeof energy_terms[0]; k++)
+        if (energy_terms[k].term == term)
+            return energy_terms[k].name;
+    return NULL;
+}
+
 /* outlet.N.mass or outlet.N.count: N's index into outlets[] in *index
  * and 1 for count in *count; 0 if n names one, else -1. */
 static int outlet_quantity(const char *n, int *index, int *count)
@@ -1524,8 +1560,9 @@ static int outlet_quantity(const char *n, int *index, int *count)
 
 /* A quantity by name: a world.* or drum.* key of the registry,
  * body.NAME.FIELD_C (FIELD a body field, C x, y or z), outlet.N.mass and
- * outlet.N.count (what outlets[N] has removed since it was made) or
- * particles.centre_C (the particles' centre of mass). */
+ * outlet.N.count (what outlets[N] has removed since it was made),
+ * particles.centre_C (the particles' centre of mass) or energy.NAME (a term
+ * of the energy account, demill_world_energy()). */
 static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
 {
     *q = (scene_quantity){.body = -1, .outlet = -1};
@@ -1540,6 +1577,11 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
             return fail(c, n, "a drum quantity without a drum");
         if (q->key)
             return 0;
+        for (size_t k = 0; k < sizeof energy_terms / sizeof energy_terms[0]; k++)
+            if (!strncmp(n->text, "energy.", 7) && !strcmp(n->text + 7, energy_terms[k].name)) {
+                q->energy = energy_terms[k].term;
+                return 0;
+            }
         if (!strncmp(n->text, "particles.centre_", 17) && n->text[17] && !n->text[18] &&
             strchr("xyz", n->text[17]) && n->text[17] - 'x' < c->s->dim) {
             q->centre = 1;
@@ -1572,7 +1614,8 @@ static int quantity_of(ctx *c, const tree *n, scene_quantity *q)
     return fail(c, n, "expected a world.* or drum.* quantity of the parameter registry (e.g. "
                       "world.time, drum.power), body.NAME.FIELD_x (FIELD position, velocity, "
                       "force_particles, force_spring, force_damper or force_external), "
-                      "outlet.N.mass, outlet.N.count or particles.centre_x, got '%s'",
+                      "outlet.N.mass, outlet.N.count, particles.centre_x or energy.NAME "
+                      "(NAME a term of the energy account, e.g. dissipated_normal), got '%s'",
                 kind_name(n));
 }
 
@@ -1584,6 +1627,8 @@ const char *scene_quantity_unit(const scene_quantity *q)
         return "m";
     if (q->outlet >= 0)
         return q->outlet_count ? "1" : "kg";
+    if (q->energy)
+        return "J";
     return demill_param_unit(q->key);
 }
 
@@ -1595,6 +1640,8 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
         *value = v[q->comp];
         return st;
     }
+    if (q->energy)
+        return demill_world_energy(s->w, q->energy, value);
     if (q->centre) {
         double m, c[3];
         const demill_status st = clumps_charge(s->w, &m, c);
@@ -1619,8 +1666,11 @@ demill_status scene_quantity_read(const scene *s, const scene_quantity *q, doubl
 static const char *const k_outputs[] = {"every",    "csv",      "columns",      "vtk_every",
                                         "checkpoint_every", "pictures", "power_by_size",
                                         "discharge", "amplitude", "shear",
-                                        "conveyor", "janssen"};
+                                        "conveyor", "janssen", "dissipation",
+                                        "repose"};
 static const char *const k_amplitude[] = {"of", "window"};
+static const char *const k_dissipation[] = {"window"};
+static const char *const k_repose[] = {"centre", "ring"};
 static const char *const k_discharge[] = {"outlet", "orifice_diameter", "half_angle",
                                           "stagnant_angle", "bulk_region"};
 
@@ -1891,6 +1941,7 @@ static int outputs_section(ctx *c, const tree *t)
     s->shear_on = 0;
     s->conveyor_on = 0;
     s->janssen_on = 0;
+    s->dissipation_on = s->repose_on = 0;
     if (!t)
         return 0;
     const tree *e;
@@ -1975,6 +2026,24 @@ static int outputs_section(ctx *c, const tree *t)
     }
     if ((e = tree_get(t, "janssen")) && janssen_of(c, e))
         return -1;
+    if ((e = tree_get(t, "dissipation"))) {
+        const tree *win;
+        if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_dissipation, 1) ||
+            !(win = need(c, e, "window")) || positive(c, win, &s->dissipation_window))
+            return -1;
+        s->dissipation_on = 1;
+    }
+    if ((e = tree_get(t, "repose"))) {
+        const tree *ce, *ring;
+        s->repose_ring = 0;
+        if (need_kind(c, e, TREE_MAP) || check_keys(c, e, k_repose, 2) ||
+            !(ce = need(c, e, "centre")) || numbers(c, ce, 3, 3, s->repose_centre, NULL) ||
+            ((ring = tree_get(e, "ring")) && positive(c, ring, &s->repose_ring)))
+            return -1;
+        if (s->dim != 3)
+            return fail(c, e, "the angle of repose of an axisymmetric heap is for 3D scenes");
+        s->repose_on = 1;
+    }
     return 0;
 }
 
@@ -2025,6 +2094,8 @@ static int stop_section(ctx *c, const tree *t)
         return fail(c, t, "expected time, revolutions, empty or steady");
     if (s->namp && isnan(s->stop_time))
         return fail(c, t, "outputs.amplitude needs a stop.time (its window ends there)");
+    if (s->dissipation_on && isnan(s->stop_time))
+        return fail(c, t, "outputs.dissipation needs a stop.time (its window ends there)");
     return 0;
 }
 
@@ -2145,6 +2216,8 @@ static const section sections[] = {
     {"outputs.shear", KEYS(k_shear)},
     {"outputs.conveyor", KEYS(k_conveyor)},
     {"outputs.janssen", KEYS(k_janssen)},
+    {"outputs.dissipation", KEYS(k_dissipation)},
+    {"outputs.repose", KEYS(k_repose)},
     {"stop", KEYS(k_stop)},
     {"stop.steady", KEYS(k_steady)},
 };

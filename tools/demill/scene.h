@@ -31,6 +31,7 @@ typedef struct scene_quantity {
     int outlet;        /* the outlet's index, -1 for none */
     int outlet_count;  /* 1: the outlet's count of particles, 0: their mass */
     int centre;        /* 1: a component (comp) of the particles' centre of mass */
+    int32_t energy;    /* a DEMILL_ENERGY_* term (energy.NAME), or 0 */
 } scene_quantity;
 
 /* A wall's motion (walls[].motion) from a time after the start: the
@@ -99,6 +100,11 @@ typedef struct scene {
     size_t namp;                /* outputs.amplitude: half the peak-to-peak of these */
     scene_quantity amp[SCENE_MAX_COLUMNS];
     double amp_window;          /* over the last amp_window s before stop.time */
+    int dissipation_on;         /* outputs.dissipation: each mechanism's share of the energy */
+    double dissipation_window;  /* dissipated over the last window s before stop.time */
+    int repose_on;              /* outputs.repose: the angle of repose of a heap */
+    double repose_centre[3];    /* a point of the heap's vertical axis on the floor, m */
+    double repose_ring;         /* the rings' width, m (0: the particles' mean diameter) */
     size_t ntmpl;               /* templates: the clump templates, by name */
     const char *tmplname[SCENE_MAX_TEMPLATES]; /* point into the tree */
     demill_id tmpl[SCENE_MAX_TEMPLATES]; /* DEMILL_ID_NONE in SCENE_CHECK */
@@ -160,6 +166,10 @@ const char *scene_quantity_unit(const scene_quantity *q);
 /* The value of a quantity in the scene's world: DEMILL_OK or the API's
  * status. */
 demill_status scene_quantity_read(const scene *s, const scene_quantity *q, double *value);
+
+/* The name of a DEMILL_ENERGY_* term as a quantity, without its prefix
+ * "energy." (dissipated_normal), or NULL for none. */
+const char *scene_energy_name(int32_t term);
 
 /* The tables of the keys a scene file takes from the parameter registry
  * (world, materials, pairs, drum: unit, allowed values, default), in
