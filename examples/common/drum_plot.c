@@ -338,11 +338,7 @@ int draw_power(const char *path, const power_trace *tr, const char *program)
     }
     plot_frame(cr, l, tp, wd - l - r, ht - tp - bt, ht, wd / 2 - 30, "time t [s]");
     /* the vertical axis's title, turned to read upwards */
-    cairo_save(cr);
-    cairo_move_to(cr, 24, tp + 0.5 * a.h + 80);
-    cairo_rotate(cr, -0.5 * PI);
-    cairo_show_text(cr, "power draw P = -T ω [W]");
-    cairo_restore(cr);
+    plot_y_title(cr, 24, tp + 0.5 * a.h + 80, "power draw P = -T ω [W]");
     cairo_move_to(cr, l, 24);
     cairo_show_text(cr, "Power drawn by the drum (torque T of the charge on it, speed ω), "
                         "running mean of 10 samples");

@@ -218,6 +218,24 @@ void plot_line_key(cairo_t *cr, const plot_area *a, double xc, double yc, double
     if (dashed)
         cairo_set_dash(cr, (const double[2]){8, 5}, 2, 0);
     plot_curve(cr, a, x, y, 2, rgb, 2.2);
+    cairo_set_dash(cr, NULL, 0, 0);
+    plot_key(cr, kx, ky, rgb, dashed, key);
+}
+
+void plot_y_title(cairo_t *cr, double x, double y, const char *text)
+{
+    cairo_save(cr);
+    cairo_move_to(cr, x, y);
+    cairo_rotate(cr, -0.5 * PI);
+    cairo_show_text(cr, text);
+    cairo_restore(cr);
+}
+
+void plot_key(cairo_t *cr, double kx, double ky, const double rgb[3], int dashed,
+              const char *text)
+{
+    if (dashed)
+        cairo_set_dash(cr, (const double[2]){8, 5}, 2, 0);
     cairo_move_to(cr, kx, ky);
     cairo_line_to(cr, kx + 30, ky);
     cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
@@ -226,5 +244,5 @@ void plot_line_key(cairo_t *cr, const plot_area *a, double xc, double yc, double
     cairo_set_dash(cr, NULL, 0, 0);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, kx + 38, ky + 4);
-    cairo_show_text(cr, key);
+    cairo_show_text(cr, text);
 }

@@ -77,6 +77,14 @@ void plot_curve(cairo_t *cr, const plot_area *a, const double *x, const double *
 /* The straight line through (xc, yc) with the given slope over [x0, x1],
  * clipped to the area, 2.2 pixels wide in a colour, dashed if asked, and
  * its key at (kx, ky): a stroke of 30 pixels and the text after it. */
+/* Text along the y axis, read from the bottom up, starting at (x, y). */
+void plot_y_title(cairo_t *cr, double x, double y, const char *text);
+
+/* A legend's key at (kx, ky): a short line 30 pixels long in the given
+ * colour (dashed if asked) and its text after it. */
+void plot_key(cairo_t *cr, double kx, double ky, const double rgb[3], int dashed,
+              const char *text);
+
 void plot_line_key(cairo_t *cr, const plot_area *a, double xc, double yc, double slope, double x0,
                    double x1, const double rgb[3], int dashed, double kx, double ky,
                    const char *key);

@@ -26,6 +26,8 @@ import shutil
 import subprocess
 import sys
 
+from summary import read_summary
+
 REDUCED = ["--set", "particles.0.mass=1", "--set", "drum.start_time=0",
            "--set", "outputs.vtk_every=0", "--set", "outputs.pictures=[]"]
 
@@ -34,14 +36,6 @@ def run(demill, *args):
     subprocess.run([demill, "run", *args], check=True, stdout=subprocess.DEVNULL,
                    stderr=subprocess.DEVNULL)
 
-
-def summary(folder):
-    s = {}
-    with open(os.path.join(folder, "summary.txt")) as f:
-        for line in f:
-            key, _, value = line.strip().partition(" = ")
-            s[key] = value
-    return s
 
 
 def stl_volume(path):
@@ -63,7 +57,7 @@ def main():
     os.makedirs(work)
     at = lambda name: os.path.join(work, name)
     run(demill, scene, "--out", at("whole"), *REDUCED, "--set", "stop={time: 0.03}")
-    s = summary(at("whole"))
+    s = read_summary(at("whole"))
 
     with open(scene) as f:
         text = f.read()
@@ -90,7 +84,7 @@ def main():
     with open(at("whole/checkpoint"), "rb") as f:
         whole = f.read()
     assert then == whole, "the restarted run's checkpoint differs from the unbroken run's"
-    r = summary(at("then"))
+    r = read_summary(at("then"))
     assert r["clumps"] == s["clumps"] and r["clumps_mass_kg"] == s["clumps_mass_kg"], r
     assert r["template_rock_fit_volume_error"] == s["template_rock_fit_volume_error"], r
     assert "template_rock_clumps" not in r, "a restart cannot know the fills' counts"

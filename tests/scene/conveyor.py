@@ -29,6 +29,8 @@ import shutil
 import subprocess
 import sys
 
+from summary import read_summary
+
 RATE, SPEED, FROM, STOP = 2.0, 2.0, 1.6, 2.6
 
 
@@ -39,11 +41,7 @@ def main():
                     "--set", f"stop={{time: {STOP}}}", "--set", f"outputs.conveyor.from={FROM}",
                     "--set", "outputs.vtk_every=0"],
                    check=True, stdout=subprocess.DEVNULL)
-    s = {}
-    with open(os.path.join(work, "summary.txt")) as f:
-        for line in f:
-            key, _, value = line.strip().partition(" = ")
-            s[key] = value
+    s = read_summary(work)
     assert os.path.getsize(os.path.join(work, "conveyor.png")) > 0, "no conveyor.png"
     with open(os.path.join(work, "conveyor.csv")) as f:
         rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]

@@ -26,17 +26,15 @@ import shutil
 import subprocess
 import sys
 
+from summary import read_summary
+
 
 def main():
     demill, scene, work = sys.argv[1:4]
     shutil.rmtree(work, ignore_errors=True)
     subprocess.run([demill, "run", scene, "--set", "particles.0.count=1500", "--out", work],
                    check=True, stdout=subprocess.DEVNULL)
-    s = {}
-    with open(os.path.join(work, "summary.txt")) as f:
-        for line in f:
-            key, _, value = line.strip().partition(" = ")
-            s[key] = value
+    s = read_summary(work)
     assert os.path.getsize(os.path.join(work, "discharge.png")) > 0, "no discharge.png"
 
     rho, d, d0, g = 2500.0, 0.006, 0.042, 9.81

@@ -24,6 +24,8 @@ import shutil
 import subprocess
 import sys
 
+from summary import read_summary
+
 REDUCED = ["--set", "particles.0.count=300", "--set", "walls.1.cylinder.radius=0.012",
            "--set", "particles.0.region={cylinder: [0, 0.002, 0, 0, 0.17, 0, 0.010]}"]
 
@@ -31,11 +33,7 @@ REDUCED = ["--set", "particles.0.count=300", "--set", "walls.1.cylinder.radius=0
 def run(demill, scene, out, extra):
     subprocess.run([demill, "run", scene, "--out", out] + REDUCED + extra, check=True,
                    stdout=subprocess.DEVNULL)
-    s = {}
-    with open(os.path.join(out, "summary.txt")) as f:
-        for line in f:
-            key, _, value = line.strip().partition(" = ")
-            s[key] = value
+    s = read_summary(out)
     assert os.path.getsize(os.path.join(out, "repose.png")) > 0, "no repose.png"
     assert float(s["repose_fastest_m_s"]) < 0.02, s["repose_fastest_m_s"]
     print(f"{out}: angle {s['repose_angle_deg']} deg over {s['repose_fit_points']} points, "

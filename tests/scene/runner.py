@@ -45,6 +45,8 @@ import shutil
 import subprocess
 import sys
 
+from summary import read_summary
+
 SHORT = ["--set", "particles.0.mass=1", "--set", "drum.start_time=0",
          "--set", "outputs.vtk_every=0"]
 
@@ -52,14 +54,6 @@ SHORT = ["--set", "particles.0.mass=1", "--set", "drum.start_time=0",
 def run(demill, *args):
     subprocess.run([demill, "run", *args], check=True, stdout=subprocess.DEVNULL)
 
-
-def summary(folder):
-    out = {}
-    with open(os.path.join(folder, "summary.txt")) as f:
-        for line in f:
-            key, _, value = line.strip().partition(" = ")
-            out[key] = value
-    return out
 
 
 def main():
@@ -75,7 +69,7 @@ def main():
     with open(os.path.join(at("one"), "mill.csv")) as f:
         rows = list(csv.DictReader(f))
     assert len(rows) == 100, f"{len(rows)} rows, 100 samples of 1 ms in 0.1 s"
-    s = summary(at("one"))
+    s = read_summary(at("one"))
     assert int(s["particles"]) == 245, s["particles"]
     drum = sum(float(r["drum.power"]) for r in rows) / len(rows)
     classes = float(s["class_power_sum_W"])
@@ -86,7 +80,7 @@ def main():
 
     run(demill, scene, *SHORT, "--set", "stop={time: 0.1}", "--out", at("two"),
         "--set", "particles.0.sizes.classes=[[0.010, 0.5], [0.020, 0.5]]")
-    s = summary(at("two"))
+    s = read_summary(at("two"))
     p0, p1 = float(s["class_0_power_W"]), float(s["class_1_power_W"])
     assert p0 > 0 and p1 > 0, f"class powers {p0}, {p1}"
     assert abs(p0 + p1 - float(s["class_power_sum_W"])) <= 1e-5 * (p0 + p1)
@@ -103,7 +97,7 @@ def main():
     assert then == whole, "the restarted run's checkpoint differs from the unbroken run's"
     run(demill, "--restart", os.path.join(at("first"), "checkpoint"), "--set", "stop.time=0.04",
         "--set", "drum.speed_fraction=0.9", "--out", at("faster"))
-    s = summary(at("faster"))
+    s = read_summary(at("faster"))
     critical = math.sqrt(2 * 9.81 / (0.3 - 0.010))
     assert abs(float(s["critical_speed_rad_s"]) - critical) <= 1e-5 * critical
     assert abs(float(s["speed_rad_s"]) - 0.9 * critical) <= 1e-5 * critical, s["speed_rad_s"]
@@ -121,7 +115,7 @@ def main():
     # stops: an emptied hopper, a steady count of contacts
     here = os.path.dirname(os.path.abspath(__file__))
     run(demill, os.path.join(here, "hopper.yaml"), "--out", at("hopper"))
-    s = summary(at("hopper"))
+    s = read_summary(at("hopper"))
     bead = 2500 * math.pi * 0.004 ** 3 / 6
     assert float(s["emptied_s"]) < 3 - 1e-9, f"not emptied: {s['emptied_s']}"
     assert int(s["outlet_0_particles"]) == 300, s["outlet_0_particles"]
@@ -130,7 +124,7 @@ def main():
         count = [float(r["world.particle_count"]) for r in csv.DictReader(f)]
     assert all(b <= a for a, b in zip(count, count[1:])) and count[-1] == 0, count[-5:]
     run(demill, os.path.join(here, "rest.yaml"), "--out", at("rest"))
-    s = summary(at("rest"))
+    s = read_summary(at("rest"))
     assert s["steady"] == "yes" and float(s["steady_mean"]) == 1, s
     assert float(s["simulated_s"]) < 1, s["simulated_s"]
     # the same ball falling, before it touches: its centre of mass

@@ -28,17 +28,11 @@ import shutil
 import subprocess
 import sys
 
+from summary import read_summary
+
 LOADS = [6835, 13670, 27340]  # N: 25, 50 and 100 kPa on the box's 0.27340 m^2
 LID_MASS, AREA, G, MU = 50.0, 0.27340, 9.81, 0.5
 
-
-def summary(path):
-    s = {}
-    with open(path) as f:
-        for line in f:
-            key, _, value = line.strip().partition(" = ")
-            s[key] = value
-    return s
 
 
 def fit(sig, tau):
@@ -61,12 +55,12 @@ def main():
     for s in sets:
         cmd += ["--set", s]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    box = summary(os.path.join(work, "shear_box.txt"))
+    box = read_summary(os.path.join(work, "shear_box.txt"))
     for name in ("shear_stress.png", "mohr_coulomb.png"):
         assert os.path.getsize(os.path.join(work, name)) > 0, f"no {name}"
     sig, peak, res = [], [], []
     for k, load in enumerate(LOADS):
-        s = summary(os.path.join(work, box[f"run_{k}"], "summary.txt"))
+        s = read_summary(os.path.join(work, box[f"run_{k}"], "summary.txt"))
         sigma = float(s["normal_stress_Pa"])
         expected = (load + LID_MASS * G) / AREA
         print(f"load {load} N: normal stress {sigma:.1f} Pa (lid at rest: {expected:.1f}), "

@@ -16,6 +16,8 @@ import shutil
 import subprocess
 import sys
 
+from summary import read_summary
+
 
 def main():
     demill, scenes, work = sys.argv[1:4]
@@ -35,11 +37,7 @@ def main():
                              check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                              text=True)
         assert has_drum or "revolution" not in run.stderr, f"{name}: revolutions without a drum"
-        s = {}
-        with open(os.path.join(out, "summary.txt")) as f:
-            for line in f:
-                key, _, value = line.strip().partition(" = ")
-                s[key] = value
+        s = read_summary(out)
         dt = float(s["time_step_s"])
         t = float(s["simulated_s"])
         assert 0.002 - 0.5 * dt <= t < 0.003, (name, t)

@@ -29,6 +29,8 @@ import shutil
 import subprocess
 import sys
 
+from summary import read_summary
+
 D, G, MU_PAIR = 0.1, 9.81, 0.3
 REDUCED = ["particles.0.sizes={normal: [0.008, 0.0004, 0.0072, 0.0088]}",
            "particles.0.count=5800", "walls.1.motion.velocity=[0, 0.004, 0]", "stop.time=1.0",
@@ -42,11 +44,7 @@ def main():
     for s in REDUCED:
         cmd += ["--set", s]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    s = {}
-    with open(os.path.join(work, "summary.txt")) as f:
-        for line in f:
-            key, _, value = line.strip().partition(" = ")
-            s[key] = value
+    s = read_summary(work)
     assert os.path.getsize(os.path.join(work, "silo.png")) > 0, "no silo.png"
     with open(os.path.join(work, "silo.csv")) as f:
         rows = list(csv.DictReader(f))

@@ -36,6 +36,8 @@ import shutil
 import subprocess
 import sys
 
+from summary import read_summary
+
 K, F0, C = 9720.0, 9.72, 5.4
 
 
@@ -79,11 +81,7 @@ def dissipation(demill, scene, out):
                     "--set", "outputs.dissipation.window=0.02",
                     "--set", "outputs.columns=[" + ", ".join(columns) + "]"],
                    check=True, stdout=subprocess.DEVNULL)
-    s = {}
-    with open(os.path.join(out, "summary.txt")) as f:
-        for line in f:
-            key, _, value = line.strip().partition(" = ")
-            s[key] = value
+    s = read_summary(out)
     shares = {k: float(v) for k, v in s.items() if k.startswith("dissipation_share_")}
     assert len(shares) == 7, shares
     assert abs(sum(shares.values()) - 1) < 1e-5, shares

@@ -213,11 +213,7 @@ static void draw_force(cairo_t *cr, const scene *s, const conveyor_trace *tr,
     cairo_move_to(cr, kx + 38, top + 88);
     cairo_show_text(cr, "the chute's push on the particles along the belt, mean over 50 ms");
     plot_frame(cr, l, top, a.w, a.h, top + ht, wd / 2 - 30, "time t [s]");
-    cairo_save(cr);
-    cairo_move_to(cr, 28, top + 0.5 * a.h + 100);
-    cairo_rotate(cr, -0.5 * PI);
-    cairo_show_text(cr, "force along the belt [N]");
-    cairo_restore(cr);
+    plot_y_title(cr, 28, top + 0.5 * a.h + 100, "force along the belt [N]");
     free(belt);
     free(chute);
 }

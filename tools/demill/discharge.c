@@ -98,11 +98,7 @@ static int draw_discharge(const char *dir, const discharge_trace *tr, const fit 
     cairo_move_to(cr, kx + 38, tp + 90);
     cairo_show_text(cr, "mass discharged through the outlet");
     plot_frame(cr, l, tp, wd - l - r, ht - tp - bt, ht, wd / 2 - 30, "time t [s]");
-    cairo_save(cr);
-    cairo_move_to(cr, 28, tp + 0.5 * a.h + 90);
-    cairo_rotate(cr, -0.5 * PI);
-    cairo_show_text(cr, "mass discharged [kg]");
-    cairo_restore(cr);
+    plot_y_title(cr, 28, tp + 0.5 * a.h + 90, "mass discharged [kg]");
     cairo_move_to(cr, l, 32);
     snprintf(key, sizeof key,
              "Discharge of %.2f mm particles through a %.1f mm orifice; the lines pass through "

@@ -152,11 +152,7 @@ int dissipation_draw_sweep(const char *dir, const char *key, char *const *values
         cairo_show_text(cr, text);
     }
     plot_frame(cr, l, tp, a.w, a.h, ht, l + 0.5 * a.w, key);
-    cairo_save(cr);
-    cairo_move_to(cr, 26, tp + 0.5 * a.h + 110);
-    cairo_rotate(cr, -0.5 * PI);
-    cairo_show_text(cr, "share of the energy dissipated [%]");
-    cairo_restore(cr);
+    plot_y_title(cr, 26, tp + 0.5 * a.h + 110, "share of the energy dissipated [%]");
     cairo_move_to(cr, l, 32);
     cairo_show_text(cr, "Each dissipation mechanism's share of the energy the contacts dissipated "
                         "over outputs.dissipation's window");

@@ -177,19 +177,13 @@ static double janssen(double sat, double length, double z)
 static void key_line(cairo_t *cr, double kx, double ky, const double rgb[3], int dashed, int dot,
                      const char *text)
 {
-    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-    if (dot) {
-        cairo_arc(cr, kx + 15, ky, 4, 0, 2 * PI);
-        cairo_fill(cr);
-    } else {
-        if (dashed)
-            cairo_set_dash(cr, (const double[2]){8, 5}, 2, 0);
-        cairo_set_line_width(cr, 2.2);
-        cairo_move_to(cr, kx, ky);
-        cairo_line_to(cr, kx + 30, ky);
-        cairo_stroke(cr);
-        cairo_set_dash(cr, NULL, 0, 0);
+    if (!dot) {
+        plot_key(cr, kx, ky, rgb, dashed, text);
+        return;
     }
+    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
+    cairo_arc(cr, kx + 15, ky, 4, 0, 2 * PI);
+    cairo_fill(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_move_to(cr, kx + 38, ky + 4);
     cairo_show_text(cr, text);
@@ -262,11 +256,7 @@ static int draw_silo(const char *dir, const profile *p, double diameter, double 
     cairo_show_text(cr, key);
     plot_frame(cr, l, tp, wd - l - r, ht - tp - bt, ht, wd / 2 - 110,
                "depth below the surface z [m]");
-    cairo_save(cr);
-    cairo_move_to(cr, 28, tp + 0.5 * a.h + 60);
-    cairo_rotate(cr, -0.5 * PI);
-    cairo_show_text(cr, "stress [Pa]");
-    cairo_restore(cr);
+    plot_y_title(cr, 28, tp + 0.5 * a.h + 60, "stress [Pa]");
     cairo_set_source_rgb(cr, black[0], black[1], black[2]);
     cairo_move_to(cr, l, 32);
     snprintf(key, sizeof key,

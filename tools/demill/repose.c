@@ -62,11 +62,7 @@ static int draw_repose(const char *dir, const double *rho, const double *top, si
     cairo_show_text(cr, "every particle's top");
     cairo_set_source_rgb(cr, 0, 0, 0);
     plot_frame(cr, l, tp, a.w, a.h, ht, l + 0.5 * a.w - 80, "distance from the heap's axis [mm]");
-    cairo_save(cr);
-    cairo_move_to(cr, 26, tp + 0.5 * a.h + 90);
-    cairo_rotate(cr, -0.5 * PI);
-    cairo_show_text(cr, "height above the floor [mm]");
-    cairo_restore(cr);
+    plot_y_title(cr, 26, tp + 0.5 * a.h + 90, "height above the floor [mm]");
     cairo_move_to(cr, l, 32);
     snprintf(text, sizeof text,
              "The heap's surface profile; the line is fitted where it is 20-80 %% of the way from "

@@ -52,11 +52,7 @@ int series_plot(const char *dir, const char *title, const double *t, size_t n,
         snprintf(text, sizeof text, "[%s]", p[k].unit && *p[k].unit ? p[k].unit : "1");
         cairo_text_extents_t e;
         cairo_text_extents(cr, text, &e);
-        cairo_save(cr);
-        cairo_move_to(cr, 24, top + 0.5 * ph + 0.5 * e.width);
-        cairo_rotate(cr, -0.5 * PI);
-        cairo_show_text(cr, text);
-        cairo_restore(cr);
+        plot_y_title(cr, 24, top + 0.5 * ph + 0.5 * e.width, text);
     }
     const double last = tp + (double)(np ? np - 1 : 0) * (ph + gap);
     plot_frame(cr, l, last, wd - l - r, ph, ht, wd / 2 - 30, "time t [s]");

@@ -121,32 +121,6 @@ static const double colours[][3] = {{0.13, 0.37, 0.66}, {0.85, 0.37, 0.1}, {0.2,
                                     {0.6, 0.3, 0.65},   {0.5, 0.5, 0.5},   {0.75, 0.6, 0.1}};
 #define NCOLOURS (sizeof colours / sizeof colours[0])
 
-static void y_title(cairo_t *cr, double x, double y, const char *text)
-{
-    cairo_save(cr);
-    cairo_move_to(cr, x, y);
-    cairo_rotate(cr, -0.5 * PI);
-    cairo_show_text(cr, text);
-    cairo_restore(cr);
-}
-
-/* A key: a short line, dashed if asked, and its text. */
-static void key_line(cairo_t *cr, double x, double y, const double rgb[3], int dashed,
-                     const char *text)
-{
-    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-    if (dashed)
-        cairo_set_dash(cr, (const double[2]){8, 5}, 2, 0);
-    cairo_set_line_width(cr, 2.5);
-    cairo_move_to(cr, x, y);
-    cairo_line_to(cr, x + 30, y);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, NULL, 0, 0);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_move_to(cr, x + 38, y + 4);
-    cairo_show_text(cr, text);
-}
-
 /* The shear stress (kPa, top) and the lid's rise (mm, bottom) against the
  * shear displacement (mm) of n runs' curves, each with its normal stress
  * in the key, its peak marked; into dir/name. */
@@ -200,7 +174,7 @@ static int draw_curves(const char *dir, const char *name, const curve *c, size_t
         }
         snprintf(text, sizeof text, "normal stress %.1f kPa: peak %.1f kPa at %.1f mm (dot)", 1e-3 * sig,
                  c[k].n ? t[peak] : NAN, c[k].n ? dm[peak] : NAN);
-        key_line(cr, l + 20, tp + 20 + 22 * k, rgb, 0, text);
+        plot_key(cr, l + 20, tp + 20 + 22 * k, rgb, 0, text);
         free(dm);
         free(t);
         free(rs);
@@ -210,8 +184,8 @@ static int draw_curves(const char *dir, const char *name, const curve *c, size_t
     cairo_set_line_width(cr, 1.5);
     cairo_rectangle(cr, bot.l, bot.tp, bot.w, bot.h);
     cairo_stroke(cr);
-    y_title(cr, 28, tp + 0.5 * h1 + 80, "shear stress [kPa]");
-    y_title(cr, 28, bot.tp + 0.5 * h2 + 60, "lid's rise [mm]");
+    plot_y_title(cr, 28, tp + 0.5 * h1 + 80, "shear stress [kPa]");
+    plot_y_title(cr, 28, bot.tp + 0.5 * h2 + 60, "lid's rise [mm]");
     cairo_move_to(cr, l, 32);
     cairo_show_text(cr, "Direct shear: shear stress (held half's force / area) and dilation "
                         "against the shear displacement");
@@ -374,16 +348,16 @@ static int draw_mohr(const char *out, const double *sig, const double *peak, con
     }
     snprintf(text, sizeof text, "peak (the curve's largest): phi = %.1f deg, c = %.2f kPa", fit[0],
              1e-3 * fit[1]);
-    key_line(cr, l + 20, tp + 20, red, 0, text);
+    plot_key(cr, l + 20, tp + 20, red, 0, text);
     snprintf(text, sizeof text, "residual (mean over the last quarter): phi = %.1f deg, c = %.2f kPa",
              fit[2], 1e-3 * fit[3]);
-    key_line(cr, l + 20, tp + 42, blue, 0, text);
+    plot_key(cr, l + 20, tp + 42, blue, 0, text);
     if (isfinite(mu)) {
         snprintf(text, sizeof text, "contact friction: atan %.3g = %.1f deg", mu, atan(mu) * 180 / PI);
-        key_line(cr, l + 20, tp + 64, grey, 1, text);
+        plot_key(cr, l + 20, tp + 64, grey, 1, text);
     }
     plot_frame(cr, l, tp, wd - l - r, ht - tp - bt, ht, wd / 2 - 60, "normal stress [kPa]");
-    y_title(cr, 28, tp + 0.5 * (ht - tp - bt) + 70, "shear stress [kPa]");
+    plot_y_title(cr, 28, tp + 0.5 * (ht - tp - bt) + 70, "shear stress [kPa]");
     cairo_move_to(cr, l, 32);
     cairo_show_text(cr, "Direct shear: each run's peak and residual (dots), least-squares lines "
                         "tau = c + sigma tan phi");
