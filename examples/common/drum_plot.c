@@ -200,18 +200,8 @@ int draw_charge(const char *path, demill_world *w, const drum_shape *d, const ch
     }
     /* the length scale: a round length near a fifth of the diameter */
     const double len = plot_tick_step(2 * d->radius), x0 = 30, y0 = top + size + 22;
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_width(cr, 3);
-    cairo_move_to(cr, x0, y0);
-    cairo_line_to(cr, x0 + len * scale, y0);
-    cairo_move_to(cr, x0, y0 - 6);
-    cairo_line_to(cr, x0, y0 + 6);
-    cairo_move_to(cr, x0 + len * scale, y0 - 6);
-    cairo_line_to(cr, x0 + len * scale, y0 + 6);
-    cairo_stroke(cr);
     snprintf(label, sizeof label, "%g mm", len * 1e3);
-    cairo_move_to(cr, x0 + len * scale + 10, y0 + 6);
-    cairo_show_text(cr, label);
+    plot_scale_bar(cr, x0, y0, len * scale, 6, 3, label);
     /* what is drawn and how the angles are read */
     cairo_set_font_size(cr, 15);
     if (d->dim == 3)

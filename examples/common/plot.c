@@ -222,6 +222,23 @@ void plot_line_key(cairo_t *cr, const plot_area *a, double xc, double yc, double
     plot_key(cr, kx, ky, rgb, dashed, key);
 }
 
+void plot_scale_bar(cairo_t *cr, double x0, double y0, double length, double tick, double width,
+                    const char *label)
+{
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, width);
+    cairo_move_to(cr, x0, y0);
+    cairo_line_to(cr, x0 + length, y0);
+    cairo_move_to(cr, x0, y0 - tick);
+    cairo_line_to(cr, x0, y0 + tick);
+    cairo_move_to(cr, x0 + length, y0 - tick);
+    cairo_line_to(cr, x0 + length, y0 + tick);
+    cairo_stroke(cr);
+    cairo_set_line_width(cr, 1);
+    cairo_move_to(cr, x0 + length + 10, y0 + tick);
+    cairo_show_text(cr, label);
+}
+
 void plot_y_title(cairo_t *cr, double x, double y, const char *text)
 {
     cairo_save(cr);

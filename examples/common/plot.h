@@ -77,6 +77,12 @@ void plot_curve(cairo_t *cr, const plot_area *a, const double *x, const double *
 /* The straight line through (xc, yc) with the given slope over [x0, x1],
  * clipped to the area, 2.2 pixels wide in a colour, dashed if asked, and
  * its key at (kx, ky): a stroke of 30 pixels and the text after it. */
+/* A length scale: a bar `length` pixels long from (x0, y0) with end ticks
+ * of `tick` pixels either side, `width` pixels thick, and its label after
+ * it. */
+void plot_scale_bar(cairo_t *cr, double x0, double y0, double length, double tick, double width,
+                    const char *label);
+
 /* Text along the y axis, read from the bottom up, starting at (x, y). */
 void plot_y_title(cairo_t *cr, double x, double y, const char *text);
 

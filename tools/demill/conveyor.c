@@ -141,19 +141,8 @@ static int draw_side(cairo_t *cr, const scene *s, double top, double ht, double 
     plot_speed_bar(cr, left + width + 40, top + 60, ht - 140, vmax);
     /* a scale of a round length near a fifth of the width */
     const double len = plot_tick_step(width / scale), sy = top + ht - 12;
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_width(cr, 2);
-    cairo_move_to(cr, left, sy);
-    cairo_line_to(cr, left + len * scale, sy);
-    cairo_move_to(cr, left, sy - 5);
-    cairo_line_to(cr, left, sy + 5);
-    cairo_move_to(cr, left + len * scale, sy - 5);
-    cairo_line_to(cr, left + len * scale, sy + 5);
-    cairo_stroke(cr);
-    cairo_set_line_width(cr, 1);
     snprintf(label, sizeof label, "%g m", len);
-    cairo_move_to(cr, left + len * scale + 10, sy + 5);
-    cairo_show_text(cr, label);
+    plot_scale_bar(cr, left, sy, len * scale, 5, 2, label);
     snprintf(label, sizeof label,
              "The particles at t = %.2f s seen from the side (along -z), coloured by speed; "
              "the belt moves at %.2f m/s to the right",
