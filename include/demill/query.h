@@ -75,7 +75,12 @@ enum {
     DEMILL_ENERGY_POTENTIAL = 3,             /**< gravitational, -Σ m g·x (zero at the origin) */
     DEMILL_ENERGY_ELASTIC_NORMAL = 4,        /**< stored in normal springs: k δ²/2 or 8/15 E* √R* δ^{5/2} */
     DEMILL_ENERGY_ELASTIC_TANGENTIAL = 5,    /**< stored in tangential springs: k_t |ξ|²/2 */
-    DEMILL_ENERGY_WALL_WORK = 6,             /**< work done on the particles by moving walls (but the walls of bodies, whose energy terms 14 to 18 hold) */
+    /** Work done on the particles by moving walls: by their motion and by
+     *  their surfaces' velocity (demill_wall_set_surface_velocity()). For a
+     *  wall attached to a body, only its surface velocity's: the work of
+     *  the body's own motion moves energy between the particles and the
+     *  body, whose terms 14 to 18 hold it. */
+    DEMILL_ENERGY_WALL_WORK = 6,
     DEMILL_ENERGY_DISSIPATED_NORMAL = 7,     /**< by normal damping (and by the normal-force clamp) */
     DEMILL_ENERGY_DISSIPATED_TANGENTIAL = 8, /**< by the tangential dashpot and the Coulomb regularisation below the cap */
     DEMILL_ENERGY_DISSIPATED_FRICTION = 9,   /**< by sliding friction (slip at the Coulomb cap) */

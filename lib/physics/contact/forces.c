@@ -162,9 +162,10 @@ DM_INLINE void walk_walls(const int D, demill_world *w, const wall_walk *a, wall
 }
 
 /* One contact's share of its wall's force and torque (about its centre);
- * with tally, of its dissipation and the work it delivers over dt (but for
- * the walls of bodies, whose energy the account holds: what they deliver
- * comes from it). */
+ * with tally, of its dissipation and the work it delivers over dt: the
+ * force on the particle times the wall's velocity at the contact point,
+ * its surface velocity included (sum_walls() takes a body's own motion out
+ * of its walls' work). */
 DM_INLINE void wall_sum(const int D, demill_world *w, const wall_walk *a, const dm_bucket *b,
                         uint32_t p, uint32_t pid, uint32_t gk)
 {
@@ -187,14 +188,33 @@ DM_INLINE void wall_sum(const int D, demill_world *w, const wall_walk *a, const 
         wall->torque[z] += tw[c];
         work -= tw[c] * wall->omega[z];
     }
-    if (a->tally) { /* a body's walls: work within the system (bodies.c) */
+    if (a->tally) {
         wall->dissipated += g->lost[gk];
-        a->t->wall_work += wall->body ? 0.0 : work * a->dt;
+        a->t->wall_work += work * a->dt;
     }
 }
 
+/* The work of the bodies' motion through their walls over dt, -F·v dt
+ * summed over their walls (F the wall's force, v its body's velocity). */
+static double bodies_wall_work(const demill_world *w, double dt)
+{
+    double work = 0.0;
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        const dm_wall *wall = &w->walls[k];
+        if (wall->kind && wall->body)
+            for (int c = 0; c < 3; c++)
+                work -= wall->force[c] * wall->vel[c] * dt;
+    }
+    return work;
+}
+
 /* The walls' forces and torques from their contacts' results, in pair-id
- * order; with tally, their dissipation and the work they deliver over dt. */
+ * order; with tally, their dissipation and the work they deliver over dt.
+ * A body's walls move with the body's velocity (and do not turn): the work
+ * of that motion moves the body's own energy, which the account holds
+ * (bodies.c), so only the rest, their surface velocity's, comes from
+ * outside: the motion's share, Σ f·v dt over the wall's contacts (f the
+ * force on the particle), -F·v dt (bodies_wall_work()), is taken out. */
 DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_tally *t)
 {
     for (uint32_t k = 0; k < w->nwalls; k++) {
@@ -203,6 +223,8 @@ DM_INLINE void sum_walls(const int D, demill_world *w, int tally, double dt, dm_
     }
     const wall_walk a = {.tally = tally, .dt = dt, .t = t};
     walk_walls(D, w, &a, wall_sum);
+    if (tally && w->nbodies)
+        t->wall_work -= bodies_wall_work(w, dt);
 }
 
 /* One contact's share of the loads of the element it touches, if its wall

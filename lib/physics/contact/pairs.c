@@ -216,7 +216,7 @@ demill_status dm_resolve_pairs(demill_world *w, bool require_models)
     w->rotation = rotation;
     w->nkern = nkern;
     w->local_damping = local_damping;
-    if (kernels_changed || !w->nlist_valid) {
+    if (kernels_changed) {
         /* contact lists are grouped by kernel: start them afresh */
         dm_clist_clear(w);
         w->nlist_valid = false;
