@@ -99,7 +99,12 @@ DM_INLINE void dm_contact_velocity(const int D, const int SPIN, const double *va
     }
 }
 
-/* Whether particles i and j touch; d receives x_j - x_i, *r2 its square. */
+/* Whether particles i and j touch: whether their overlap, as dm_pp_kin()
+ * computes it, r_i + r_j - √|d|², is > 0, as the law requires (law.h) and
+ * as a wall's is (dm_pw_chunk). The test on the squares, |d|² < (r_i + r_j)²,
+ * also passes the pairs whose distance rounds to r_i + r_j, an overlap of
+ * exactly 0, at which the first sample's entry weight is infinite against a
+ * dashpot force of 0: NaN. d receives x_j - x_i, *r2 its square. */
 DM_INLINE int dm_pp_touch(const int D, const dm_particles *P, uint32_t i, uint32_t j, double *d,
                           double *r2)
 {
@@ -111,7 +116,7 @@ DM_INLINE int dm_pp_touch(const int D, const dm_particles *P, uint32_t i, uint32
     }
     const double sum = P->r[i] + P->r[j];
     *r2 = s;
-    return s < sum * sum;
+    return sum - sqrt(s) > 0.0;
 }
 
 /* Particle-particle kinematics of a touching pair, from d = x_j - x_i and
