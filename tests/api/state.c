@@ -359,19 +359,7 @@ static void same_observed(demill_world *a, demill_world *b, const char *what)
     }
     free(fa);
     free(fb);
-    /* the clumps, in slot order */
-    demill_id ca[16], cb[16];
-    DM_OK(a, demill_world_ids(a, DEMILL_KIND_CLUMP, ca, 16, &n));
-    DM_OK(b, demill_world_ids(b, DEMILL_KIND_CLUMP, cb, 16, &m));
-    ck_assert_uint_eq(n, m);
-    for (size_t k = 0; k < n; k++)
-        for (int32_t f = DEMILL_CLUMP_POSITION; f <= DEMILL_CLUMP_MASS; f++) {
-            double va[4], vb[4];
-            DM_OK(a, demill_clump_get(a, ca[k], f, va));
-            DM_OK(b, demill_clump_get(b, cb[k], f, vb));
-            ck_assert_msg(!memcmp(va, vb, (size_t)demill_clump_field_size(f) * sizeof *va),
-                          "%s: clump %zu's field %d differs", what, k, (int)f);
-        }
+    dm_test_check_same_clumps(a, b, what); /* the clumps, in slot order */
     for (int32_t e = DEMILL_ENERGY_KINETIC_TRANSLATIONAL; e <= DEMILL_ENERGY_ELASTIC_ROLLING;
          e++) {
         double ea, eb;

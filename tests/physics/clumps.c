@@ -429,20 +429,7 @@ END_TEST
 static void same_clumps(demill_world *a, demill_world *b, int way, void *ctx)
 {
     (void)ctx;
-    demill_id ca[128], cb[128];
-    size_t na, nb;
-    DM_OK(a, demill_world_ids(a, DEMILL_KIND_CLUMP, ca, 128, &na));
-    DM_OK(b, demill_world_ids(b, DEMILL_KIND_CLUMP, cb, 128, &nb));
-    ck_assert_uint_eq(na, nb);
-    for (size_t k = 0; k < na; k++)
-        for (int32_t f = DEMILL_CLUMP_POSITION; f <= DEMILL_CLUMP_MASS; f++) {
-            double va[4], vb[4];
-            DM_OK(a, demill_clump_get(a, ca[k], f, va));
-            DM_OK(b, demill_clump_get(b, cb[k], f, vb));
-            ck_assert_msg(!memcmp(va, vb, (size_t)demill_clump_field_size(f) * sizeof *va),
-                          "%s: clump %zu's field %d differs", way ? "snapshot" : "checkpoint", k,
-                          (int)f);
-        }
+    dm_test_check_same_clumps(a, b, way ? "snapshot" : "checkpoint");
 }
 
 START_TEST(snapshot_restores_clumps)

@@ -294,3 +294,20 @@ void dm_test_check_no_overlap(size_t n, const double *x, const double *r, const 
         }
     ck_assert_msg(!bad, "%zu pairs overlap, the first particles %zu and %zu", bad, bi, bj);
 }
+
+void dm_test_check_same_clumps(demill_world *a, demill_world *b, const char *what)
+{
+    demill_id ca[128], cb[128];
+    size_t na, nb;
+    DM_OK(a, demill_world_ids(a, DEMILL_KIND_CLUMP, ca, 128, &na));
+    DM_OK(b, demill_world_ids(b, DEMILL_KIND_CLUMP, cb, 128, &nb));
+    ck_assert_uint_eq(na, nb);
+    for (size_t k = 0; k < na; k++)
+        for (int32_t f = DEMILL_CLUMP_POSITION; f <= DEMILL_CLUMP_MASS; f++) {
+            double va[4], vb[4];
+            DM_OK(a, demill_clump_get(a, ca[k], f, va));
+            DM_OK(b, demill_clump_get(b, cb[k], f, vb));
+            ck_assert_msg(!memcmp(va, vb, (size_t)demill_clump_field_size(f) * sizeof *va),
+                          "%s: clump %zu's field %d differs", what, k, (int)f);
+        }
+}

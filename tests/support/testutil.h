@@ -126,4 +126,9 @@ dm_collision dm_test_hit_fixed(demill_world *w, demill_id mat, double r, double 
  * with one assertion at the end (each costs Check a write). */
 void dm_test_check_no_overlap(size_t n, const double *x, const double *r, const demill_id *clump);
 
+/* Asserts that worlds a and b hold as many clumps (at most 128) and that
+ * every field of each, in slot order, is bitwise the same; what names the
+ * comparison in a failure's message. */
+void dm_test_check_same_clumps(demill_world *a, demill_world *b, const char *what);
+
 #endif
