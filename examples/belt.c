@@ -10,14 +10,11 @@
  * horizontal force over each 10 ms, mass fed and discharged) and belt.png
  * (the particles seen from the side coloured by speed, over the force
  * against time) to the output folder. Run `belt --help` for the options. */
-#define _POSIX_C_SOURCE 200809L /* mkdir */
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include <demill.h>
 
@@ -94,10 +91,8 @@ int main(int argc, char **argv)
             return EXIT_FAILURE;
         }
     }
-    if (mkdir(out, 0777) && errno != EEXIST) {
-        perror(out);
+    if (example_make_dir(out))
         return EXIT_FAILURE;
-    }
     demill_world *w;
     if (demill_world_create(3, &w) != DEMILL_OK) {
         fprintf(stderr, "belt: cannot create a world\n");

@@ -17,15 +17,12 @@
  * reads the file's triangles itself (ASCII or binary STL, without the
  * library's checks). Run `mesh_clump --help` for the options.
  */
-#define _POSIX_C_SOURCE 200809L /* mkdir */
 
-#include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 
 #include <demill.h>
@@ -271,10 +268,8 @@ int main(int argc, char **argv)
     options o;
     if (parse_options(argc, argv, &o))
         return EXIT_FAILURE;
-    if (mkdir(o.out, 0777) && errno != EEXIST) {
-        perror(o.out);
+    if (example_make_dir(o.out))
         return EXIT_FAILURE;
-    }
     size_t nt;
     double *corners = read_corners(o.stl, &nt);
     if (!corners)

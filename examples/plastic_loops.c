@@ -11,14 +11,11 @@
  * N) and plastic-loops.png (the three laws side by side) to the output
  * folder, and prints each law's plastic work (DEMILL_ENERGY_DISSIPATED_PLASTIC)
  * with its residual overlap. Run `plastic_loops --help` for the options. */
-#define _POSIX_C_SOURCE 200809L /* mkdir */
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include <demill.h>
 
@@ -110,10 +107,8 @@ int main(int argc, char **argv)
             return EXIT_FAILURE;
         }
     }
-    if (mkdir(out, 0777) && errno != EEXIST) {
-        perror(out);
+    if (example_make_dir(out))
         return EXIT_FAILURE;
-    }
     /* δ_y = R* (π p_y/(2 E*))² with p_y = 1.6 σ_y, R* = R and
      * E* = E/(2 (1 - ν²)) (a sphere on a plane of its own material) */
     const double e_star = E_MODULUS / (2 * (1 - NU * NU)), s = PI * 1.6 * SIGMA_Y / (2 * e_star);

@@ -9,14 +9,11 @@
  * and each other take its energy. Writes displacement.csv (time, the box's
  * displacement empty and with balls) and spring-box.png (both against
  * time) to the output folder. Run `spring_box --help` for the options. */
-#define _POSIX_C_SOURCE 200809L /* mkdir */
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include <demill.h>
 
@@ -137,10 +134,8 @@ int main(int argc, char **argv)
             return EXIT_FAILURE;
         }
     }
-    if (mkdir(out, 0777) && errno != EEXIST) {
-        perror(out);
+    if (example_make_dir(out))
         return EXIT_FAILURE;
-    }
     series empty = {0}, full = {0};
     run(0, time, &empty);
     run((size_t)balls, time, &full);

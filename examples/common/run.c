@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 #include "run.h"
@@ -130,5 +131,14 @@ int32_t progress_show(void *user, uint64_t steps_done, uint64_t steps_total, dou
             p->tty ? "\r" : "", example_program, bar, 100 * frac, time, turns,
             p->rate * p->particles / 1e6, (int)(eta / 60), (int)fmod(eta, 60),
             p->tty ? "  " : "\n");
+    return 0;
+}
+
+int example_make_dir(const char *path)
+{
+    if (mkdir(path, 0777) && errno != EEXIST) {
+        fprintf(stderr, "%s: cannot make %s: %s\n", example_program, path, strerror(errno));
+        return -1;
+    }
     return 0;
 }

@@ -13,6 +13,10 @@
 /* The program's name, which starts its messages, and the world whose last
  * error check() reports; main sets both. */
 extern const char *example_program;
+
+/* Makes the folder path unless it exists: 0, or -1 with a message
+ * "PROGRAM: cannot make PATH: ..." on stderr. */
+int example_make_dir(const char *path);
 extern demill_world *example_world;
 
 /* The value of option argv[*k], which *k then indexes: for --help or -h,

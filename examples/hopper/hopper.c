@@ -22,14 +22,11 @@
  * time step is stable: the 2500 beads settle and discharge in about 13 s of
  * one core.
  */
-#define _POSIX_C_SOURCE 200809L /* mkdir */
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include <demill.h>
 
@@ -253,10 +250,8 @@ int main(int argc, char **argv)
     options o;
     if (parse_options(argc, argv, &o))
         return EXIT_FAILURE;
-    if (mkdir(o.out, 0777) && errno != EEXIST) {
-        perror(o.out);
+    if (example_make_dir(o.out))
         return EXIT_FAILURE;
-    }
     const double t_wall0 = now();
     demill_world *w;
     if (demill_world_create(3, &w) != DEMILL_OK) {

@@ -3,14 +3,12 @@
  * checkpoint; writes a time series, a summary, VTK files, pictures and a
  * checkpoint to the output folder, with the progress bar of the mill
  * example (examples/common/run.c) and its pictures (examples/mill/output.c). */
-#define _POSIX_C_SOURCE 200809L /* mkdir, isatty, strdup */
+#define _POSIX_C_SOURCE 200809L /* isatty, strdup */
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "clumps.h"
@@ -73,15 +71,6 @@ typedef struct run_args {
     const char *set[MAX_SETS];
     size_t nset;
 } run_args;
-
-static int make_dir(const char *path)
-{
-    if (mkdir(path, 0777) && errno != EEXIST) {
-        fprintf(stderr, "demill: cannot make %s: %s\n", path, strerror(errno));
-        return -1;
-    }
-    return 0;
-}
 
 static void folder_of(const char *path, char *dir, size_t len)
 {
@@ -282,7 +271,7 @@ static int run_one(const run_args *a, char **summary)
     }
     demill_world *w = s.w;
     example_world = w;
-    if (make_dir(a->out))
+    if (example_make_dir(a->out))
         return -1;
     {
         FILE *f = output_open(a->out, "scene.yaml");
@@ -687,7 +676,7 @@ static int run_sweep(run_args *a, size_t which)
         }
     }
     strcpy(values, eq + 1);
-    if (make_dir(base_out)) {
+    if (example_make_dir(base_out)) {
         free(values);
         return -1;
     }
