@@ -13,14 +13,12 @@
  * balls, at random orientations, to the same mass or filling. Run
  * `mill --help` for the options.
  */
-#define _POSIX_C_SOURCE 200809L /* mkdir, isatty */
+#define _POSIX_C_SOURCE 200809L /* isatty */
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "drum_plot.h"
@@ -215,10 +213,8 @@ int main(int argc, char **argv)
     shape_def spheres;
     if (o.shape && shape_read(o.shape, &spheres))
         return EXIT_FAILURE;
-    if (mkdir(o.out, 0777) && errno != EEXIST) {
-        perror(o.out);
+    if (example_make_dir(o.out))
         return EXIT_FAILURE;
-    }
     const double t_wall0 = now();
 
     /* the world, its steel, and the drum */
