@@ -54,6 +54,7 @@ void dm_nlist_free(demill_world *w)
         free(g->pb[t].j);
         free(g->pb[t].t);
         free(g->pb[t].k);
+        free(g->pb[t].walls);
     }
     free(g->pb);
     free(w->wg.nrm);
@@ -175,22 +176,27 @@ static const int stencil_rows[5][2] = {{0, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
 
 #define SCAN_BLOCK 64
 
+/* Room for one more pair in a range's buffer (0; -1 when out of memory). */
+static __attribute__((noinline)) int pairbuf_grow(dm_pairbuf *pb)
+{
+    size_t cap = dm_grown_capacity(pb->cap, (size_t)pb->n + 1);
+    void **const arrays[] = {(void **)&pb->i, (void **)&pb->j, (void **)&pb->k, (void **)&pb->t};
+    const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint16_t),
+                            sizeof(uint32_t)};
+    if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 4, cap)) {
+        pb->failed = true;
+        return -1;
+    }
+    pb->cap = (uint32_t)cap;
+    return 0;
+}
+
 /* A pair of kernel k (plus DM_KERNELS for particle-wall pairs), with its
  * mesh element t (0 but for a mesh wall). */
-static void pairbuf_push(dm_pairbuf *pb, uint32_t i, uint32_t j, uint32_t t, int k)
+static inline void pairbuf_push(dm_pairbuf *pb, uint32_t i, uint32_t j, uint32_t t, int k)
 {
-    if (pb->n == pb->cap) {
-        size_t cap = dm_grown_capacity(pb->cap, (size_t)pb->n + 1);
-        void **const arrays[] = {(void **)&pb->i, (void **)&pb->j, (void **)&pb->k,
-                                 (void **)&pb->t};
-        const size_t sizes[] = {sizeof(uint32_t), sizeof(uint32_t), sizeof(uint16_t),
-                                sizeof(uint32_t)};
-        if (cap > UINT32_MAX || dm_grow_arrays(arrays, sizes, 4, cap)) {
-            pb->failed = true;
-            return;
-        }
-        pb->cap = (uint32_t)cap;
-    }
+    if (pb->n == pb->cap && pairbuf_grow(pb))
+        return;
     pb->i[pb->n] = i;
     pb->j[pb->n] = j;
     pb->t[pb->n] = t;
@@ -199,13 +205,13 @@ static void pairbuf_push(dm_pairbuf *pb, uint32_t i, uint32_t j, uint32_t t, int
 }
 
 /* Lists the pairs of particle i with particles j0..j1-1 that are within
- * reach; with clumps, not those of two members of one clump (compiled
- * twice, so that a world without clumps pays nothing for the test). */
+ * reach; with clumps, not those of two members of one clump (compiled for
+ * each dimension D, and twice, so that a world without clumps pays nothing
+ * for the test). */
 static inline __attribute__((always_inline)) void
 scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t j0, uint32_t j1,
-         const bool clumps)
+         const int D, const bool clumps)
 {
-    const int D = w->dim;
     const dm_particles *P = &w->p;
     const double *x = P->x, *r = P->r, *xi = P->x + D * i;
     const double ri = r[i] + w->skin + w->cohesion_reach;
@@ -240,11 +246,11 @@ scan_row(const demill_world *w, dm_pairbuf *pb, uint32_t i, uint32_t j0, uint32_
  * the stencil (its own row from the particle on). */
 static inline __attribute__((always_inline)) void
 scan_cell(const demill_world *w, dm_pairbuf *pb, uint32_t b0, uint32_t b1, int nr,
-          const uint32_t *lo, const uint32_t *hi, const bool clumps)
+          const uint32_t *lo, const uint32_t *hi, const int D, const bool clumps)
 {
     for (uint32_t i = b0; i < b1; i++)
         for (int q = 0; q < nr; q++)
-            scan_row(w, pb, i, q ? lo[q] : i + 1, hi[q], clumps);
+            scan_row(w, pb, i, q ? lo[q] : i + 1, hi[q], D, clumps);
 }
 
 /* A mesh element near a particle: a candidate pair (dm_mesh_near). */
@@ -258,6 +264,42 @@ static void push_element(void *ctx, uint32_t t)
 {
     const near_args *a = ctx;
     pairbuf_push(a->pb, a->i, a->wall, t, a->k);
+}
+
+/* Particles adjacent in storage, so near in space, whose wall candidates
+ * are looked for together. */
+#define WALL_BLOCK 32
+
+/* The walls (slots, into `walls`, in increasing order) that some particle of
+ * b0..b1-1 may be a candidate of: all but those that keep clear of the
+ * particles' bounding box by more than the largest reach among them (a
+ * lower bound of the test each particle then makes, so that the candidates
+ * are the same). */
+static uint32_t block_walls(const demill_world *w, uint32_t *walls, uint32_t b0, uint32_t b1,
+                            double skin)
+{
+    const int D = w->dim;
+    const double *x = w->p.x;
+    double lo[3], hi[3], rmax = 0.0, finite = 0.0;
+    for (int c = 0; c < D; c++)
+        lo[c] = hi[c] = x[D * b0 + c];
+    for (uint32_t i = b0; i < b1; i++) {
+        for (int c = 0; c < D; c++) {
+            const double xc = x[D * i + c];
+            lo[c] = xc < lo[c] ? xc : lo[c];
+            hi[c] = xc > hi[c] ? xc : hi[c];
+            finite += xc - xc; /* NaN for an infinite or NaN coordinate */
+        }
+        rmax = w->p.r[i] > rmax ? w->p.r[i] : rmax;
+    }
+    const double reach = rmax + skin;
+    uint32_t nw = 0;
+    for (uint32_t k = 0; k < w->nwalls; k++) {
+        const dm_wall *wall = &w->walls[k];
+        if (wall->kind && !(finite == 0.0 && dm_wall_box_bound(wall, lo, hi, D) >= reach))
+            walls[nw++] = k;
+    }
+    return nw;
 }
 
 typedef struct search_args {
@@ -315,10 +357,14 @@ static void search_range(demill_world *w, void *arg, int t, uint32_t begin, uint
             lo[nr] = start[base + x0];
             hi[nr++] = start[base + x1 + 1];
         }
-        if (w->live_clumps)
-            scan_cell(w, pb, b0, b1, nr, lo, hi, true);
+        if (w->dim == 3 && !w->live_clumps)
+            scan_cell(w, pb, b0, b1, nr, lo, hi, 3, false);
+        else if (w->dim == 3)
+            scan_cell(w, pb, b0, b1, nr, lo, hi, 3, true);
+        else if (!w->live_clumps)
+            scan_cell(w, pb, b0, b1, nr, lo, hi, 2, false);
         else
-            scan_cell(w, pb, b0, b1, nr, lo, hi, false);
+            scan_cell(w, pb, b0, b1, nr, lo, hi, 2, true);
     }
 
     const int D = w->dim;
@@ -326,29 +372,43 @@ static void search_range(demill_world *w, void *arg, int t, uint32_t begin, uint
     const dm_pairparam *tab = w->ptab;
     const uint32_t nm = w->nmat_tab;
     const double skin = w->skin + w->cohesion_reach;
-    for (uint32_t i = start[c0], i1 = start[cell]; i < i1; i++)
-        for (uint32_t k = 0; k < w->nwalls && !dm_particle_fixed(P, i); k++) {
-            const dm_wall *wall = &w->walls[k];
-            if (wall->kind == DM_WALL_MESH) { /* each element within reach */
-                const int kern = tab[P->mat[i] * nm + wall->material].kernel;
-                near_args na = {pb, i, k, kern + DM_KERNELS};
-                if (kern >= 0)
-                    dm_mesh_near(wall, P->x + D * i, D, P->r[i] + skin, push_element, &na);
-                continue;
-            }
-            const double *x = P->x + D * i, reach = P->r[i] + skin;
-            if (!wall->kind || dm_wall_distance_bound(wall, x, D) >= reach)
-                continue;
-            /* a finite wall's bounding sphere holds every particle it
-             * surrounds (in a silo, a can): of those, only the ones near its
-             * surface */
-            if ((wall->kind == DM_WALL_REVOLVED || wall->kind == DM_WALL_RECT) &&
-                dm_wall_distance(wall, x, D) >= reach)
-                continue;
-            const int kern = tab[P->mat[i] * nm + wall->material].kernel;
-            if (kern >= 0)
-                pairbuf_push(pb, i, k, 0, kern + DM_KERNELS);
+    if (pb->wcap < w->nwalls) {
+        uint32_t *walls = realloc(pb->walls, (size_t)w->nwalls * sizeof *walls);
+        if (!walls) {
+            pb->failed = true;
+            return;
         }
+        pb->walls = walls;
+        pb->wcap = w->nwalls;
+    }
+    for (uint32_t b0 = start[c0], i1 = start[cell]; b0 < i1; b0 += WALL_BLOCK) {
+        const uint32_t b1 = i1 - b0 < WALL_BLOCK ? i1 : b0 + WALL_BLOCK;
+        const uint32_t nw = block_walls(w, pb->walls, b0, b1, skin);
+        for (uint32_t i = b0; i < b1; i++)
+            for (uint32_t q = 0; q < nw && !dm_particle_fixed(P, i); q++) {
+                const uint32_t k = pb->walls[q];
+                const dm_wall *wall = &w->walls[k];
+                if (wall->kind == DM_WALL_MESH) { /* each element within reach */
+                    const int kern = tab[P->mat[i] * nm + wall->material].kernel;
+                    near_args na = {pb, i, k, kern + DM_KERNELS};
+                    if (kern >= 0)
+                        dm_mesh_near(wall, P->x + D * i, D, P->r[i] + skin, push_element, &na);
+                    continue;
+                }
+                const double *x = P->x + D * i, reach = P->r[i] + skin;
+                if (dm_wall_distance_bound(wall, x, D) >= reach)
+                    continue;
+                /* a finite wall's bounding sphere holds every particle it
+                 * surrounds (in a silo, a can): of those, only the ones near its
+                 * surface */
+                if ((wall->kind == DM_WALL_REVOLVED || wall->kind == DM_WALL_RECT) &&
+                    dm_wall_distance(wall, x, D) >= reach)
+                    continue;
+                const int kern = tab[P->mat[i] * nm + wall->material].kernel;
+                if (kern >= 0)
+                    pairbuf_push(pb, i, k, 0, kern + DM_KERNELS);
+            }
+    }
 }
 
 /* Range t's pairs into the buckets, at the places the counts of the ranges

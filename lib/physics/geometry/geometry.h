@@ -54,6 +54,9 @@ void dm_perpendicular(const double n[3], double q[3]);
 double dm_wall_distance(const dm_wall *wall, const double *x, int dim);
 /* A lower bound of dm_wall_distance(), cheaper. */
 double dm_wall_distance_bound(const dm_wall *wall, const double *x, int dim);
+/* A lower bound of dm_wall_distance_bound() at every point of the box lo..hi
+ * (dim components, finite), exact in floating point; -HUGE_VAL for a mesh. */
+double dm_wall_box_bound(const dm_wall *wall, const double *lo, const double *hi, int dim);
 /* Sets a finite wall's bounding sphere (bh, brad) from its shape. */
 void dm_wall_finite_bound(dm_wall *wall);
 /* The walls' largest shift since the last neighbour build, and the mark of

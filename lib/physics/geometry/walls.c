@@ -470,6 +470,58 @@ double dm_wall_distance_bound(const dm_wall *wall, const double *x, int dim)
     return sqrt(dx * dx + dy * dy) - wall->brad;
 }
 
+/* The smallest |d| over the interval a..b of d. */
+static double least_abs(double a, double b)
+{
+    return a > 0.0 ? a : b < 0.0 ? -b : 0.0;
+}
+
+/* A lower bound of dm_wall_distance_bound() at every point of the box lo..hi
+ * (finite). It runs the same operations in the same order on the box's
+ * nearest corner (or on 0 where the box spans the centre): each is monotone
+ * in its operands in floating point (a difference, a product by a constant
+ * or by itself, a sum, a square root), so the rounded bound at any point of
+ * the box is at least the rounded bound here. */
+double dm_wall_box_bound(const dm_wall *wall, const double *lo, const double *hi, int dim)
+{
+    switch (wall->kind) {
+    case DM_WALL_PLANE: {
+        double d = 0.0;
+        for (int c = 0; c < dim; c++) {
+            const double a = (lo[c] - wall->p[c]) * wall->n[c],
+                         b = (hi[c] - wall->p[c]) * wall->n[c];
+            d += a < b ? a : b;
+        }
+        return d;
+    }
+    case DM_WALL_SHELL: {
+        const double rx = fmax(fabs(lo[0] - wall->c[0]), fabs(hi[0] - wall->c[0]));
+        const double ry = fmax(fabs(lo[1] - wall->c[1]), fabs(hi[1] - wall->c[1]));
+        return wall->radius - sqrt(rx * rx + ry * ry);
+    }
+    case DM_WALL_PRISM: {
+        const double dx = least_abs(lo[0] - wall->c[0] - wall->bc[0],
+                                    hi[0] - wall->c[0] - wall->bc[0]);
+        const double dy = least_abs(lo[1] - wall->c[1] - wall->bc[1],
+                                    hi[1] - wall->c[1] - wall->bc[1]);
+        return sqrt(dx * dx + dy * dy) - wall->brad;
+    }
+    case DM_WALL_REVOLVED:
+    case DM_WALL_RECT: {
+        if (dim != 3)
+            break;
+        double b[3], d2 = 0.0;
+        bound_centre(wall, b);
+        for (int c = 0; c < 3; c++) {
+            const double d = least_abs(lo[c] - b[c], hi[c] - b[c]);
+            d2 += d * d;
+        }
+        return sqrt(d2) - wall->brad;
+    }
+    }
+    return -HUGE_VAL;
+}
+
 /* A finite wall's bounding sphere (bh, brad) from its shape: about the
  * middle of the segment's heights, or the rectangle's centre. */
 void dm_wall_finite_bound(dm_wall *wall)

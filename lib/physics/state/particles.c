@@ -58,6 +58,28 @@ void dm_particles_free(demill_world *w)
     dm_handles_free(&w->ph);
 }
 
+/* Reorders an array of n records of `size` doubles (a constant where
+ * inlined, so that a record moves as that many doubles), through s. */
+static inline __attribute__((always_inline)) void
+permute_records(double *a, double *s, const uint32_t *order, uint32_t n, const int size)
+{
+    for (uint32_t k = 0; k < n; k++)
+        for (int c = 0; c < size; c++)
+            s[(size_t)size * k + c] = a[(size_t)size * order[k] + c];
+    memcpy(a, s, (size_t)size * n * sizeof *s);
+}
+
+/* The same for records of 1, 2 or 3 doubles. */
+static void permute_doubles(double *a, double *s, const uint32_t *order, uint32_t n, int size)
+{
+    if (size == 3)
+        permute_records(a, s, order, n, 3);
+    else if (size == 2)
+        permute_records(a, s, order, n, 2);
+    else
+        permute_records(a, s, order, n, 1);
+}
+
 /* Reorders storage so that new slot k holds old slot order[k]. */
 void dm_particles_permute(demill_world *w, const uint32_t *order)
 {
@@ -68,23 +90,14 @@ void dm_particles_permute(demill_world *w, const uint32_t *order)
         return;
     double *s = w->grid.scratch;
     double *vec[] = {P->x, P->v, P->f, P->vp};
-    for (size_t a = 0; a < 4; a++) {
-        for (uint32_t k = 0; k < n; k++)
-            memcpy(s + (size_t)D * k, vec[a] + (size_t)D * order[k], (size_t)D * sizeof *s);
-        memcpy(vec[a], s, (size_t)D * n * sizeof *s);
-    }
+    for (size_t a = 0; a < 4; a++)
+        permute_doubles(vec[a], s, order, n, D);
     double *ang[] = {P->w, P->t, P->wp};
-    for (size_t a = 0; a < 3; a++) {
-        for (uint32_t k = 0; k < n; k++)
-            memcpy(s + (size_t)W * k, ang[a] + (size_t)W * order[k], (size_t)W * sizeof *s);
-        memcpy(ang[a], s, (size_t)W * n * sizeof *s);
-    }
+    for (size_t a = 0; a < 3; a++)
+        permute_doubles(ang[a], s, order, n, W);
     double *sc[] = {P->theta, P->r, P->m, P->im, P->iinv, P->q[0], P->q[1], P->q[2], P->q[3]};
-    for (size_t a = 0; a < (w->dim == 3 ? 9u : 5u); a++) {
-        for (uint32_t k = 0; k < n; k++)
-            s[k] = sc[a][order[k]];
-        memcpy(sc[a], s, n * sizeof *s);
-    }
+    for (size_t a = 0; a < (w->dim == 3 ? 9u : 5u); a++)
+        permute_doubles(sc[a], s, order, n, 1);
     uint16_t *m16 = (uint16_t *)s;
     for (uint32_t k = 0; k < n; k++)
         m16[k] = P->mat[order[k]];

@@ -325,6 +325,7 @@ typedef struct dm_pairbuf {
     uint32_t n, cap;
     bool failed;                       /* out of memory */
     uint32_t next[2 * DM_KERNELS];     /* count per kernel, then where the next goes */
+    uint32_t *walls, wcap;             /* the walls a block of particles may reach */
 } dm_pairbuf;
 
 typedef struct dm_grid {
