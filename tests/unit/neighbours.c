@@ -379,6 +379,54 @@ START_TEST(history_follows_pairs)
 }
 END_TEST
 
+/* A drum's shell, end caps and 8 lifters (prisms) about particles spread
+ * over its inside: each wall's list holds exactly the particles that the
+ * per-particle test keeps (its distance bound within r + skin, for a
+ * lifter the distance from the circle about its section), so that testing
+ * blocks of particles first by their box (dm_wall_box_bound) drops none. */
+START_TEST(drum_walls_match_per_particle_test)
+{
+    srand(7);
+    for (int dim = 2; dim <= 3; dim++) {
+        demill_id m, drum, id;
+        demill_world *w = dm_test_world(dim, DEMILL_NORMAL_LINEAR, DEMILL_DAMPING_RESTITUTION, &m);
+        DM_OK(w, demill_drum_create(w, m, &drum));
+        DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_LIFTERS, 8));
+        const uint32_t n = 1500;
+        for (uint32_t i = 0; i < n; i++) { /* uniform over the section, the length in 3D */
+            const double rho = 0.15 * sqrt(urand()), phi = 2 * M_PI * urand();
+            double x[3] = {rho * cos(phi), rho * sin(phi), dim == 3 ? 0.1 * (urand() - 0.5) : 0};
+            const double r = 0.002 * (1 + urand());
+            DM_OK(w, demill_particles_add(w, m, 1, x, &r, NULL, 0, &id));
+        }
+        DM_OK(w, dm_resolve_pairs(w, true));
+        DM_OK(w, dm_nlist_build(w));
+        const dm_particles *P = &w->p;
+        const int D = w->dim;
+        size_t listed = 0, want = 0;
+        for (int k = 0; k < DM_KERNELS; k++)
+            listed += w->pw.b[k].n;
+        for (uint32_t i = 0; i < n; i++)
+            for (uint32_t k = 0; k < w->nwalls; k++) {
+                const int kept = w->walls[k].kind &&
+                                 dm_wall_distance_bound(&w->walls[k], P->x + D * i, D) <
+                                     P->r[i] + w->skin;
+                want += kept;
+                int found = 0;
+                for (int q = 0; q < DM_KERNELS && !found; q++)
+                    for (uint32_t p = 0; p < w->pw.b[q].n; p++)
+                        found |= w->pw.b[q].i[p] == i && w->pw.b[q].j[p] == k;
+                ck_assert_msg(found == kept, "%dD: particle %u and wall %u: listed %d, kept %d",
+                              dim, i, k, found, kept);
+            }
+        ck_assert_uint_eq(listed, want);
+        /* the shell, the lifters and in 3D the caps each have candidates */
+        ck_assert_msg(want > n / 10, "only %zu wall candidates: test too sparse", want);
+        demill_world_destroy(w);
+    }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("neighbours");
@@ -386,6 +434,7 @@ int main(void)
     tcase_add_test(tc, grid_matches_all_pairs);
     tcase_add_test(tc, history_follows_pairs);
     tcase_add_test(tc, mesh_candidates_match_all_elements);
+    tcase_add_test(tc, drum_walls_match_per_particle_test);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }
