@@ -52,9 +52,11 @@ int dm_results_reserve(demill_world *w);
 void dm_results_layout(demill_world *w);
 void dm_results_free(demill_world *w);
 /* Gravity and every contact's force at the current state, the dashpots
- * seeing velocities vp, wp; dt_hist: the time over which springs grow. */
+ * seeing velocities vp, wp; dt_hist: the time over which springs grow;
+ * preset: the forces already hold the particles' weights m g and the
+ * torques 0 (the drift set them). */
 void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
-               int tally);
+               int tally, int preset);
 
 /* After a step of dt whose forces dm_forces() has just evaluated, friction
  * seeing velocities vp, wp: the loads of the walls that record them

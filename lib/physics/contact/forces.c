@@ -53,10 +53,11 @@ int dm_kernel_hist_size(int kernel, int dim)
     return dm_law_hist_size(l.normal, l.damping, l.tangential, l.rolling, dim);
 }
 
-/* The forces and torques of particles p0 .. p1-1: gravity, then the
- * results of their pairs in pair-id order, which is the order of a walk
- * through the chunks' lists of pairs with results. The walk starts at the
- * first pair that can reach p0 (j - i is at most the bucket's span). */
+/* The forces and torques of particles p0 .. p1-1: gravity (init_forces(),
+ * unless the drift has set it, preset), then the results of their pairs in
+ * pair-id order, which is the order of a walk through the chunks' lists of
+ * pairs with results. The walk starts at the first pair that can reach p0
+ * (j - i is at most the bucket's span). */
 DM_INLINE void init_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1)
 {
     const int W = D == 3 ? 3 : 1;
@@ -72,14 +73,15 @@ DM_INLINE void init_forces(const int D, demill_world *w, uint32_t p0, uint32_t p
     }
 }
 
-DM_INLINE void sum_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1)
+DM_INLINE void sum_forces(const int D, demill_world *w, int preset, uint32_t p0, uint32_t p1)
 {
     const int W = D == 3 ? 3 : 1, S = D + 2 * W;
     dm_particles *P = &w->p;
     const dm_results *q = &w->res;
     const double *restrict out = q->out;
     double *restrict f = P->f, *restrict tq = P->t;
-    init_forces(D, w, p0, p1);
+    if (!preset)
+        init_forces(D, w, p0, p1);
     for (int side = 0; side < 2; side++)
         for (int k = 0; k < w->nkern; k++) {
             const dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
@@ -121,14 +123,14 @@ DM_INLINE void sum_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1
 
 static void sum_forces2(demill_world *w, void *arg, int t, uint32_t p0, uint32_t p1)
 {
-    (void)arg, (void)t;
-    sum_forces(2, w, p0, p1);
+    (void)t;
+    sum_forces(2, w, *(const int *)arg, p0, p1);
 }
 
 static void sum_forces3(demill_world *w, void *arg, int t, uint32_t p0, uint32_t p1)
 {
-    (void)arg, (void)t;
-    sum_forces(3, w, p0, p1);
+    (void)t;
+    sum_forces(3, w, *(const int *)arg, p0, p1);
 }
 
 /* What the walks over the walls' contacts below need. */
@@ -284,7 +286,7 @@ void dm_wall_loads_record(demill_world *w, const double *vp, const double *wp, d
 typedef struct chunk_args {
     const double *vp, *wp;
     double dt_hist, reach;
-    int tally, direct;
+    int tally, direct, preset;
 } chunk_args;
 
 /* The chunks whose first pair belongs to a particle of [begin, end): the
@@ -294,7 +296,7 @@ static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca
                               uint32_t begin, uint32_t end)
 {
     dm_results *q = &w->res;
-    if (ca->direct) /* the only range: the chunks add into the sums as they go */
+    if (ca->direct && !ca->preset) /* the only range: the chunks add into the sums as they go */
         init_forces(D, w, begin, end);
     for (uint32_t c = 0; c < q->nchunks; c++) {
         const dm_chunkref r = q->chunks[c];
@@ -333,7 +335,9 @@ static void run_chunks3(demill_world *w, void *a, int t, uint32_t begin, uint32_
     run_chunks(3, w, a, begin, end);
 }
 
-/* Evaluates all forces and torques at the current state. dt_hist > 0 advances
+/* Evaluates all forces and torques at the current state (preset: the
+ * particles' forces already hold their weights and their torques 0, as the
+ * drift leaves them). dt_hist > 0 advances
  * the contact histories by that time (a real step); tally adds the step's
  * dissipation and wall work to the world's energy account. vp, wp: the
  * velocities dashpots and friction see; reach: how far past a sample its impulse
@@ -341,7 +345,7 @@ static void run_chunks3(demill_world *w, void *a, int t, uint32_t begin, uint32_
  * sums, run on w->base.threads threads; every sum is taken in an order that does
  * not depend on them. */
 void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
-               int tally)
+               int tally, int preset)
 {
     const int D = w->dim;
     dm_results *q = &w->res;
@@ -351,7 +355,7 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
     /* one range: each chunk adds its results to the particles while they
      * are in cache; else the ranges sum their particles' forces afterwards */
     chunk_args ca = {.vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach, .tally = tally,
-                     .direct = dm_ranges(w, n) == 1};
+                     .direct = dm_ranges(w, n) == 1, .preset = preset};
     if (dm_walls_have_mesh(w))
         dm_parallel(w, n, mesh_range, &ca);
     dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
@@ -367,7 +371,7 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
             dm_tally_add(&t, &q->chunk_tally[c]);
     }
     if (!ca.direct)
-        dm_parallel(w, n, D == 3 ? sum_forces3 : sum_forces2, NULL);
+        dm_parallel(w, n, D == 3 ? sum_forces3 : sum_forces2, &preset);
     if (D == 3)
         sum_walls(3, w, tally, dt_hist, &t);
     else
