@@ -51,12 +51,14 @@ DM_INLINE double from_bits(uint64_t u)
 
 /* What the loops below need, and what they return per range (dm_parallel):
  * the largest squared displacement since the last neighbour build, as bits.
- * gravity: the drift also sets each particle's force to its weight m g and
- * its torque to 0 once it has used them, the start of the next force
- * evaluation's sums (dm_forces, preset), while the block is in cache. */
+ * finish: each range first takes the sums of its particles that the last
+ * force evaluation left (dm_forces_finish()); gravity: the drift also sets
+ * each particle's force to its weight m g and its torque to 0 once it has
+ * used them, the start of the next force evaluation's sums
+ * (DM_FORCES_PRESET), while the block is in cache. */
 typedef struct step_args {
     double dt, h, hth, g[3];
-    int kick, rotation, gravity; /* rotation: the loops also spin */
+    int kick, rotation, finish, gravity; /* rotation: the loops also spin */
     uint64_t worst[DM_MAX_THREADS];
 } step_args;
 
@@ -286,6 +288,8 @@ DM_INLINE uint64_t block(const int D, const int kind, dm_particles *P, const ste
     {                                                                                             \
         step_args *s = a;                                                                         \
         uint64_t worst = 0;                                                                       \
+        if (s->finish)                                                                            \
+            dm_forces_finish(w, i0, i1);                                                          \
         for (uint32_t b = i0; b < i1; b += BLOCK)                                                 \
             worst = block(D, VERLET, &w->p, s, b, i1 - b < BLOCK ? i1 : b + BLOCK, worst);        \
         s->worst[t] = worst;                                                                      \
@@ -294,6 +298,8 @@ DM_INLINE uint64_t block(const int D, const int kind, dm_particles *P, const ste
     {                                                                                             \
         step_args *s = a;                                                                         \
         uint64_t worst = 0;                                                                       \
+        if (s->finish)                                                                            \
+            dm_forces_finish(w, i0, i1);                                                          \
         for (uint32_t b = i0; b < i1; b += BLOCK)                                                 \
             worst = block(D, EULER, &w->p, s, b, i1 - b < BLOCK ? i1 : b + BLOCK, worst);         \
         s->worst[t] = worst;                                                                      \
@@ -301,20 +307,26 @@ DM_INLINE uint64_t block(const int D, const int kind, dm_particles *P, const ste
     static void kick##D(demill_world *w, void *a, int t, uint32_t i0, uint32_t i1)               \
     {                                                                                             \
         (void)t;                                                                                  \
+        if (((step_args *)a)->finish)                                                             \
+            dm_forces_finish(w, i0, i1);                                                          \
         for (uint32_t b = i0; b < i1; b += BLOCK)                                                 \
             block(D, KICK, &w->p, a, b, i1 - b < BLOCK ? i1 : b + BLOCK, 0);                      \
     }
 DM_STEP_LOOPS(2)
 DM_STEP_LOOPS(3)
 
-/* Runs a drift loop; returns the largest squared displacement. With
- * a->gravity the forces are set to the particles' weights as the loop goes:
- * they are not the forces of the state until the next dm_forces(). */
+/* Runs a drift or kick loop, which first takes the sums the last
+ * dm_forces() left to it, on the same ranges (DM_FORCES_DEFER); returns the
+ * largest squared displacement. With a->gravity the forces are set to the
+ * particles' weights as the loop goes: they are not the forces of the state
+ * until the next dm_forces(). */
 static double drift(demill_world *w, dm_range_fn fn, step_args *a)
 {
-    if (a->gravity)
-        w->forces_valid = false;
+    a->finish = w->res.pending != 0;
     const int ranges = dm_parallel(w, w->p.n, fn, a);
+    w->res.pending = 0;
+    if (a->finish || a->gravity)
+        w->forces_valid = !a->gravity;
     uint64_t worst = 0;
     for (int t = 0; t < ranges; t++)
         worst = a->worst[t] > worst ? a->worst[t] : worst;
@@ -370,7 +382,7 @@ static double local_damping(demill_world *w)
 /* The end of every step: the clock, the walls, the lists and the forces of
  * the new state. */
 static demill_status finish_step(demill_world *w, double max_disp2, const double *vp,
-                                 const double *wp, double reach, int preset)
+                                 const double *wp, double reach, int options)
 {
     w->time += w->dt;
     w->base.steps++;
@@ -382,7 +394,9 @@ static demill_status finish_step(demill_world *w, double max_disp2, const double
         if (s)
             return s;
     }
-    dm_forces(w, vp, wp, w->dt, reach, w->energy_tracking || w->events, preset);
+    if (w->local_damping) /* which reads every force at once */
+        options &= ~DM_FORCES_DEFER;
+    dm_forces(w, vp, wp, w->dt, reach, w->energy_tracking || w->events, options);
     if (w->local_damping) {
         const double lost = local_damping(w);
         if (w->energy_tracking || w->events)
@@ -402,6 +416,14 @@ static step_args step_args_of(const demill_world *w, double h)
                        .rotation = w->rotation, .gravity = !w->live_clumps};
 }
 
+/* The options of a step's force evaluation after a drift with a: the
+ * forces preset to the weights if it set them, and the sums the chunks
+ * leave deferred to the next drift or kick if there is one. */
+static int forces_options(const step_args *a, int next)
+{
+    return (a->gravity ? DM_FORCES_PRESET : 0) | (next ? DM_FORCES_DEFER : 0);
+}
+
 /* Velocity Verlet; within one call the second half of each step is done
  * together with the first half of the next. */
 static demill_status verlet(demill_world *w, uint64_t steps)
@@ -418,13 +440,13 @@ static demill_status verlet(demill_world *w, uint64_t steps)
             d2 = fmax(d2, dm_clumps_drift(w, w->dt, a.kick, 1));
         if (w->nbodies)
             dm_bodies_drift(w, w->dt, a.kick, 1);
-        demill_status st = finish_step(w, d2, P->vp, P->wp, 0.5, a.gravity);
+        demill_status st = finish_step(w, d2, P->vp, P->wp, 0.5, forces_options(&a, 1));
         if (st)
             return st;
     }
     a.kick = a.gravity = 0;
     a.hth = 0.0;
-    dm_parallel(w, P->n, d3 ? kick3 : kick2, &a);
+    drift(w, d3 ? kick3 : kick2, &a);
     if (w->live_clumps)
         dm_clumps_kick(w, a.h);
     if (w->nbodies)
@@ -443,7 +465,7 @@ static demill_status euler(demill_world *w, uint64_t steps)
             d2 = fmax(d2, dm_clumps_drift(w, w->dt, 0, 0));
         if (w->nbodies)
             dm_bodies_drift(w, w->dt, 0, 0);
-        demill_status st = finish_step(w, d2, P->v, P->w, 1.0, a.gravity);
+        demill_status st = finish_step(w, d2, P->v, P->w, 1.0, forces_options(&a, s + 1 < steps));
         if (st)
             return st;
     }
