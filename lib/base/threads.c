@@ -3,13 +3,14 @@
  *
  * A world that steps on n > 1 threads starts n - 1 workers the first time a
  * loop is shared out, and keeps them until it is destroyed or its thread
- * count changes. A loop is split into more ranges than threads; the caller
- * and the workers take ranges one at a time from a shared counter until
- * none is left, so that a thread the system has taken its core from holds
- * up at most the one range it is working on, while the others do the rest.
- * Each range writes its results at its own index, whichever thread ran it,
- * and no sum depends on the ranges, so results never depend on who did
- * what. A thread that waits (a worker for the next loop, the caller for the
+ * count changes. A loop is split into one range of particles per thread,
+ * the same ranges for every loop of a step: thread t (the caller is 0)
+ * takes range t first, so that the particles a thread drifts are the ones
+ * whose contacts and sums it computes next, in its own core's cache; then
+ * it takes any range no thread has taken yet, so that a worker that has not
+ * woken up in time delays nothing. Each range writes its results at its own
+ * index, whichever thread ran it, and no sum depends on the ranges, so
+ * results never depend on who did what. A thread that waits (a worker for the next loop, the caller for the
  * last range) spins for a short while and then sleeps on a condition
  * variable, so that the library does not take a busy machine's cores from
  * its other work. And as the world steps, the pool keeps measuring whether
@@ -28,9 +29,6 @@
 
 /* Fewer particles than this per range are not worth sharing out. */
 #define MIN_PER_RANGE 512
-/* Ranges per thread: a range left on a descheduled thread is a fraction
- * 1 / (RANGES_PER_THREAD × threads) of the loop. */
-#define RANGES_PER_THREAD 4
 
 #ifdef DEMILL_HAVE_THREADS
 #include <pthread.h>
@@ -114,15 +112,23 @@ static void next_step(dm_adapt *a, uint64_t step)
 }
 
 /* The current loop ("job") is published in one word, claim: the job's
- * number (bits 63..32), its number of ranges (31..16) and the next range to
- * take (15..0). A thread takes a range with a compare-and-swap that also
- * checks the job's number, so a thread that wakes late can never take a
+ * number (bits 63..32) and its number of ranges (31..0). Range r of job j
+ * is free while taken[r] is j - 1 (the caller sets it so before it
+ * publishes the job), and a thread takes it by a compare-and-swap to j: so
+ * a thread that wakes late, still seeing an older job, can never take a
  * range of a job that has ended or run one job's ranges with another's
- * function: the job's other fields do not change until its last range is
- * done, and a range taken is not done yet. */
+ * function (the job's other fields do not change until its last range is
+ * done, and a range taken is not done yet). */
+typedef struct dm_worker {
+    dm_pool *pool;
+    int self; /* its thread's number: 1 .. workers (the caller is 0) */
+} dm_worker;
+
 struct dm_pool {
     int workers;
     pthread_t *tid;
+    dm_worker *who;
+    _Atomic uint32_t taken[DM_MAX_THREADS];
     pthread_mutex_t lock;
     pthread_cond_t wake, done; /* workers wait on wake, the caller on done */
     atomic_int sleepers;       /* workers asleep on wake, or about to be */
@@ -150,30 +156,36 @@ static uint32_t job_of(uint64_t claim)
     return (uint32_t)(claim >> 32);
 }
 
-/* Takes the next range of job `job` and its number of ranges; -1 when none
- * is left or the job has ended. */
-static int take(dm_pool *p, uint32_t job, int *ranges)
+/* Takes a free range of job `job` for thread `self`, its own first
+ * (range self × ranges / threads), then the ones after it, and gives the
+ * job's number of ranges; -1 when none is left or the job has ended. */
+static int take(dm_pool *p, uint32_t job, int self, int *ranges)
 {
-    uint64_t c = atomic_load_explicit(&p->claim, memory_order_acquire);
-    for (;;) {
-        const uint32_t count = (uint32_t)(c >> 16) & 0xffffu, next = (uint32_t)c & 0xffffu;
-        if (job_of(c) != job || next >= count)
-            return -1;
-        if (atomic_compare_exchange_weak_explicit(&p->claim, &c, c + 1, memory_order_acquire,
-                                                  memory_order_acquire)) {
+    const uint64_t c = atomic_load_explicit(&p->claim, memory_order_acquire);
+    const uint32_t count = (uint32_t)c;
+    if (job_of(c) != job)
+        return -1;
+    const uint32_t first = (uint32_t)self * count / (uint32_t)(p->workers + 1);
+    for (uint32_t k = 0; k < count; k++) {
+        const uint32_t r = (first + k) % count;
+        uint32_t free = job - 1;
+        if (atomic_load_explicit(&p->taken[r], memory_order_relaxed) == free &&
+            atomic_compare_exchange_strong_explicit(&p->taken[r], &free, job,
+                                                    memory_order_acquire, memory_order_relaxed)) {
             *ranges = (int)count;
-            return (int)next;
+            return (int)r;
         }
     }
+    return -1;
 }
 
-/* Runs ranges of job `job` until none is left; true if this thread finished
- * the job's last range. */
-static bool work(dm_pool *p, uint32_t job)
+/* Runs ranges of job `job` on thread `self` until none is left; true if
+ * this thread finished the job's last range. */
+static bool work(dm_pool *p, uint32_t job, int self)
 {
     bool last = false;
     int t, ranges;
-    while ((t = take(p, job, &ranges)) >= 0) {
+    while ((t = take(p, job, self, &ranges)) >= 0) {
         const uint64_t n = p->n;
         p->fn(p->w, p->arg, t, (uint32_t)(n * (uint64_t)t / (uint64_t)ranges),
               (uint32_t)(n * (uint64_t)(t + 1) / (uint64_t)ranges));
@@ -214,7 +226,8 @@ static bool spin(dm_pool *p, bool (*waiting)(dm_pool *, uint32_t), uint32_t x)
  * while the caller slept. */
 static void *worker(void *arg)
 {
-    dm_pool *p = arg;
+    const dm_worker *me = arg;
+    dm_pool *p = me->pool;
     uint32_t seen = 0;
     for (;;) {
         if (!spin(p, no_new_job, seen)) {
@@ -228,7 +241,7 @@ static void *worker(void *arg)
         if (atomic_load(&p->stop))
             return NULL;
         seen = job_of(atomic_load_explicit(&p->claim, memory_order_acquire));
-        if (work(p, seen) && atomic_load(&p->caller_asleep)) {
+        if (work(p, seen, me->self) && atomic_load(&p->caller_asleep)) {
             pthread_mutex_lock(&p->lock);
             pthread_cond_signal(&p->done);
             pthread_mutex_unlock(&p->lock);
@@ -259,6 +272,7 @@ static void pool_free(dm_pool *p)
     pthread_cond_destroy(&p->wake);
     pthread_mutex_destroy(&p->lock);
     free(p->tid);
+    free(p->who);
     free(p);
 }
 
@@ -271,8 +285,10 @@ static dm_pool *pool_new(int workers, uint64_t step)
         return NULL;
     p->adapt = (dm_adapt){.step = step, .left = HOLD_MIN, .hold = HOLD_MIN};
     p->tid = malloc((size_t)workers * sizeof *p->tid);
-    if (!p->tid || pthread_mutex_init(&p->lock, NULL)) {
+    p->who = malloc((size_t)workers * sizeof *p->who);
+    if (!p->tid || !p->who || pthread_mutex_init(&p->lock, NULL)) {
         free(p->tid);
+        free(p->who);
         free(p);
         return NULL;
     }
@@ -281,8 +297,11 @@ static dm_pool *pool_new(int workers, uint64_t step)
     sigset_t all, old;
     sigfillset(&all);
     pthread_sigmask(SIG_SETMASK, &all, &old);
-    while (p->workers < workers && !pthread_create(&p->tid[p->workers], NULL, worker, p))
-        p->workers++;
+    for (; p->workers < workers; p->workers++) {
+        p->who[p->workers] = (dm_worker){p, p->workers + 1};
+        if (pthread_create(&p->tid[p->workers], NULL, worker, &p->who[p->workers]))
+            break;
+    }
     pthread_sigmask(SIG_SETMASK, &old, NULL);
     if (!p->workers) {
         pool_free(p);
@@ -323,7 +342,7 @@ int dm_threads_available(int requested)
  * wait for the ranges still running, spinning and then asleep. */
 static void run_job(dm_pool *p, uint32_t job)
 {
-    work(p, job);
+    work(p, job, 0);
     if (spin(p, ranges_left, 0))
         return;
     pthread_mutex_lock(&p->lock);
@@ -347,13 +366,13 @@ void dm_threads_free(demill_world *w)
 
 /* The number of ranges dm_parallel() splits [0, n) into: 1 on one thread,
  * for fewer than 2 × MIN_PER_RANGE particles, and in the steps that the
- * world's pool runs on one thread (dm_adapt); else RANGES_PER_THREAD per
- * thread, at least MIN_PER_RANGE particles each. */
+ * world's pool runs on one thread (dm_adapt); else one per thread, at
+ * least MIN_PER_RANGE particles each. */
 int dm_ranges(const demill_world *w, uint32_t n)
 {
     const dm_base *b = dm_base_of_const(w);
     const uint32_t most = n / MIN_PER_RANGE;
-    const uint32_t want = (uint32_t)b->threads * RANGES_PER_THREAD;
+    const uint32_t want = (uint32_t)b->threads;
     if (b->threads <= 1 || most <= 1)
         return 1;
 #ifdef DEMILL_HAVE_THREADS
@@ -391,7 +410,9 @@ int dm_parallel(demill_world *w, uint32_t n, dm_range_fn fn, void *arg)
             p->n = n;
             atomic_store_explicit(&p->left, ranges, memory_order_relaxed);
             const uint32_t job = ++p->job;
-            publish(p, (uint64_t)job << 32 | (uint64_t)ranges << 16);
+            for (int r = 0; r < ranges; r++)
+                atomic_store_explicit(&p->taken[r], job - 1, memory_order_relaxed);
+            publish(p, (uint64_t)job << 32 | (uint64_t)ranges);
             run_job(p, job);
         } else {
             fn(w, arg, 0, 0, n);

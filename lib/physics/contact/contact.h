@@ -50,11 +50,26 @@ void dm_clists_free(demill_world *w);
 /* ---- a force evaluation (forces.c, results.c) ----------------------------------------- */
 int dm_results_reserve(demill_world *w);
 void dm_results_layout(demill_world *w);
+/* Which chunks sum which particles' forces when there are several ranges
+ * (dm_results.lo, dm_chunkref.lo and hi), for the current layout. */
+void dm_results_reach(demill_world *w);
 void dm_results_free(demill_world *w);
+/* dm_forces() options: */
+#define DM_FORCES_PRESET 1 /* the forces already hold the particles' weights m g and the
+                              torques 0 (the drift set them) */
+#define DM_FORCES_DEFER 2  /* leave the sums the chunks do not take as they go, when there
+                              are several ranges, to dm_forces_finish() on the same ranges
+                              (w->res.pending: their number), which the next loop of the
+                              same step has (dm_ranges() changes from step to step): until
+                              then some particles' forces and torques are incomplete */
 /* Gravity and every contact's force at the current state, the dashpots
- * seeing velocities vp, wp; dt_hist: the time over which springs grow. */
+ * seeing velocities vp, wp; dt_hist: the time over which springs grow;
+ * options: DM_FORCES_*. */
 void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
-               int tally);
+               int tally, int options);
+/* The sums a deferred dm_forces() left of particles p0 .. p1 - 1, one of
+ * its w->res.pending ranges of dm_parallel(). */
+void dm_forces_finish(demill_world *w, uint32_t p0, uint32_t p1);
 
 /* After a step of dt whose forces dm_forces() has just evaluated, friction
  * seeing velocities vp, wp: the loads of the walls that record them

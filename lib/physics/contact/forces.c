@@ -53,10 +53,8 @@ int dm_kernel_hist_size(int kernel, int dim)
     return dm_law_hist_size(l.normal, l.damping, l.tangential, l.rolling, dim);
 }
 
-/* The forces and torques of particles p0 .. p1-1: gravity, then the
- * results of their pairs in pair-id order, which is the order of a walk
- * through the chunks' lists of pairs with results. The walk starts at the
- * first pair that can reach p0 (j - i is at most the bucket's span). */
+/* The weights m g and zero torques of particles p0 .. p1-1, where their
+ * sums start. */
 DM_INLINE void init_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1)
 {
     const int W = D == 3 ? 3 : 1;
@@ -72,23 +70,29 @@ DM_INLINE void init_forces(const int D, demill_world *w, uint32_t p0, uint32_t p
     }
 }
 
+/* The sums of the particles of range p0 .. p1-1 that the chunks did not
+ * take as they went, those with a pair in a chunk of an earlier range
+ * (lo[p] < p0; the chunks have set their weights): the results of their
+ * pairs in pair-id order, which is the order of a walk through the chunks'
+ * lists of pairs with results. The walk starts at the first pair that can
+ * reach p0 (j - i is at most the bucket's span). */
 DM_INLINE void sum_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1)
 {
     const int W = D == 3 ? 3 : 1, S = D + 2 * W;
     dm_particles *P = &w->p;
     const dm_results *q = &w->res;
     const double *restrict out = q->out;
+    const uint32_t *restrict lo = q->lo;
     double *restrict f = P->f, *restrict tq = P->t;
-    init_forces(D, w, p0, p1);
     for (int side = 0; side < 2; side++)
         for (int k = 0; k < w->nkern; k++) {
             const dm_bucket *b = side ? &w->pw.b[k] : &w->pp.b[k];
             const uint32_t *restrict bi = b->i, *restrict bj = b->j;
-            const uint32_t lo = side || p0 < b->span ? (side ? p0 : 0) : p0 - b->span;
-            uint32_t first = 0, last = b->n; /* the first pair with i >= lo */
+            const uint32_t lo_i = side || p0 < b->span ? (side ? p0 : 0) : p0 - b->span;
+            uint32_t first = 0, last = b->n; /* the first pair with i >= lo_i */
             while (first < last) {
                 const uint32_t mid = first + (last - first) / 2;
-                if (bi[mid] < lo)
+                if (bi[mid] < lo_i)
                     first = mid + 1;
                 else
                     last = mid;
@@ -99,36 +103,29 @@ DM_INLINE void sum_forces(const int D, demill_world *w, uint32_t p0, uint32_t p1
                 const uint32_t *list = q->list + b->base + k0;
                 const uint32_t listed = q->chunk_listed[b->chunk0 + k0 / DM_CHUNK];
                 for (uint32_t e = 0; e < listed; e++) {
-                    const uint32_t p = list[e], i = bi[p];
+                    const uint32_t p = list[e], i = bi[p], j = bj[p];
                     const double *o = out + (size_t)S * (b->base + p);
-                    if (i >= p0 && i < p1) {
-                        for (int c = 0; c < D; c++)
-                            f[D * i + c] -= o[c];
-                        for (int c = 0; c < W; c++)
-                            tq[W * i + c] += o[D + c];
-                    }
-                    const uint32_t j = bj[p];
-                    if (!side && j >= p0 && j < p1) {
-                        for (int c = 0; c < D; c++)
-                            f[D * j + c] += o[c];
-                        for (int c = 0; c < W; c++)
-                            tq[W * j + c] += o[D + W + c];
-                    }
+                    if (i >= p0 && i < p1 && lo[i] < p0)
+                        dm_result_add(D, 1, 0, f, tq, i, j, o);
+                    if (!side && j >= p0 && j < p1 && lo[j] < p0)
+                        dm_result_add(D, 0, 1, f, tq, i, j, o);
                 }
             }
         }
 }
 
-static void sum_forces2(demill_world *w, void *arg, int t, uint32_t p0, uint32_t p1)
+static void sum_forces_range(demill_world *w, void *arg, int t, uint32_t p0, uint32_t p1)
 {
     (void)arg, (void)t;
-    sum_forces(2, w, p0, p1);
+    dm_forces_finish(w, p0, p1);
 }
 
-static void sum_forces3(demill_world *w, void *arg, int t, uint32_t p0, uint32_t p1)
+void dm_forces_finish(demill_world *w, uint32_t p0, uint32_t p1)
 {
-    (void)arg, (void)t;
-    sum_forces(3, w, p0, p1);
+    if (w->dim == 3)
+        sum_forces(3, w, p0, p1);
+    else
+        sum_forces(2, w, p0, p1);
 }
 
 /* What the walks over the walls' contacts below need. */
@@ -284,17 +281,20 @@ void dm_wall_loads_record(demill_world *w, const double *vp, const double *wp, d
 typedef struct chunk_args {
     const double *vp, *wp;
     double dt_hist, reach;
-    int tally, direct;
+    int tally, preset, one; /* one: the only range */
 } chunk_args;
 
-/* The chunks whose first pair belongs to a particle of [begin, end): the
- * ranges that sum the particles' forces next find most of their pairs' results
- * in their own core's cache. */
+/* The chunks whose first pair belongs to a particle of [begin, end), after
+ * the weights of the range's particles (unless preset). They add their
+ * results to the sums of the range's particles all of whose pairs are in
+ * the range's chunks as they go, in pair-id order (on one range, every
+ * particle's): a chunk's all of them (direct) when it holds no pair of
+ * another particle (dm_direct()). */
 static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca,
                               uint32_t begin, uint32_t end)
 {
     dm_results *q = &w->res;
-    if (ca->direct) /* the only range: the chunks add into the sums as they go */
+    if (!ca->preset)
         init_forces(D, w, begin, end);
     for (uint32_t c = 0; c < q->nchunks; c++) {
         const dm_chunkref r = q->chunks[c];
@@ -303,7 +303,9 @@ static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca
         dm_bucket *b = r.walls ? &w->pw.b[r.kernel] : &w->pp.b[r.kernel];
         dm_kernel_args a = {.w = w, .b = b, .k0 = r.k0, .geom_offset = b->base - q->npp,
                             .vp = ca->vp, .wp = ca->wp, .dt_hist = ca->dt_hist,
-                            .reach = ca->reach, .tally = ca->tally, .direct = ca->direct};
+                            .reach = ca->reach, .tally = ca->tally,
+                            .direct = ca->one || (r.lo >= begin && r.hi < end), .lo = q->lo,
+                            .begin = begin, .end = end};
         dm_kernel(D, r.walls, r.kernel)(&a);
         q->chunk_tally[c] = a.t;
         q->chunk_contacts[c] = a.contacts;
@@ -333,25 +335,29 @@ static void run_chunks3(demill_world *w, void *a, int t, uint32_t begin, uint32_
     run_chunks(3, w, a, begin, end);
 }
 
-/* Evaluates all forces and torques at the current state. dt_hist > 0 advances
+/* Evaluates all forces and torques at the current state (options:
+ * DM_FORCES_*, contact.h). dt_hist > 0 advances
  * the contact histories by that time (a real step); tally adds the step's
  * dissipation and wall work to the world's energy account. vp, wp: the
  * velocities dashpots and friction see; reach: how far past a sample its impulse
- * reaches, in steps (see dm_law). The chunks of pairs, then the particles'
- * sums, run on w->base.threads threads; every sum is taken in an order that does
- * not depend on them. */
+ * reaches, in steps (see dm_law). The chunks of pairs, then the sums they
+ * leave (unless deferred), run on w->base.threads threads; every sum is taken
+ * in an order that does not depend on them. */
 void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hist, double reach,
-               int tally)
+               int tally, int options)
 {
     const int D = w->dim;
     dm_results *q = &w->res;
     if (!q->valid)
         dm_results_layout(w);
     const uint32_t n = w->p.n;
-    /* one range: each chunk adds its results to the particles while they
-     * are in cache; else the ranges sum their particles' forces afterwards */
+    /* the chunks add their results to the sums of most particles while they
+     * are in cache; the ranges sum the others' afterwards */
+    const int ranges = dm_ranges(w, n);
     chunk_args ca = {.vp = vp, .wp = wp, .dt_hist = dt_hist, .reach = reach, .tally = tally,
-                     .direct = dm_ranges(w, n) == 1};
+                     .preset = options & DM_FORCES_PRESET, .one = ranges == 1};
+    if (ranges > 1 && !q->reach_valid)
+        dm_results_reach(w);
     if (dm_walls_have_mesh(w))
         dm_parallel(w, n, mesh_range, &ca);
     dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
@@ -366,15 +372,18 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
         if (tally)
             dm_tally_add(&t, &q->chunk_tally[c]);
     }
-    if (!ca.direct)
-        dm_parallel(w, n, D == 3 ? sum_forces3 : sum_forces2, NULL);
+    q->pending = 0;
+    if (ranges > 1 && (options & DM_FORCES_DEFER))
+        q->pending = ranges;
+    else if (ranges > 1)
+        dm_parallel(w, n, sum_forces_range, NULL);
     if (D == 3)
         sum_walls(3, w, tally, dt_hist, &t);
     else
         sum_walls(2, w, tally, dt_hist, &t);
     if (tally)
         dm_tally_add(&w->tally, &t);
-    w->forces_valid = true;
+    w->forces_valid = !q->pending;
 }
 
 /* Fills a contact record from the kinematics and the law's output, as seen

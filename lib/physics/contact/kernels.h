@@ -30,7 +30,10 @@ typedef struct dm_kernel_args {
     const double *vp, *wp; /* velocities the dashpots see (see dm_law) */
     double dt_hist, reach;
     int tally;
-    int direct;            /* 1: also add the results to the particles' sums */
+    int direct;            /* 1: also add the results to the particles' sums; 0: those
+                              of the particles p for which dm_direct() says so */
+    const uint32_t *lo;    /* w->res.lo, and the range that runs the chunk: */
+    uint32_t begin, end;   /* particles begin .. end - 1 (forces.c) */
     dm_tally t;            /* out: the chunk's dissipation */
     uint32_t contacts;     /* out: pairs in contact */
     uint32_t listed;       /* out: pairs with a result, listed in w->res.list */
@@ -409,24 +412,52 @@ DM_INLINE void dm_out_normal(const int D, double *out, double fc, const double *
         out[D + c] = 0.0;
 }
 
+/* Whether the chunk adds its results for particle p to p's sums as it goes
+ * (when not all of them, a->direct): when p is in the range that runs the
+ * chunk and every pair of p is in a chunk of that range, whose thread then
+ * adds them all in pair-id order (forces.c). */
+DM_INLINE int dm_direct(const dm_kernel_args *a, uint32_t p)
+{
+    return a->lo[p] >= a->begin && p < a->end;
+}
+
 /* A pair's result row o (S = D + 2W doubles: force on b, torques on a and on
- * b) added to its particles' forces and torques, in the order and with the
- * operations of forces.c's sums: chunk after chunk in pair-id order on one
- * thread, this gives them bit for bit. */
-DM_INLINE void dm_result_add(const int D, const int WALLS, double *restrict f, double *restrict tq,
-                             uint32_t i, uint32_t j, const double *o)
+ * b) added to the forces and torques of its particle a = i if A and b = j if
+ * B, in the order and with the operations of forces.c's sums: chunk after
+ * chunk in pair-id order on one thread, this gives them bit for bit. */
+DM_INLINE void dm_result_add(const int D, const int A, const int B, double *restrict f,
+                             double *restrict tq, uint32_t i, uint32_t j, const double *o)
 {
     const int W = D == 3 ? 3 : 1;
-    for (int c = 0; c < D; c++)
-        f[D * i + c] -= o[c];
-    for (int c = 0; c < W; c++)
-        tq[W * i + c] += o[D + c];
-    if (!WALLS) {
+    if (A) {
+        for (int c = 0; c < D; c++)
+            f[D * i + c] -= o[c];
+        for (int c = 0; c < W; c++)
+            tq[W * i + c] += o[D + c];
+    }
+    if (B) {
         for (int c = 0; c < D; c++)
             f[D * j + c] += o[c];
         for (int c = 0; c < W; c++)
             tq[W * j + c] += o[D + W + c];
     }
+}
+
+/* Particle pair k's result row o, stored, in a chunk that does not add all
+ * its results itself (not a->direct): added to the sums of those of i and
+ * j that it adds (dm_direct()), and listed, at *list, for the others' sums
+ * (forces.c) unless both were; returns the number listed, 0 or 1. */
+DM_INLINE uint32_t dm_result_give(const int D, const dm_kernel_args *a, double *restrict f,
+                                  double *restrict tq, uint32_t i, uint32_t j, const double *o,
+                                  uint32_t *list, uint32_t k)
+{
+    const int di = dm_direct(a, i), dj = dm_direct(a, j);
+    if (di)
+        dm_result_add(D, 1, 0, f, tq, i, j, o);
+    if (dj)
+        dm_result_add(D, 0, 1, f, tq, i, j, o);
+    *list = k;
+    return !(di & dj);
 }
 
 /* The kinematics of a chunk's first `lanes` touching pairs (ch->k) into the
@@ -522,9 +553,9 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
             }
             dm_out_normal(D, out + (size_t)S * k, fc, n);
             if (direct)
-                dm_result_add(D, 0, f, tq, i, j, out + (size_t)S * k);
+                dm_result_add(D, 1, 1, f, tq, i, j, out + (size_t)S * k);
             else
-                list[listed++] = k;
+                listed += dm_result_give(D, a, f, tq, i, j, out + (size_t)S * k, list + listed, k);
             if (tally) {
                 t.diss_normal -= fc * vn * dt_hist;
                 if (EV)
@@ -547,10 +578,11 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
         if (direct) {
             double o[9];
             dm_chunk_result(D, &ch, s, o);
-            dm_result_add(D, 0, f, tq, bi[k], bj[k], o);
+            dm_result_add(D, 1, 1, f, tq, bi[k], bj[k], o);
         } else {
             dm_chunk_result(D, &ch, s, out + (size_t)S * k);
-            list[listed++] = k;
+            listed += dm_result_give(D, a, f, tq, bi[k], bj[k], out + (size_t)S * k, list + listed,
+                                     k);
         }
     }
     a->t = t;
@@ -611,8 +643,8 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
             for (int c = 0; c < D; c++)
                 absorbed += fc * n[c] * (vp[D * i + c] - g->vw[D * gk + c]);
             dm_out_normal(D, out + (size_t)S * k, fc, n);
-            if (direct)
-                dm_result_add(D, 1, f, tq, i, 0, out + (size_t)S * k);
+            if (direct || dm_direct(a, i))
+                dm_result_add(D, 1, 0, f, tq, i, 0, out + (size_t)S * k);
             list[listed++] = k;
             g->lost[gk] = absorbed * dt_hist;
             if (tally) {
@@ -636,8 +668,8 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
         g->lost[g0 + k] = dm_chunk_commit(HSL, EV, XL, &ch, s, hist + (size_t)HS * k, on + k,
                                           advance, tally, &t);
         dm_chunk_result(D, &ch, s, out + (size_t)S * k);
-        if (direct)
-            dm_result_add(D, 1, f, tq, b->i[k], 0, out + (size_t)S * k);
+        if (direct || dm_direct(a, b->i[k]))
+            dm_result_add(D, 1, 0, f, tq, b->i[k], 0, out + (size_t)S * k);
         list[listed++] = k;
     }
     a->t = t;

@@ -50,88 +50,146 @@ DM_INLINE double from_bits(uint64_t u)
 }
 
 /* What the loops below need, and what they return per range (dm_parallel):
- * the largest squared displacement since the last neighbour build, as bits. */
+ * the largest squared displacement since the last neighbour build, as bits.
+ * finish: each range first takes the sums of its particles that the last
+ * force evaluation left (dm_forces_finish()); gravity: the drift also sets
+ * each particle's force to its weight m g and its torque to 0 once it has
+ * used them, the start of the next force evaluation's sums
+ * (DM_FORCES_PRESET), while the block is in cache. */
 typedef struct step_args {
-    double dt, h, hth;
-    int kick, predict, rotation; /* rotation: the loops also do spin() */
+    double dt, h, hth, g[3];
+    int kick, rotation, finish, gravity; /* rotation: the loops also spin */
     uint64_t worst[DM_MAX_THREADS];
 } step_args;
 
-/* Velocity Verlet's first half, after the second half of the step before
- * when kick is set (the forces have not changed in between): v += dt/2 a;
- * then vp = v + dt a (the end-of-step velocity the dashpots see), v += dt/2 a,
- * x += dt v. Returns the largest squared displacement since the last
- * neighbour build, as bits. The arrays come in as restrict arguments of a
- * function of its own (verlet_move2(), verlet_move3()), as turn()'s do:
- * with restrict pointers taken from P as locals of the inlined loop, GCC 12
- * wanted more run-time alias checks than it makes (six arrays) and left
- * the loop scalar. */
-DM_INLINE uint64_t verlet_drift(const int D, double *restrict x, double *restrict v,
-                                double *restrict vp, const double *restrict f,
-                                const double *restrict im, const double *restrict x0, double dt,
-                                double h, int kick, uint32_t i0, uint32_t i1)
-{
-    uint64_t worst = 0;
-    for (size_t i = i0; i < i1; i++) {
-        double d2 = 0.0;
-        for (int c = 0; c < D; c++) {
-            const double acc = f[D * i + c] * im[i];
-            double vc = v[D * i + c];
-            if (kick)
-                vc += h * acc;
-            vp[D * i + c] = vc + dt * acc;
-            vc += h * acc;
-            v[D * i + c] = vc;
-            x[D * i + c] += dt * vc;
-            const double d = x[D * i + c] - x0[D * i + c];
-            d2 += d * d;
-        }
-        worst = max_bits(worst, d2);
-    }
-    return worst;
-}
+/* The passes below run over a range's particles in blocks of BLOCK, each
+ * pass a loop of its own over the flat component arrays (component c of
+ * particle i at D i + c), with the per-particle factors 1/m and 1/I spread
+ * to every component first (spread()): unit-stride loops, which GCC
+ * vectorises without shuffles, where a loop over particles and their D
+ * components vectorises into shuffles of every array (3 in 3D). A block's
+ * arrays (a few KB each) stay in L1 from pass to pass. Each loop is a
+ * function of its own with restrict arguments, as turn()'s are: with
+ * restrict pointers taken from P as locals of an inlined loop, GCC 12
+ * wanted more run-time alias checks than it makes and left the loop
+ * scalar. The arithmetic is the same, operation for operation, as a loop
+ * over particles and components: the results do not change. */
+#define BLOCK 128
 
-#define DM_VERLET_MOVE(D)                                                                         \
-    DM_VECTOR_CLONES __attribute__((noinline)) static uint64_t verlet_move##D(                    \
-        double *restrict x, double *restrict v, double *restrict vp, const double *restrict f,    \
-        const double *restrict im, const double *restrict x0, double dt, double h, int kick,      \
-        uint32_t i0, uint32_t i1)                                                                 \
+#define DM_FLAT __attribute__((noinline)) DM_VECTOR_CLONES static void
+
+/* out[C k + c] = a[k] for particles k < n: a per-particle value for each of
+ * its C components. */
+#define DM_SPREAD(C)                                                                              \
+    DM_FLAT spread##C(const double *restrict a, double *restrict out, size_t n)                  \
     {                                                                                             \
-        return verlet_drift(D, x, v, vp, f, im, x0, dt, h, kick, i0, i1);                         \
+        for (size_t k = 0; k < n; k++)                                                            \
+            for (int c = 0; c < C; c++)                                                           \
+                out[C * k + c] = a[k];                                                            \
+    }                                                                                             \
+    /* f[C k + c] = m[k] g[c], t[W k ..] = 0 (W = 3 in 3D, else 1): the weights of n          \
+     * particles, their torques 0 */                                                             \
+    DM_FLAT weigh##C(const double *restrict m, const double *restrict g, double *restrict f,     \
+                     double *restrict t, size_t n)                                                \
+    {                                                                                             \
+        for (size_t k = 0; k < n; k++) {                                                          \
+            for (int c = 0; c < C; c++)                                                           \
+                f[C * k + c] = m[k] * g[c];                                                       \
+            for (int c = 0; c < (C == 3 ? 3 : 1); c++)                                            \
+                t[(C == 3 ? 3 : 1) * k + c] = 0.0;                                                \
+        }                                                                                         \
+    }                                                                                             \
+    /* The largest of n particles' squared displacements |d|², from their squared components dd \
+     * (summed in component order, as a loop over components would), with worst, as bits. */   \
+    __attribute__((noinline)) DM_VECTOR_CLONES static uint64_t farthest##C(                      \
+        const double *restrict dd, uint64_t worst, size_t n)                                      \
+    {                                                                                             \
+        for (size_t k = 0; k < n; k++) {                                                          \
+            double d2 = 0.0;                                                                      \
+            for (int c = 0; c < C; c++)                                                           \
+                d2 += dd[C * k + c];                                                              \
+            worst = max_bits(worst, d2);                                                          \
+        }                                                                                         \
+        return worst;                                                                             \
     }
-DM_VERLET_MOVE(2)
-DM_VERLET_MOVE(3)
+DM_SPREAD(2)
+DM_SPREAD(3)
 
-/* Symplectic Euler: v += dt a, x += dt v. */
-DM_INLINE void euler_drift(const int D, dm_particles *P, const step_args *a, uint32_t i0,
-                           uint32_t i1, uint64_t *worst_out)
-{
-    double *restrict x = P->x, *restrict v = P->v;
-    const double *restrict f = P->f, *restrict im = P->im, *restrict x0 = P->x0;
-    const double dt = a->dt;
-    uint64_t worst = 0;
-    for (size_t i = i0; i < i1; i++) {
-        double d2 = 0.0;
-        for (int c = 0; c < D; c++) {
-            v[D * i + c] += dt * f[D * i + c] * im[i];
-            x[D * i + c] += dt * v[D * i + c];
-            const double d = x[D * i + c] - x0[D * i + c];
-            d2 += d * d;
-        }
-        worst = max_bits(worst, d2);
+/* Velocity Verlet's first half, after the second half of the step before
+ * when KICK is set (the forces have not changed in between), over n
+ * components: v += dt/2 a; then vp = v + dt a (the end-of-step velocity the
+ * dashpots see), v += dt/2 a, x += dt v; dd = (x - x0)², the squared
+ * displacement since the last neighbour build. im: 1/m spread. */
+#define DM_VERLET_FLAT(KICK)                                                                      \
+    DM_FLAT verlet_flat##KICK(double *restrict x, double *restrict v, double *restrict vp,       \
+                              const double *restrict f, const double *restrict im,                \
+                              const double *restrict x0, double *restrict dd, double dt,          \
+                              double h, size_t n)                                                 \
+    {                                                                                             \
+        for (size_t e = 0; e < n; e++) {                                                          \
+            const double acc = f[e] * im[e];                                                      \
+            double vc = v[e];                                                                     \
+            if (KICK)                                                                             \
+                vc += h * acc;                                                                    \
+            vp[e] = vc + dt * acc;                                                                \
+            vc += h * acc;                                                                        \
+            v[e] = vc;                                                                            \
+            x[e] += dt * vc;                                                                      \
+            const double d = x[e] - x0[e];                                                        \
+            dd[e] = d * d;                                                                        \
+        }                                                                                         \
     }
-    *worst_out = worst;
+DM_VERLET_FLAT(0)
+DM_VERLET_FLAT(1)
+
+/* Symplectic Euler over n components: v += dt a, x += dt v, dd as above. */
+DM_FLAT euler_flat(double *restrict x, double *restrict v, const double *restrict f,
+                   const double *restrict im, const double *restrict x0, double *restrict dd,
+                   double dt, size_t n)
+{
+    for (size_t e = 0; e < n; e++) {
+        v[e] += dt * f[e] * im[e];
+        x[e] += dt * v[e];
+        const double d = x[e] - x0[e];
+        dd[e] = d * d;
+    }
 }
 
-/* Velocity Verlet's second half: v += h a. */
-DM_INLINE void kick(const int D, dm_particles *P, const step_args *a, uint32_t i0, uint32_t i1)
+/* Velocity Verlet's second half over n components: v += h a. */
+DM_FLAT kick_flat(double *restrict v, const double *restrict f, const double *restrict im,
+                  double h, size_t n)
 {
-    double *restrict v = P->v;
-    const double *restrict f = P->f, *restrict im = P->im;
-    const double h = a->h;
-    for (size_t i = i0; i < i1; i++)
-        for (int c = 0; c < D; c++)
-            v[D * i + c] += h * (f[D * i + c] * im[i]);
+    for (size_t e = 0; e < n; e++)
+        v[e] += h * (f[e] * im[e]);
+}
+
+/* The rotational half steps over n components, ii: 1/I spread: with KICK,
+ * first ω += h α (the second half of the step before); with PREDICT,
+ * wp = ω + 2h α; then ω += h α. */
+#define DM_SPIN_FLAT(KICK, PREDICT)                                                               \
+    DM_FLAT spin_flat##KICK##PREDICT(double *restrict om, double *restrict wp,                   \
+                                     const double *restrict t, const double *restrict ii,         \
+                                     double h, size_t n)                                          \
+    {                                                                                             \
+        for (size_t e = 0; e < n; e++) {                                                          \
+            const double al = t[e] * ii[e];                                                       \
+            double o = om[e];                                                                     \
+            if (KICK)                                                                             \
+                o += h * al;                                                                      \
+            if (PREDICT)                                                                          \
+                wp[e] = o + 2.0 * h * al;                                                         \
+            om[e] = o + h * al;                                                                   \
+        }                                                                                         \
+    }
+DM_SPIN_FLAT(0, 0)
+DM_SPIN_FLAT(0, 1)
+DM_SPIN_FLAT(1, 1)
+
+/* 2D: θ += hth ω over n particles. */
+DM_FLAT angle_flat(double *restrict theta, const double *restrict om, double hth, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        theta[i] += hth * om[i];
 }
 
 /* Turns the orientations (the four arrays qw, qx, qy, qz) of particles i0
@@ -178,70 +236,97 @@ turn(double *restrict qw, double *restrict qx, double *restrict qy, double *rest
     }
 }
 
-/* The rotational half steps: with kick, first ω += h α (the second half of
- * the step before); with predict, wp = ω + 2h α; then ω += h α, and in 2D
- * θ += hth ω, in 3D the orientation turned by hth ω (orient.h) when hth is
- * not 0. */
-DM_INLINE void spin(const int D, dm_particles *P, const step_args *a, uint32_t i0, uint32_t i1)
+/* The kinds of pass over a block: velocity Verlet's first half (with the
+ * second half of the step before when a->kick), symplectic Euler's step,
+ * and velocity Verlet's last second half (a kick alone). */
+enum { VERLET, EULER, KICK };
+
+/* One pass of kind `kind` over particles i0 .. i1 - 1 < i0 + BLOCK; returns
+ * the largest squared displacement since the last neighbour build (bits)
+ * with worst. The rotational half steps take the same kicks (spin: with
+ * predict, wp = ω + 2h α; θ or the orientation turned by hth ω after). */
+DM_INLINE uint64_t block(const int D, const int kind, dm_particles *P, const step_args *a,
+                         uint32_t i0, uint32_t i1, uint64_t worst)
 {
     const int W = D == 3 ? 3 : 1;
-    double *restrict om = P->w, *restrict wp = P->wp, *restrict theta = P->theta;
-    const double *restrict t = P->t, *restrict ii = P->iinv;
-    const double h = a->h, hth = a->hth;
-    const int kick = a->kick, predict = a->predict;
-    for (size_t i = i0; i < i1; i++) {
-        for (int c = 0; c < W; c++) {
-            const double al = t[W * i + c] * ii[i];
-            double o = om[W * i + c];
-            if (kick)
-                o += h * al;
-            if (predict)
-                wp[W * i + c] = o + 2.0 * h * al;
-            om[W * i + c] = o + h * al;
-        }
-        if (D == 2)
-            theta[i] += hth * om[i];
+    const size_t n = i1 - i0, e0 = (size_t)D * i0;
+    double spread_[3 * BLOCK], dd[3 * BLOCK];
+    (D == 3 ? spread3 : spread2)(P->im + i0, spread_, n);
+    if (kind == VERLET) {
+        (a->kick ? verlet_flat1 : verlet_flat0)(P->x + e0, P->v + e0, P->vp + e0, P->f + e0,
+                                                spread_, P->x0 + e0, dd, a->dt, a->h, D * n);
+        worst = (D == 3 ? farthest3 : farthest2)(dd, worst, n);
+    } else if (kind == EULER) {
+        euler_flat(P->x + e0, P->v + e0, P->f + e0, spread_, P->x0 + e0, dd, a->dt, D * n);
+        worst = (D == 3 ? farthest3 : farthest2)(dd, worst, n);
+    } else {
+        kick_flat(P->v + e0, P->f + e0, spread_, a->h, D * n);
     }
-    if (D == 3 && hth != 0.0)
-        turn(P->q[0], P->q[1], P->q[2], P->q[3], om, hth, i0, i1);
+    if (a->rotation) {
+        const size_t w0 = (size_t)W * i0;
+        const double *ii = P->iinv + i0;
+        if (D == 3) {
+            spread3(ii, spread_, n);
+            ii = spread_;
+        }
+        (kind != VERLET ? spin_flat00
+         : a->kick      ? spin_flat11
+                        : spin_flat01)(P->w + w0, P->wp + w0, P->t + w0, ii, a->h, W * n);
+        if (D == 2)
+            angle_flat(P->theta + i0, P->w + i0, a->hth, n);
+        else if (a->hth != 0.0)
+            turn(P->q[0], P->q[1], P->q[2], P->q[3], P->w, a->hth, i0, i1);
+    }
+    if (a->gravity)
+        (D == 3 ? weigh3 : weigh2)(P->m + i0, a->g, P->f + e0, P->t + (size_t)W * i0, n);
+    return worst;
 }
 
-/* The loops for each dimension, as dm_parallel() ranges. */
+/* The passes for each dimension, as dm_parallel() ranges, block by block. */
 #define DM_STEP_LOOPS(D)                                                                          \
-    DM_VECTOR_CLONES static void verlet_drift##D(demill_world *w, void *a, int t, uint32_t i0,    \
-                                                 uint32_t i1)                                     \
+    static void verlet_drift##D(demill_world *w, void *a, int t, uint32_t i0, uint32_t i1)       \
     {                                                                                             \
         step_args *s = a;                                                                         \
-        dm_particles *P = &w->p;                                                                  \
-        s->worst[t] = verlet_move##D(P->x, P->v, P->vp, P->f, P->im, P->x0, s->dt, s->h, s->kick, \
-                                     i0, i1);                                                     \
-        if (s->rotation)                                                                          \
-            spin(D, &w->p, s, i0, i1);                                                            \
+        uint64_t worst = 0;                                                                       \
+        if (s->finish)                                                                            \
+            dm_forces_finish(w, i0, i1);                                                          \
+        for (uint32_t b = i0; b < i1; b += BLOCK)                                                 \
+            worst = block(D, VERLET, &w->p, s, b, i1 - b < BLOCK ? i1 : b + BLOCK, worst);        \
+        s->worst[t] = worst;                                                                      \
     }                                                                                             \
-    DM_VECTOR_CLONES static void euler_drift##D(demill_world *w, void *a, int t, uint32_t i0,     \
-                                                uint32_t i1)                                      \
+    static void euler_drift##D(demill_world *w, void *a, int t, uint32_t i0, uint32_t i1)        \
     {                                                                                             \
         step_args *s = a;                                                                         \
-        euler_drift(D, &w->p, s, i0, i1, &s->worst[t]);                                           \
-        if (s->rotation)                                                                          \
-            spin(D, &w->p, s, i0, i1);                                                            \
+        uint64_t worst = 0;                                                                       \
+        if (s->finish)                                                                            \
+            dm_forces_finish(w, i0, i1);                                                          \
+        for (uint32_t b = i0; b < i1; b += BLOCK)                                                 \
+            worst = block(D, EULER, &w->p, s, b, i1 - b < BLOCK ? i1 : b + BLOCK, worst);         \
+        s->worst[t] = worst;                                                                      \
     }                                                                                             \
-    DM_VECTOR_CLONES static void kick##D(demill_world *w, void *a, int t, uint32_t i0,            \
-                                         uint32_t i1)                                             \
+    static void kick##D(demill_world *w, void *a, int t, uint32_t i0, uint32_t i1)               \
     {                                                                                             \
-        const step_args *s = a;                                                                   \
         (void)t;                                                                                  \
-        kick(D, &w->p, s, i0, i1);                                                                \
-        if (s->rotation)                                                                          \
-            spin(D, &w->p, s, i0, i1);                                                            \
+        if (((step_args *)a)->finish)                                                             \
+            dm_forces_finish(w, i0, i1);                                                          \
+        for (uint32_t b = i0; b < i1; b += BLOCK)                                                 \
+            block(D, KICK, &w->p, a, b, i1 - b < BLOCK ? i1 : b + BLOCK, 0);                      \
     }
 DM_STEP_LOOPS(2)
 DM_STEP_LOOPS(3)
 
-/* Runs a drift loop; returns the largest squared displacement. */
+/* Runs a drift or kick loop, which first takes the sums the last
+ * dm_forces() left to it, on the same ranges (DM_FORCES_DEFER); returns the
+ * largest squared displacement. With a->gravity the forces are set to the
+ * particles' weights as the loop goes: they are not the forces of the state
+ * until the next dm_forces(). */
 static double drift(demill_world *w, dm_range_fn fn, step_args *a)
 {
+    a->finish = w->res.pending != 0;
     const int ranges = dm_parallel(w, w->p.n, fn, a);
+    w->res.pending = 0;
+    if (a->finish || a->gravity)
+        w->forces_valid = !a->gravity;
     uint64_t worst = 0;
     for (int t = 0; t < ranges; t++)
         worst = a->worst[t] > worst ? a->worst[t] : worst;
@@ -297,7 +382,7 @@ static double local_damping(demill_world *w)
 /* The end of every step: the clock, the walls, the lists and the forces of
  * the new state. */
 static demill_status finish_step(demill_world *w, double max_disp2, const double *vp,
-                                 const double *wp, double reach)
+                                 const double *wp, double reach, int options)
 {
     w->time += w->dt;
     w->base.steps++;
@@ -309,7 +394,9 @@ static demill_status finish_step(demill_world *w, double max_disp2, const double
         if (s)
             return s;
     }
-    dm_forces(w, vp, wp, w->dt, reach, w->energy_tracking || w->events);
+    if (w->local_damping) /* which reads every force at once */
+        options &= ~DM_FORCES_DEFER;
+    dm_forces(w, vp, wp, w->dt, reach, w->energy_tracking || w->events, options);
     if (w->local_damping) {
         const double lost = local_damping(w);
         if (w->energy_tracking || w->events)
@@ -320,14 +407,30 @@ static demill_status finish_step(demill_world *w, double max_disp2, const double
     return DEMILL_OK;
 }
 
+/* The step_args of an integrator's drift, with half step h: the drift
+ * sets the forces to the weights unless the clumps still need the members'
+ * forces after it (dm_clumps_drift). */
+static step_args step_args_of(const demill_world *w, double h)
+{
+    return (step_args){.dt = w->dt, .h = h, .hth = w->dt, .g = {w->g[0], w->g[1], w->g[2]},
+                       .rotation = w->rotation, .gravity = !w->live_clumps};
+}
+
+/* The options of a step's force evaluation after a drift with a: the
+ * forces preset to the weights if it set them, and the sums the chunks
+ * leave deferred to the next drift or kick if there is one. */
+static int forces_options(const step_args *a, int next)
+{
+    return (a->gravity ? DM_FORCES_PRESET : 0) | (next ? DM_FORCES_DEFER : 0);
+}
+
 /* Velocity Verlet; within one call the second half of each step is done
  * together with the first half of the next. */
 static demill_status verlet(demill_world *w, uint64_t steps)
 {
     const int d3 = w->dim == 3;
     dm_particles *P = &w->p;
-    step_args a = {.dt = w->dt, .h = 0.5 * w->dt, .hth = w->dt, .predict = 1,
-                   .rotation = w->rotation};
+    step_args a = step_args_of(w, 0.5 * w->dt);
     if (!steps)
         return DEMILL_OK;
     for (uint64_t s = 0; s < steps; s++) {
@@ -337,13 +440,13 @@ static demill_status verlet(demill_world *w, uint64_t steps)
             d2 = fmax(d2, dm_clumps_drift(w, w->dt, a.kick, 1));
         if (w->nbodies)
             dm_bodies_drift(w, w->dt, a.kick, 1);
-        demill_status st = finish_step(w, d2, P->vp, P->wp, 0.5);
+        demill_status st = finish_step(w, d2, P->vp, P->wp, 0.5, forces_options(&a, 1));
         if (st)
             return st;
     }
-    a.kick = a.predict = 0;
+    a.kick = a.gravity = 0;
     a.hth = 0.0;
-    dm_parallel(w, P->n, d3 ? kick3 : kick2, &a);
+    drift(w, d3 ? kick3 : kick2, &a);
     if (w->live_clumps)
         dm_clumps_kick(w, a.h);
     if (w->nbodies)
@@ -355,14 +458,14 @@ static demill_status euler(demill_world *w, uint64_t steps)
 {
     const int d3 = w->dim == 3;
     dm_particles *P = &w->p;
-    step_args a = {.dt = w->dt, .h = w->dt, .hth = w->dt, .rotation = w->rotation};
+    step_args a = step_args_of(w, w->dt);
     for (uint64_t s = 0; s < steps; s++) {
         double d2 = drift(w, d3 ? euler_drift3 : euler_drift2, &a);
         if (w->live_clumps)
             d2 = fmax(d2, dm_clumps_drift(w, w->dt, 0, 0));
         if (w->nbodies)
             dm_bodies_drift(w, w->dt, 0, 0);
-        demill_status st = finish_step(w, d2, P->v, P->w, 1.0);
+        demill_status st = finish_step(w, d2, P->v, P->w, 1.0, forces_options(&a, s + 1 < steps));
         if (st)
             return st;
     }
@@ -404,7 +507,7 @@ demill_status dm_prepare_step(demill_world *w)
     if (!w->nlist_valid && (s = dm_nlist_build(w)))
         return s;
     if (!w->forces_valid)
-        dm_forces(w, w->p.v, w->p.w, 0.0, 0.0, 0);
+        dm_forces(w, w->p.v, w->p.w, 0.0, 0.0, 0, 0);
     return DEMILL_OK;
 }
 

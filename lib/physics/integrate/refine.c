@@ -447,7 +447,7 @@ static int iterations(demill_world *w, refine_args *a, int *k, int *done, double
             a->fprev = R->fprev;
             a->tprev = R->tprev;
         }
-        dm_forces(w, P->vp, P->wp, w->dt, 0.5, tally);
+        dm_forces(w, P->vp, P->wp, w->dt, 0.5, tally, 0);
         const int ranges = dm_parallel(w, P->n, w->dim == 3 ? converged3 : converged2, a);
         uint32_t bad = 0;
         for (int t = 0; t < ranges; t++)

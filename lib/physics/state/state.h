@@ -376,26 +376,37 @@ typedef struct dm_chunkref {
     uint16_t kernel; /* bucket */
     uint16_t walls;  /* 1: of the particle-wall lists */
     uint32_t i0;     /* particle of the first candidate: the range that runs it */
+    uint32_t lo, hi; /* the least dm_results.lo and the last particle of its pairs */
 } dm_chunkref;
 
 /* The results of a force evaluation per pair, and what sums them. Pair ids
  * number the particle-particle buckets in kernel order, then the
- * particle-wall ones. The kernels store each pair's force and torques by
- * pair id; then the particles' sums are taken in pair-id order, each thread
- * summing for its own range of particles, so that no sum depends on how the
- * work was shared among threads (forces.c). */
+ * particle-wall ones. Every particle's sum is taken in pair-id order, so
+ * that no sum depends on how the work was shared among threads
+ * (forces.c): by the chunks as they go for the particles all of whose
+ * pairs are in chunks of the particle's own range; for the others, the
+ * kernels store each pair's force and torques by pair id and list it, and
+ * the range sums them afterwards. */
 typedef struct dm_results {
     uint32_t n, npp, cap;   /* pairs, of them particle-particle, room */
     double *out;            /* S = D + 2W per pair: force on b, torques on a and on b */
     uint32_t *list;         /* per chunk, from its first pair's id: its pairs with a
                                result in out (indices in the bucket): those that came
-                               apart, then those touching, each in bucket order */
+                               apart, then those touching, each in bucket order; of
+                               particle pairs, only those not summed as they went */
     dm_chunkref *chunks;    /* in pair-id order */
     dm_tally *chunk_tally;  /* per chunk: dissipation, */
     uint32_t *chunk_contacts; /* pairs in contact, */
     uint32_t *chunk_listed;   /* and pairs in its list */
     uint32_t nchunks, cap_chunks;
+    uint32_t *lo;           /* per particle: the first particle (i0) of the first chunk
+                               with one of its pairs; a range [begin, end) runs every
+                               chunk of particle p < end if lo[p] >= begin (forces.c) */
+    uint32_t cap_particles;
     bool valid;             /* matches the lists */
+    bool reach_valid;       /* lo and the chunks' lo, hi match them too */
+    int pending;            /* the ranges whose sums dm_forces() left to its caller,
+                               or 0 (contact.h, DM_FORCES_DEFER) */
 } dm_results;
 
 /* ---- the mill (mill/drum.c; its spectrum counted by contact/spectrum.c) --- */
