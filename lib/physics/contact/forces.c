@@ -304,7 +304,7 @@ static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca
         dm_kernel_args a = {.w = w, .b = b, .k0 = r.k0, .geom_offset = b->base - q->npp,
                             .vp = ca->vp, .wp = ca->wp, .dt_hist = ca->dt_hist,
                             .reach = ca->reach, .tally = ca->tally, .direct = ca->direct};
-        dm_kernel(D, r.walls, r.kernel)(&a);
+        dm_kernel(D, r.walls, r.kernel, w->single)(&a);
         q->chunk_tally[c] = a.t;
         q->chunk_contacts[c] = a.contacts;
         q->chunk_listed[c] = a.listed;
