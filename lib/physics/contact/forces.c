@@ -289,9 +289,10 @@ typedef struct chunk_args {
 
 /* The chunks whose first pair belongs to a particle of [begin, end): the
  * ranges that sum the particles' forces next find most of their pairs' results
- * in their own core's cache. */
-static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca,
-                              uint32_t begin, uint32_t end)
+ * in their own core's cache. SINGLE: with the single-precision kernels (a
+ * constant, so that the choice costs the loop nothing). */
+static inline void run_chunks(const int D, const int SINGLE, demill_world *w,
+                              const chunk_args *ca, uint32_t begin, uint32_t end)
 {
     dm_results *q = &w->res;
     if (ca->direct) /* the only range: the chunks add into the sums as they go */
@@ -304,7 +305,7 @@ static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca
         dm_kernel_args a = {.w = w, .b = b, .k0 = r.k0, .geom_offset = b->base - q->npp,
                             .vp = ca->vp, .wp = ca->wp, .dt_hist = ca->dt_hist,
                             .reach = ca->reach, .tally = ca->tally, .direct = ca->direct};
-        dm_kernel(D, r.walls, r.kernel, w->single)(&a);
+        dm_kernel(D, r.walls, r.kernel, SINGLE)(&a);
         q->chunk_tally[c] = a.t;
         q->chunk_contacts[c] = a.contacts;
         q->chunk_listed[c] = a.listed;
@@ -321,17 +322,16 @@ static void mesh_range(demill_world *w, void *a, int t, uint32_t begin, uint32_t
     dm_wgeom_meshes(w, begin, end, ca->dt_hist > 0.0);
 }
 
-static void run_chunks2(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)
-{
-    (void)t;
-    run_chunks(2, w, a, begin, end);
-}
-
-static void run_chunks3(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)
-{
-    (void)t;
-    run_chunks(3, w, a, begin, end);
-}
+#define RUN_CHUNKS(D, SINGLE, NAME)                                                               \
+    static void NAME(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)               \
+    {                                                                                             \
+        (void)t;                                                                                  \
+        run_chunks(D, SINGLE, w, a, begin, end);                                                  \
+    }
+RUN_CHUNKS(2, 0, run_chunks2)
+RUN_CHUNKS(3, 0, run_chunks3)
+RUN_CHUNKS(2, 1, run_chunks2_single)
+RUN_CHUNKS(3, 1, run_chunks3_single)
 
 /* Evaluates all forces and torques at the current state. dt_hist > 0 advances
  * the contact histories by that time (a real step); tally adds the step's
@@ -354,7 +354,10 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
                      .direct = dm_ranges(w, n) == 1};
     if (dm_walls_have_mesh(w))
         dm_parallel(w, n, mesh_range, &ca);
-    dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
+    if (w->single)
+        dm_parallel(w, n, D == 3 ? run_chunks3_single : run_chunks2_single, &ca);
+    else
+        dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
     const uint32_t nchunks = q->nchunks;
     dm_tally t = {0};
     w->ncontacts = w->nwall_contacts = 0;
