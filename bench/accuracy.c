@@ -14,9 +14,9 @@
  * measurement of a problem simulates the same physical time, whatever Δt.
  * evals_per_step: force evaluations per step over the measurement. Lines
  * starting with '#' are notes, "# what: key=value ...": the mill's reference
- * runs, the refinement's steps that reached the iteration limit
- * ("unconverged"), and at the end the run's wall and CPU time. Progress goes
- * to stderr.
+ * runs, the mean power of each measured mill run, the refinement's steps
+ * that reached the iteration limit ("unconverged"), and at the end the run's
+ * wall and CPU time. Progress goes to stderr.
  *
  * The problems:
  *   linear_restitution  binary impact, linear spring-dashpot, e = 0.5: worst
@@ -604,9 +604,15 @@ static double mill_mean_power(run *r)
     return sum / (double)(end - start);
 }
 
+/* The mean power's relative distance from the reference; the power itself,
+ * whose sign the distance loses, as a note. */
 static double mill_power(run *r)
 {
-    return rel(mill_mean_power(r), r->reference);
+    const double power = mill_mean_power(r);
+    char eps[32];
+    printf("# mill_power run: integrator=%s eps=%s steps_per_contact=%g power=%.9g\n",
+           r->s.name, eps_text(&r->s, eps), r->spc, power);
+    return rel(power, r->reference);
 }
 
 /* ---- the study ------------------------------------------------------------- */
@@ -833,7 +839,7 @@ int main(int argc, char **argv)
     for (int k = 0; o.refine && k < o.neps; k++)
         schemes[nschemes++] = refinement(o.eps[k]);
     if (o.single)
-        printf("# precision: single (world.single_precision = 1 in every world)\n");
+        printf("# precision: single (world.single_precision on in every world)\n");
     if (o.gas_nudged)
         printf("# gas_energy: disc %d moved by 1 nm\n", o.gas_nudged - 1);
     printf("problem,integrator,eps,steps_per_contact,error,seconds,evals_per_step\n");
