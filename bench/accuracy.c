@@ -14,9 +14,9 @@
  * measurement of a problem simulates the same physical time, whatever Δt.
  * evals_per_step: force evaluations per step over the measurement. Lines
  * starting with '#' are notes, "# what: key=value ...": the mill's reference
- * runs, the refinement's steps that reached the iteration limit
- * ("unconverged"), and at the end the run's wall and CPU time. Progress goes
- * to stderr.
+ * runs, the mean power of each measured mill run, the refinement's steps
+ * that reached the iteration limit ("unconverged"), and at the end the run's
+ * wall and CPU time. Progress goes to stderr.
  *
  * The problems:
  *   linear_restitution  binary impact, linear spring-dashpot, e = 0.5: worst
@@ -47,8 +47,13 @@
  *                       1/MILL_REFERENCE_STEPS of t_c). The flow is chaotic:
  *                       runs that differ by 1 nm in one ball's position give
  *                       mean powers that differ by 1-2 %; the notes give the
- *                       reference, its check by the converged refinement and
- *                       MILL_NUDGES such runs.
+ *                       reference, its check by the converged refinement (if
+ *                       the refinement is studied) and MILL_NUDGES such runs.
+ *
+ * --single runs every world with the single-precision contact kernels
+ * (world.single_precision; docs/accuracy.md, Single precision); --nudge K
+ * moves disc K of the gas by 1 nm, for the spread that chaos alone gives
+ * its largest energy error.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
@@ -97,6 +102,8 @@ typedef struct run {
     double spc;             /* steps per contact duration: Δt = t_c / spc */
     int max_iterations;     /* of the refinement */
     int quick;
+    int single;             /* DEMILL_WORLD_SINGLE_PRECISION in every world */
+    int gas_nudged;         /* gas_energy: 1 + the index of a disc moved by 1 nm, or 0 */
     double reference;       /* mill_power: the reference power, W */
     int nudged;             /* mill_power: 1 + the index of a ball moved by 1 nm, or 0 */
     demill_world *w;        /* the world being stepped, if any */
@@ -191,6 +198,7 @@ static demill_id open_world(run *r, int dim, double tc, double gy, double densit
     set(r, DEMILL_WORLD_GRAVITY_Y, gy);
     set(r, DEMILL_WORLD_ENERGY_TRACKING, 0);
     set(r, DEMILL_WORLD_WATCHDOG, 0);
+    set(r, DEMILL_WORLD_SINGLE_PRECISION, r->single);
     demill_id m;
     ok(r, demill_material_create(r->w, &m), "material");
     const int32_t keys[] = {DEMILL_MATERIAL_DENSITY, DEMILL_MATERIAL_YOUNGS_MODULUS,
@@ -473,6 +481,8 @@ static double gas_energy(run *r)
         demill_id wall;
         ok(r, demill_wall_add_plane(r->w, m, p, n, &wall), "wall");
     }
+    if (r->gas_nudged)
+        x[3 * (r->gas_nudged - 1)] += 1e-9;
     ok(r, demill_particles_add(r->w, m, N, x, radii, v, DEMILL_ADD_NO_OVERLAP, NULL),
        "particles");
     const double e0 = total_energy(r);
@@ -594,9 +604,15 @@ static double mill_mean_power(run *r)
     return sum / (double)(end - start);
 }
 
+/* The mean power's relative distance from the reference; the power itself,
+ * whose sign the distance loses, as a note. */
 static double mill_power(run *r)
 {
-    return rel(mill_mean_power(r), r->reference);
+    const double power = mill_mean_power(r);
+    char eps[32];
+    printf("# mill_power run: integrator=%s eps=%s steps_per_contact=%g power=%.9g\n",
+           r->s.name, eps_text(&r->s, eps), r->spc, power);
+    return rel(power, r->reference);
 }
 
 /* ---- the study ------------------------------------------------------------- */
@@ -621,7 +637,7 @@ typedef struct options {
     int problem[NPROBLEMS];        /* selected */
     int euler, verlet, refine;     /* selected */
     double eps[MAX_LIST], spc[MAX_LIST];
-    int neps, nspc, max_iterations, quick;
+    int neps, nspc, max_iterations, quick, single, gas_nudged;
 } options;
 
 static void usage(FILE *f)
@@ -636,6 +652,10 @@ static void usage(FILE *f)
           "  --quick               a short run: steps 5,10,20,50 unless given, the gas over\n"
           "                        1/20 of its time, the mill without the checks of its\n"
           "                        reference\n"
+          "  --single              every world with the single-precision kernels\n"
+          "                        (world.single_precision)\n"
+          "  --nudge K             the gas with disc K (0-63) moved by 1 nm along x: how far\n"
+          "                        chaos alone moves its largest energy error\n"
           "  --help                this text\n",
           f);
 }
@@ -693,7 +713,7 @@ static int parse_args(int argc, char **argv, options *o)
     memcpy(o->eps, eps, sizeof eps);
     o->nspc = 0;
     o->max_iterations = 20;
-    o->quick = 0;
+    o->quick = o->single = o->gas_nudged = 0;
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
         int good = 1;
@@ -702,6 +722,9 @@ static int parse_args(int argc, char **argv, options *o)
             exit(EXIT_SUCCESS);
         } else if (!strcmp(a, "--quick")) {
             o->quick = 1;
+            continue;
+        } else if (!strcmp(a, "--single")) {
+            o->single = 1;
             continue;
         } else if (!v) {
             good = 0;
@@ -713,6 +736,9 @@ static int parse_args(int argc, char **argv, options *o)
             good = (o->neps = parse_numbers(v, o->eps)) > 0;
         } else if (!strcmp(a, "--steps")) {
             good = (o->nspc = parse_numbers(v, o->spc)) > 0;
+        } else if (!strcmp(a, "--nudge")) {
+            o->gas_nudged = 1 + atoi(v);
+            good = o->gas_nudged >= 1 && o->gas_nudged <= GAS_SIDE * GAS_SIDE;
         } else if (!strcmp(a, "--max-iterations")) {
             o->max_iterations = atoi(v);
             good = o->max_iterations >= 1 && o->max_iterations <= 100;
@@ -773,10 +799,10 @@ static void mill_note(const char *label, const run *t, result o, double differen
 
 /* The mill's reference power, velocity Verlet at MILL_REFERENCE_STEPS, and
  * unless quick its checks, as notes: the refinement converged (ε_a 1e-8) at
- * the same step, and the reference run with one ball moved by 1 nm,
- * MILL_NUDGES times, which shows how far chaos alone spreads the mean power.
- * t: the options of the runs. */
-static double mill_reference(run t)
+ * the same step if the refinement is studied (refine), and the reference
+ * run with one ball moved by 1 nm, MILL_NUDGES times, which shows how far
+ * chaos alone spreads the mean power. t: the options of the runs. */
+static double mill_reference(run t, int refine)
 {
     t.s = verlet;
     t.spc = MILL_REFERENCE_STEPS;
@@ -785,9 +811,12 @@ static double mill_reference(run t)
     if (t.quick)
         return ref.value;
     run c = t;
-    c.s = refinement(1e-8);
-    result o = measure(mill_mean_power, "mill_power check", c);
-    mill_note("check", &c, o, rel(o.value, ref.value));
+    result o;
+    if (refine) {
+        c.s = refinement(1e-8);
+        o = measure(mill_mean_power, "mill_power check", c);
+        mill_note("check", &c, o, rel(o.value, ref.value));
+    }
     for (c = t, c.nudged = 1; c.nudged <= MILL_NUDGES; c.nudged++) {
         o = measure(mill_mean_power, "mill_power check", c);
         mill_note("nudged", &c, o, rel(o.value, ref.value));
@@ -809,13 +838,18 @@ int main(int argc, char **argv)
         schemes[nschemes++] = verlet;
     for (int k = 0; o.refine && k < o.neps; k++)
         schemes[nschemes++] = refinement(o.eps[k]);
+    if (o.single)
+        printf("# precision: single (world.single_precision on in every world)\n");
+    if (o.gas_nudged)
+        printf("# gas_energy: disc %d moved by 1 nm\n", o.gas_nudged - 1);
     printf("problem,integrator,eps,steps_per_contact,error,seconds,evals_per_step\n");
-    run t = {.max_iterations = o.max_iterations, .quick = o.quick, .reference = NAN};
+    run t = {.max_iterations = o.max_iterations, .quick = o.quick, .single = o.single,
+             .gas_nudged = o.gas_nudged, .reference = NAN};
     for (int p = 0; p < NPROBLEMS; p++) {
         if (!o.problem[p])
             continue;
         if (problems[p].measure == mill_power)
-            t.reference = mill_reference(t);
+            t.reference = mill_reference(t, o.refine);
         for (int s = 0; s < nschemes; s++)
             for (int k = 0; k < o.nspc; k++) {
                 t.s = schemes[s];

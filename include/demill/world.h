@@ -127,6 +127,20 @@ enum {
      *  Default 500 (on the drum3d benchmark the watchdog then costs under
      *  1 % of the run time; at 100, 4 %). */
     DEMILL_WORLD_WATCHDOG_INTERVAL = 114,
+    /** 1 runs the contact kernels in single precision, 0 (default) in
+     *  double. Positions, velocities, contact histories in storage and the
+     *  sums of forces and energies stay double; the relative kinematics of
+     *  each contact (normal, overlap, relative velocities, lever arms) are
+     *  computed in double and rounded to float, and the contact law and its
+     *  results (forces, torques, dissipation, the new history) are computed
+     *  in float, twice as many contacts per vector instruction. Only the
+     *  fast laws have single-precision kernels (linear or Hertz normal law,
+     *  no or constant-torque rolling resistance, no cohesion): pairs with an
+     *  elasto-plastic law, the rolling spring or cohesion stay in double.
+     *  Results stay bitwise the same for every thread count, and snapshots
+     *  and checkpoints keep the setting. What it costs in accuracy and gains
+     *  in speed, and when to use it: docs/accuracy.md, Single precision. */
+    DEMILL_WORLD_SINGLE_PRECISION = 115,
 
     /** The world's dimension, 2 or 3. */
     DEMILL_WORLD_DIMENSION = 150,

@@ -289,9 +289,10 @@ typedef struct chunk_args {
  * results to the sums of the range's particles all of whose pairs are in
  * the range's chunks as they go, in pair-id order (on one range, every
  * particle's): a chunk's all of them (direct) when it holds no pair of
- * another particle (dm_direct()). */
-static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca,
-                              uint32_t begin, uint32_t end)
+ * another particle (dm_direct()). SINGLE: with the single-precision kernels
+ * (a constant, so that the choice costs the loop nothing). */
+static inline void run_chunks(const int D, const int SINGLE, demill_world *w,
+                              const chunk_args *ca, uint32_t begin, uint32_t end)
 {
     dm_results *q = &w->res;
     if (!ca->preset)
@@ -306,7 +307,7 @@ static inline void run_chunks(const int D, demill_world *w, const chunk_args *ca
                             .reach = ca->reach, .tally = ca->tally,
                             .direct = ca->one || (r.lo >= begin && r.hi < end), .lo = q->lo,
                             .begin = begin, .end = end};
-        dm_kernel(D, r.walls, r.kernel)(&a);
+        dm_kernel(D, r.walls, r.kernel, SINGLE)(&a);
         q->chunk_tally[c] = a.t;
         q->chunk_contacts[c] = a.contacts;
         q->chunk_listed[c] = a.listed;
@@ -323,17 +324,16 @@ static void mesh_range(demill_world *w, void *a, int t, uint32_t begin, uint32_t
     dm_wgeom_meshes(w, begin, end, ca->dt_hist > 0.0);
 }
 
-static void run_chunks2(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)
-{
-    (void)t;
-    run_chunks(2, w, a, begin, end);
-}
-
-static void run_chunks3(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)
-{
-    (void)t;
-    run_chunks(3, w, a, begin, end);
-}
+#define RUN_CHUNKS(D, SINGLE, NAME)                                                               \
+    static void NAME(demill_world *w, void *a, int t, uint32_t begin, uint32_t end)               \
+    {                                                                                             \
+        (void)t;                                                                                  \
+        run_chunks(D, SINGLE, w, a, begin, end);                                                  \
+    }
+RUN_CHUNKS(2, 0, run_chunks2)
+RUN_CHUNKS(3, 0, run_chunks3)
+RUN_CHUNKS(2, 1, run_chunks2_single)
+RUN_CHUNKS(3, 1, run_chunks3_single)
 
 /* Evaluates all forces and torques at the current state (options:
  * DM_FORCES_*, contact.h). dt_hist > 0 advances
@@ -360,7 +360,10 @@ void dm_forces(demill_world *w, const double *vp, const double *wp, double dt_hi
         dm_results_reach(w);
     if (dm_walls_have_mesh(w))
         dm_parallel(w, n, mesh_range, &ca);
-    dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
+    if (w->single)
+        dm_parallel(w, n, D == 3 ? run_chunks3_single : run_chunks2_single, &ca);
+    else
+        dm_parallel(w, n, D == 3 ? run_chunks3 : run_chunks2, &ca);
     const uint32_t nchunks = q->nchunks;
     dm_tally t = {0};
     w->ncontacts = w->nwall_contacts = 0;

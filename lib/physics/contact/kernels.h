@@ -492,9 +492,140 @@ DM_INLINE void dm_chunk_laws(const int D, const int NL, const int DL, const int 
 typedef void (*dm_law_fn)(dm_chunk *ch, uint32_t lanes, const dm_pairparam *tab, double dt_hist,
                           double reach, dm_laws l);
 
+/* ---- the single-precision path (DEMILL_WORLD_SINGLE_PRECISION) ----------
+ * The fast kernels' kinematics and law passes in float: the kinematics are
+ * computed in double from the particles' double positions and velocities
+ * (so that the relative vectors and the overlap are differences of doubles)
+ * and rounded as they are gathered into a float chunk; the law (dm_lawf)
+ * runs on floats, twice the lanes of a vector; its results and the new
+ * histories are widened into the double chunk, whose commit pass and the
+ * sums into the particles are the double kernels'. Contact histories stay
+ * double in storage (rounded to float each step they are used). */
+typedef struct dm_chunkf {
+    float f[3][DM_CHUNK];                   /* force on b */
+    float ta[3][DM_CHUNK], tb[3][DM_CHUNK]; /* torques on a and b (W components) */
+    float diss[DM_DISS_FAST][DM_CHUNK];     /* dissipation by mechanism */
+    float h[DM_MAX_HIST][DM_CHUNK];         /* histories, then their new values */
+    /* the kinematics of the touching pairs (dm_kin, by component) */
+    float n[3][DM_CHUNK], delta[DM_CHUNK], ai[DM_CHUNK], aj[DM_CHUNK];
+    float vc[3][DM_CHUNK], dc[3][DM_CHUNK], wrel[3][DM_CHUNK], rstar[DM_CHUNK], mstar[DM_CHUNK];
+} dm_chunkf;
+
+/* Pair s's kinematics q (computed in double) into the float chunk, rounded
+ * (ROLL: the constant-torque rolling law's wrel too). */
+DM_INLINE void dm_kin_putf(const int D, const int ROLL, dm_chunkf *cf, uint32_t s,
+                           const dm_kin *q)
+{
+    for (int c = 0; c < D; c++) {
+        cf->n[c][s] = (float)q->n[c];
+        cf->vc[c][s] = (float)q->vc[c];
+        cf->dc[c][s] = (float)q->dc[c];
+    }
+    for (int c = 0; c < (ROLL ? (D == 3 ? 3 : 1) : 0); c++)
+        cf->wrel[c][s] = (float)q->wrel[c];
+    cf->delta[s] = (float)q->delta;
+    cf->ai[s] = (float)q->ai;
+    cf->aj[s] = (float)q->aj;
+    cf->rstar[s] = (float)q->rstar;
+    cf->mstar[s] = (float)q->mstar;
+}
+
+/* The kinematics of the first `lanes` touching pairs of ch (ch->k) into cf,
+ * as dm_kins (kinematics.c), for the fast kernels' rolling laws (none,
+ * constant torque). */
+typedef void (*dm_kinf_fn)(const dm_kernel_args *a, const dm_chunk *ch, dm_chunkf *cf,
+                           uint32_t lanes);
+extern const dm_kinf_fn dm_kinsf[2][2][2][2];
+
+/* The float law of the chunk's first `lanes` pairs, from the kinematics and
+ * histories in cf and the pair entries and new-contact flags in ch: what
+ * dm_chunk_law() stores, in float. */
+DM_INLINE void dm_chunk_lawsf(const int D, const int NL, const int DL, const int TL,
+                              const int RL, const dm_chunk *restrict ch, dm_chunkf *restrict cf,
+                              uint32_t lanes, const dm_pairparam *restrict tab, float dt_hist,
+                              float reach)
+{
+    const int W = D == 3 ? 3 : 1, HSL = dm_law_hist_size(NL, DL, TL, RL, D);
+    const uint32_t n = lanes / DM_LANES * DM_LANES; /* = lanes (see dm_kin_fn) */
+    for (uint32_t s = 0; s < n; s++) {
+        float nq[3] = {0.0f, 0.0f, 0.0f}, vc[3] = {0.0f, 0.0f, 0.0f}, dc[3] = {0.0f, 0.0f, 0.0f};
+        float wrel[3] = {0.0f, 0.0f, 0.0f}, hin[DM_MAX_HIST], hout[DM_MAX_HIST];
+        for (int c = 0; c < D; c++) {
+            nq[c] = cf->n[c][s];
+            vc[c] = cf->vc[c][s];
+            dc[c] = cf->dc[c][s];
+        }
+        for (int c = 0; c < (RL ? W : 0); c++)
+            wrel[c] = cf->wrel[c][s];
+        for (int c = 0; c < HSL; c++)
+            hin[c] = cf->h[c][s];
+        dm_law_outf o;
+        dm_lawf(D, NL, DL, TL, RL, DEMILL_COHESION_NONE, &tab[ch->pp[s]], nq, cf->delta[s], vc,
+                dc, wrel, NULL, 0.0f, cf->rstar[s], cf->mstar[s], dt_hist, reach,
+                (int)ch->first[s], hin, hout, &o);
+        /* n × f_t: the torques' lever-arm part (dm_n_cross) */
+        float nf[3];
+        if (D == 3) {
+            nf[0] = nq[1] * o.ft[2] - nq[2] * o.ft[1];
+            nf[1] = nq[2] * o.ft[0] - nq[0] * o.ft[2];
+            nf[2] = nq[0] * o.ft[1] - nq[1] * o.ft[0];
+        } else {
+            nf[0] = nq[0] * o.ft[1] - nq[1] * o.ft[0];
+        }
+        for (int c = 0; c < D; c++)
+            cf->f[c][s] = o.fn * nq[c] + o.ft[c];
+        for (int c = 0; c < W; c++) {
+            cf->ta[c][s] = o.mr[c] - cf->ai[s] * nf[c];
+            cf->tb[c][s] = -o.mr[c] - cf->aj[s] * nf[c];
+        }
+        cf->diss[0][s] = o.diss_normal;
+        cf->diss[1][s] = o.diss_tangential;
+        cf->diss[2][s] = o.diss_friction;
+        cf->diss[3][s] = o.diss_rolling;
+        for (int c = 0; c < HSL; c++)
+            cf->h[c][s] = hout[c];
+    }
+}
+
+/* The kinematics and law passes of a chunk in float, for a fast kernel's
+ * laws: the histories dm_chunk_load() put into ch rounded into a float
+ * chunk, the float kinematics and law, and the results of the m touching
+ * pairs widened back into ch for the commit pass. walls: particle-wall
+ * pairs. */
+DM_INLINE void dm_chunk_single(const int D, const int NL, const int DL, const int TL,
+                               const int RL, const dm_kernel_args *a, dm_chunk *restrict ch,
+                               uint32_t lanes, uint32_t m, int walls)
+{
+    const int W = D == 3 ? 3 : 1, HSL = dm_law_hist_size(NL, DL, TL, RL, D);
+    dm_chunkf cf;
+    for (int c = 0; c < HSL; c++)
+        for (uint32_t s = 0; s < lanes; s++)
+            cf.h[c][s] = (float)ch->h[c][s];
+    dm_kinsf[D == 3][walls][TL != DEMILL_TANGENTIAL_NONE][RL](a, ch, &cf, lanes);
+    dm_chunk_lawsf(D, NL, DL, TL, RL, ch, &cf, lanes, a->w->ptab, (float)a->dt_hist,
+                   (float)a->reach);
+    for (uint32_t s = 0; s < m; s++) {
+        for (int c = 0; c < D; c++)
+            ch->f[c][s] = cf.f[c][s];
+        for (int c = 0; c < W; c++) {
+            ch->ta[c][s] = cf.ta[c][s];
+            ch->tb[c][s] = cf.tb[c][s];
+        }
+        for (int c = 0; c < DM_DISS_FAST; c++)
+            ch->diss[c][s] = cf.diss[c][s];
+        for (int c = 0; c < HSL; c++)
+            ch->h[c][s] = cf.h[c][s];
+    }
+}
+
+/* A combination's single-precision passes (dm_chunk_single), shared by its
+ * particle-particle and particle-wall kernels. */
+typedef void (*dm_single_fn)(const dm_kernel_args *a, dm_chunk *ch, uint32_t lanes, uint32_t m,
+                             int walls);
+
 /* Particle-particle chunk. */
 DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
-                           const int CL, dm_law_fn laws, dm_kernel_args *a)
+                           const int CL, dm_law_fn laws, dm_single_fn single, dm_kernel_args *a)
 {
     const int S = D + 2 * (D == 3 ? 3 : 1);
     const int HSL = dm_law_hist_size(NL, DL, TL, RL, D), HSP = dm_law_tangential_size(TL, D);
@@ -569,9 +700,13 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
         on[k] = 0;
     }
     const uint32_t lanes = dm_chunk_load(HSL, 0, w, b, &ch, m);
-    const dm_laws l = {NL, DL, TL, RL, CL};
-    dm_kins[D == 3][0][SPIN][RL](a, &ch, lanes);
-    laws(&ch, lanes, tab, dt_hist, reach, l);
+    if (single) { /* the single-precision kernels' kinematics and law */
+        single(a, &ch, lanes, m, 0);
+    } else {
+        const dm_laws l = {NL, DL, TL, RL, CL};
+        dm_kins[D == 3][0][SPIN][RL](a, &ch, lanes);
+        laws(&ch, lanes, tab, dt_hist, reach, l);
+    }
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
         dm_chunk_commit(HSL, EV, XL, &ch, s, hist + (size_t)HS * k, on + k, advance, tally, &t);
@@ -594,7 +729,7 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
  * then the law. The walls' forces, torques and energies are summed afterwards
  * (forces.c), from out and the geometry's lost. */
 DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
-                           const int CL, dm_law_fn laws, dm_kernel_args *a)
+                           const int CL, dm_law_fn laws, dm_single_fn single, dm_kernel_args *a)
 {
     const int S = D + 2 * (D == 3 ? 3 : 1);
     const int HSL = dm_law_hist_size(NL, DL, TL, RL, D), HSP = dm_law_tangential_size(TL, D);
@@ -660,9 +795,13 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
         on[k] = 0;
     }
     const uint32_t lanes = dm_chunk_load(HSL, 1, w, b, &ch, m);
-    const dm_laws l = {NL, DL, TL, RL, CL};
-    dm_kins[D == 3][1][SPIN][RL](a, &ch, lanes);
-    laws(&ch, lanes, tab, dt_hist, reach, l);
+    if (single) { /* the single-precision kernels' kinematics and law */
+        single(a, &ch, lanes, m, 1);
+    } else {
+        const dm_laws l = {NL, DL, TL, RL, CL};
+        dm_kins[D == 3][1][SPIN][RL](a, &ch, lanes);
+        laws(&ch, lanes, tab, dt_hist, reach, l);
+    }
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
         g->lost[g0 + k] = dm_chunk_commit(HSL, EV, XL, &ch, s, hist + (size_t)HS * k, on + k,
@@ -694,11 +833,11 @@ typedef struct dm_kernel_slice {
     }                                                                                             \
     DM_VECTOR_CLONES static void dm_pp_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
-        dm_pp_chunk(D, NL, DL, TL, RL, 0, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, a);            \
+        dm_pp_chunk(D, NL, DL, TL, RL, 0, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, NULL, a);      \
     }                                                                                             \
     DM_VECTOR_CLONES static void dm_pw_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
-        dm_pw_chunk(D, NL, DL, TL, RL, 0, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, a);            \
+        dm_pw_chunk(D, NL, DL, TL, RL, 0, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, NULL, a);      \
     }
 #define DM_PP_ENTRY(D, NL, DL, TL, RL) dm_pp_##D##_##NL##_##DL##_##TL##_##RL,
 #define DM_PW_ENTRY(D, NL, DL, TL, RL) dm_pw_##D##_##NL##_##DL##_##TL##_##RL,
@@ -717,20 +856,53 @@ typedef struct dm_kernel_slice {
     const dm_kernel_slice dm_kernels_##D##_##NL##_##DL = {                                        \
         {DM_FOR_TL(DM_PP_ENTRY, D, NL, DL)}, {DM_FOR_TL(DM_PW_ENTRY, D, NL, DL)}};
 
-/* Every slice of a dimension, in kernel order (kernels.c). */
+/* The single-precision kernels of a combination (dm_chunk_single), and a
+ * slice of them, dm_kernels_single_D_NL_DL, each in a file of kernels/ of
+ * its own (3d_hertz_restitution_single.c), as the double slices. */
+#define DM_DEFINE_SINGLE(D, NL, DL, TL, RL)                                                      \
+    DM_VECTOR_CLONES __attribute__((noinline)) static void                                        \
+        dm_single_##D##_##NL##_##DL##_##TL##_##RL(const dm_kernel_args *a, dm_chunk *ch,          \
+                                                  uint32_t lanes, uint32_t m, int walls)          \
+    {                                                                                             \
+        dm_chunk_single(D, NL, DL, TL, RL, a, ch, lanes, m, walls);                               \
+    }                                                                                             \
+    DM_VECTOR_CLONES static void dm_ppf_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)        \
+    {                                                                                             \
+        dm_pp_chunk(D, NL, DL, TL, RL, 0, NULL, dm_single_##D##_##NL##_##DL##_##TL##_##RL, a);    \
+    }                                                                                             \
+    DM_VECTOR_CLONES static void dm_pwf_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)        \
+    {                                                                                             \
+        dm_pw_chunk(D, NL, DL, TL, RL, 0, NULL, dm_single_##D##_##NL##_##DL##_##TL##_##RL, a);    \
+    }
+#define DM_PPF_ENTRY(D, NL, DL, TL, RL) dm_ppf_##D##_##NL##_##DL##_##TL##_##RL,
+#define DM_PWF_ENTRY(D, NL, DL, TL, RL) dm_pwf_##D##_##NL##_##DL##_##TL##_##RL,
+#define DM_KERNEL_SLICE_SINGLE(D, NL, DL)                                                        \
+    DM_FOR_TL(DM_DEFINE_SINGLE, D, NL, DL)                                                        \
+    const dm_kernel_slice dm_kernels_single_##D##_##NL##_##DL = {                                 \
+        {DM_FOR_TL(DM_PPF_ENTRY, D, NL, DL)}, {DM_FOR_TL(DM_PWF_ENTRY, D, NL, DL)}};
+
+/* Every slice of a dimension, in kernel order (kernels.c), in double and in
+ * single precision. */
 extern const dm_kernel_slice *const dm_kernels2[DM_SLICES], *const dm_kernels3[DM_SLICES];
+extern const dm_kernel_slice *const dm_kernels2_single[DM_SLICES],
+    *const dm_kernels3_single[DM_SLICES];
 
 /* The generic kernels of dimension 2 and 3 (kernels/generic.c), which read
  * the laws of their bucket's kernel. */
 extern const dm_kernel_fn dm_generic_pp[2], dm_generic_pw[2];
 
 /* The kernel of a chunk of dimension D: a particle-wall one if walls, else
- * a particle-particle one, of the combination kernel (dm_kernel_index()). */
-DM_INLINE dm_kernel_fn dm_kernel(const int D, int walls, int kernel)
+ * a particle-particle one, of the combination kernel (dm_kernel_index());
+ * single: a fast kernel in single precision (the generic kernel has none,
+ * and runs in double). */
+DM_INLINE dm_kernel_fn dm_kernel(const int D, int walls, int kernel, int single)
 {
     if (kernel >= DM_FAST_KERNELS)
         return (walls ? dm_generic_pw : dm_generic_pp)[D == 3];
-    const dm_kernel_slice *s = (D == 3 ? dm_kernels3 : dm_kernels2)[kernel / DM_SLICE_KERNELS];
+    const dm_kernel_slice *const *slices =
+        single ? (D == 3 ? dm_kernels3_single : dm_kernels2_single)
+               : (D == 3 ? dm_kernels3 : dm_kernels2);
+    const dm_kernel_slice *s = slices[kernel / DM_SLICE_KERNELS];
     return (walls ? s->pw : s->pp)[kernel % DM_SLICE_KERNELS];
 }
 

@@ -1,7 +1,9 @@
 /* kinematics.c: the contact kernels' kinematics loops (dm_kins, see
  * kernels.h), one per dimension, kind of pair, SPIN and rolling law: the 24
  * loops that the kernels share, compiled once rather than in every kernel
- * (those of the rolling spring serve the generic kernel only). */
+ * (those of the rolling spring serve the generic kernel only); and the 16
+ * loops of the single-precision kernels (dm_kinsf), which round the same
+ * kinematics into a float chunk. */
 #include "physics/contact/kernels.h"
 
 /* Particle-particle pairs: the separation again (the narrow phase kept only
@@ -60,3 +62,57 @@ KINS_D(3)
      {PAIRS##_kins_##D##_1_0, PAIRS##_kins_##D##_1_1, PAIRS##_kins_##D##_1_2}}
 const dm_kin_fn dm_kins[2][2][2][DM_ROLLING_LAWS] = {{ROW(2, pp), ROW(2, pw)},
                                                      {ROW(3, pp), ROW(3, pw)}};
+
+/* ---- the single-precision kernels' (dm_kinsf): the same kinematics, in
+ * double, rounded into the float chunk cf (dm_kin_putf) ---- */
+DM_INLINE void pp_kinsf(const int D, const int SPIN, const int ROLL, const dm_kernel_args *a,
+                        const dm_chunk *restrict ch, dm_chunkf *restrict cf, uint32_t lanes)
+{
+    const dm_particles *P = &a->w->p;
+    const double *vp = a->vp, *wp = a->wp;
+    const uint32_t *restrict bi = a->b->i, *restrict bj = a->b->j;
+    const uint32_t n = lanes / DM_LANES * DM_LANES; /* see dm_kin_fn */
+    for (uint32_t s = 0; s < n; s++) {
+        const uint32_t k = ch->k[s], i = bi[k], j = bj[k];
+        double d[3], r2;
+        dm_pp_touch(D, P, i, j, d, &r2);
+        dm_kin q;
+        dm_pp_kin(D, SPIN, ROLL, P, vp, wp, i, j, d, r2, &q);
+        dm_kin_putf(D, ROLL, cf, s, &q);
+    }
+}
+
+DM_INLINE void pw_kinsf(const int D, const int SPIN, const int ROLL, const dm_kernel_args *a,
+                        const dm_chunk *restrict ch, dm_chunkf *restrict cf, uint32_t lanes)
+{
+    const demill_world *w = a->w;
+    const double *vp = a->vp, *wp = a->wp;
+    const uint32_t *restrict bi = a->b->i, *restrict bj = a->b->j;
+    const uint32_t g0 = a->geom_offset, n = lanes / DM_LANES * DM_LANES; /* see dm_kin_fn */
+    for (uint32_t s = 0; s < n; s++) {
+        const uint32_t k = ch->k[s];
+        dm_kin q;
+        dm_pw_kin(D, SPIN, ROLL, &w->p, vp, wp, &w->wg, g0 + k, bi[k], &w->walls[bj[k]], &q);
+        dm_kin_putf(D, ROLL, cf, s, &q);
+    }
+}
+
+#define KINSF(D, SPIN, ROLL)                                                                      \
+    DM_VECTOR_CLONES static void pp_kinsf_##D##_##SPIN##_##ROLL(                                  \
+        const dm_kernel_args *a, const dm_chunk *ch, dm_chunkf *cf, uint32_t lanes)               \
+    {                                                                                             \
+        pp_kinsf(D, SPIN, ROLL, a, ch, cf, lanes);                                                \
+    }                                                                                             \
+    DM_VECTOR_CLONES static void pw_kinsf_##D##_##SPIN##_##ROLL(                                  \
+        const dm_kernel_args *a, const dm_chunk *ch, dm_chunkf *cf, uint32_t lanes)               \
+    {                                                                                             \
+        pw_kinsf(D, SPIN, ROLL, a, ch, cf, lanes);                                                \
+    }
+#define KINSF_D(D) KINSF(D, 0, 0) KINSF(D, 0, 1) KINSF(D, 1, 0) KINSF(D, 1, 1)
+KINSF_D(2)
+KINSF_D(3)
+
+#define ROWF(D, PAIRS)                                                                            \
+    {{PAIRS##_kinsf_##D##_0_0, PAIRS##_kinsf_##D##_0_1},                                          \
+     {PAIRS##_kinsf_##D##_1_0, PAIRS##_kinsf_##D##_1_1}}
+const dm_kinf_fn dm_kinsf[2][2][2][2] = {{ROWF(2, pp), ROWF(2, pw)}, {ROWF(3, pp), ROWF(3, pw)}};

@@ -25,17 +25,6 @@
 
 #define DM_INLINE static inline __attribute__((always_inline))
 
-typedef struct dm_law_out {
-    double fn;    /* normal force on b along n */
-    double fel;   /* its elastic part */
-    double ft[3]; /* tangential force on b (D components) */
-    double mr[3]; /* rolling torque on a (W components) */
-    /* energy dissipated over the step, by mechanism (see dm_tally) */
-    double diss_normal, diss_tangential, diss_friction, diss_rolling;
-    /* the extended laws' (dm_tally) */
-    double diss_plastic, diss_rolling_viscous, work_cohesion;
-} dm_law_out;
-
 /* The laws that only the generic kernel runs (see DM_FAST_KERNELS). */
 DM_INLINE int dm_law_extended(int normal, int rolling, int cohesion)
 {
@@ -187,295 +176,39 @@ DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar
  * following step). first: nonzero if the pair was apart at the last step,
  * so that this sample is the contact's first (the entry correction).
  * hin: the contact's history (zeros for a new contact); hout receives its
- * new value (dm_law_hist_size doubles).
+ * new value (dm_law_hist_size doubles); o, the forces and dissipation
+ * (dm_law_out). The body is law_body.h, which dm_lawf() below shares.
  *
  * The law has no branches that depend on the contact: every choice selects
  * between values computed for both outcomes, so that the kernels' loops
  * over contacts vectorise. Values computed for the outcome not taken may be
  * infinite or NaN; they are discarded. */
-DM_INLINE void dm_law(const int D, const int NL, const int DL, const int TL, const int RL,
-                      const int CL, const dm_pairparam *pp, const double *n, double delta,
-                      const double *vc, const double *dc, const double *wrel, const double *wd,
-                      double ir, double rstar, double mstar, double dt_hist, double reach,
-                      int first, const double *hin, double *hout, dm_law_out *o)
-{
-    const int W = D == 3 ? 3 : 1;
-    const int advance = dt_hist > 0.0;
-    /* cohesion (docs/physics.md, Cohesion): a contact that exists may be
-     * apart, δ < 0; the solids' laws see the overlap δ⁺ = max(δ, 0), and a
-     * liquid bridge across a gap touches nothing solid */
-    const double dsol = CL != DEMILL_COHESION_NONE && delta < 0.0 ? 0.0 : delta;
-    const int solid = CL != DEMILL_COHESION_CAPILLARY || delta > 0.0;
+#define DM_REAL double
+#define DM_LAW_NAME dm_law
+#define DM_LAW_OUT dm_law_out
+#define DM_SQRT sqrt
+#define DM_FABS fabs
+#include "physics/contact/law_body.h"
+#undef DM_REAL
+#undef DM_LAW_NAME
+#undef DM_LAW_OUT
+#undef DM_SQRT
+#undef DM_FABS
 
-    /* normal law (§2): elastic force and contact stiffness S = dF/dδ */
-    double fel, stiff, sq = 0.0, plastic = 0.0;
-    if (NL == DEMILL_NORMAL_LINEAR) {
-        fel = pp->kn * dsol;
-        stiff = pp->kn;
-    } else if (dm_normal_plastic(NL)) {
-        /* the elasto-plastic laws (contact/plastic.h): the force on the
-         * current branch, its unloading slope for S, the step's plastic
-         * work; the history δ_max (and the multi-path law's onset). They
-         * branch on the contact's state: only the generic kernel runs them */
-        const int HN = dm_law_off_normal(NL, DL, TL, D);
-        dm_plastic_out po;
-        dm_plastic_law(NL, pp, rstar, dsol, hin + HN, &po);
-        fel = po.f;
-        stiff = po.stiff;
-        sq = sqrt(rstar * dsol);
-        plastic = advance ? po.diss : 0.0;
-        hout[HN] = advance ? po.dmax : hin[HN];
-        if (NL == DEMILL_NORMAL_PLASTIC_PATHS)
-            hout[HN + 1] = advance ? po.onset : hin[HN + 1];
-    } else {
-        sq = sqrt(rstar * dsol);
-        fel = (4.0 / 3.0) * pp->e_star * sq * dsol;
-        stiff = 2.0 * pp->e_star * sq;
-    }
-    /* the cohesive force: JKR's force of the contact radius a(δ) less the
-     * Hertz force of δ⁺ (whose energy is stored as Hertz's), the contact's
-     * stiffness then 2E* a and Mindlin's √(R* δ) its radius a (Thornton and
-     * Yin 1991); or the bridge's attraction at the gap */
-    double fcoh = 0.0;
-    if (CL == DEMILL_COHESION_JKR) {
-        const double a = dm_jkr_radius(delta, rstar, pp->e_star, pp->adhesion);
-        double fh, fad;
-        dm_jkr_force(a, rstar, pp->e_star, pp->adhesion, &fh, &fad);
-        fcoh = fh + fad - fel;
-        sq = a;
-        stiff = 2.0 * pp->e_star * a;
-    }
-    if (CL == DEMILL_COHESION_CAPILLARY)
-        fcoh = dm_capillary_force(dsol - delta, rstar, pp->surface_tension, pp->contact_angle,
-                                  pp->liquid_volume);
-    double vn = 0.0;
-    for (int c = 0; c < D; c++)
-        vn += vc[c] * n[c];
-
-    /* normal damping (§3) */
-    double cn = 0.0, root_ms = 0.0;
-    if (DL == DEMILL_DAMPING_VISCOUS)
-        cn = pp->cn;
-    if (DL == DEMILL_DAMPING_RESTITUTION) {
-        root_ms = sqrt(mstar * stiff);
-        cn = pp->dcoef * root_ms;
-    }
-    if (CL == DEMILL_COHESION_CAPILLARY)
-        cn = solid ? cn : 0.0;
-    const int HT = dm_law_tangential_size(TL, D); /* exit slots: last force, overlap */
-    double vnd = vn; /* the normal velocity the dashpot sees */
-    if (dm_law_exit(NL, DL)) {
-        /* unclamped, in a continuing contact: the contact's own force
-         * change over the step, implicitly: v = v_pred + h (F_new -
-         * F_last)/m*, F_new = k δ - c v, with h the part of the step the
-         * integrator's second kick covers */
-        const double hm = (1.0 - reach) * dt_hist / mstar;
-        const double implicit = (vn + hm * (fel - hin[HT])) / (1.0 + hm * cn);
-        vnd = (!pp->clamp & (hin[HT + 1] > 0.0)) ? implicit : vn;
-    }
-    double fn = fel - cn * vnd;
-    fn = (pp->clamp & (fn < 0.0)) ? 0.0 : fn;
-    const double fn_now = fn;
-    if (dm_law_entry(DL)) {
-        /* first sample of an approaching contact: its age from the overlap
-         * under the current deceleration, at most a step, then the
-         * onset-exponent weight (see above): the impulse from contact to
-         * the end of the sample's window, ∫ (t/age)^p dt over
-         * [0, age + reach Δt], divided by Δt */
-        const double va = -vn, dec = fn / mstar;
-        /* δ = va age + dec age²/2 (va the speed at the sample, after the
-         * deceleration), solved for the root that is stable for dec -> 0 */
-        const double est = 2.0 * delta / (va + sqrt(va * va + 2.0 * dec * delta));
-        const double a = (est < dt_hist ? est : dt_hist) / dt_hist, e = a + reach; /* steps */
-        const int lin = NL == DEMILL_NORMAL_LINEAR || NL == DEMILL_NORMAL_WALTON_BRAUN;
-        const double w_d = lin ? e : 0.8 * e * sqrt(sqrt(e / a));
-        const int young = advance & first & (va > 0.0);
-        fn = young ? fel + w_d * (fn - fel) : fn;
-    }
-    if (dm_law_exit(NL, DL)) {
-        hout[HT] = advance ? fn_now : hin[HT];
-        hout[HT + 1] = advance ? dsol : hin[HT + 1];
-    }
-    /* the cohesive force joins after the clamp, which keeps the dashpot from
-     * pulling but not the cohesion; the work done against it is booked
-     * apart. Friction and rolling resistance are capped by the solids'
-     * load: the contact force, or for JKR its sum with twice the pull-off
-     * force (Thornton and Yin 1991), positive while the neck holds. */
-    const double load =
-        CL == DEMILL_COHESION_JKR ? fn + fcoh + 2.0 * dm_jkr_pull_off(rstar, pp->adhesion) : fn;
-    o->fn = CL != DEMILL_COHESION_NONE ? fn + fcoh : fn;
-    o->fel = fel;
-    o->diss_normal = -(fn - fel) * vnd * dt_hist;
-    o->diss_tangential = o->diss_friction = o->diss_rolling = 0.0;
-    o->diss_plastic = plastic;
-    o->diss_rolling_viscous = 0.0;
-    o->work_cohesion = -fcoh * vn * dt_hist;
-
-    /* tangential law (§4) */
-    double vt[3], dt_rate[3], dn = 0.0;
-    for (int c = 0; c < D; c++) {
-        vt[c] = vc[c] - vn * n[c];
-        dn += dc[c] * n[c];
-        o->ft[c] = 0.0;
-    }
-    for (int c = 0; c < D; c++)
-        dt_rate[c] = dc[c] - dn * n[c];
-    const double cap = pp->mu * fabs(load);
-    if (TL == DEMILL_TANGENTIAL_COULOMB) {
-        double vt2 = 0.0;
-        for (int c = 0; c < D; c++)
-            vt2 += vt[c] * vt[c];
-        if (DL != DEMILL_DAMPING_RESTITUTION)
-            root_ms = sqrt(mstar * stiff);
-        const double vtm = sqrt(vt2), fr = pp->coul_reg * root_ms * vtm;
-        const int slip = fr > cap;
-        const double fm = slip ? cap : fr, scale = vt2 > 0.0 ? fm / vtm : 0.0;
-        for (int c = 0; c < D; c++)
-            o->ft[c] = -scale * vt[c];
-        const double lost = fm * vtm * dt_hist;
-        o->diss_friction = slip ? lost : 0.0;
-        o->diss_tangential = slip ? 0.0 : lost;
-    }
-    if (TL == DEMILL_TANGENTIAL_SPRING || TL == DEMILL_TANGENTIAL_MINDLIN) {
-        double kt;
-        if (TL == DEMILL_TANGENTIAL_SPRING) {
-            kt = pp->kt;
-        } else {
-            if (NL == DEMILL_NORMAL_LINEAR)
-                sq = sqrt(rstar * delta);
-            kt = pp->g8 * sq;
-        }
-        double ct = 0.0;
-        if (DL == DEMILL_DAMPING_VISCOUS)
-            ct = pp->ct_factor * pp->cn;
-        if (DL == DEMILL_DAMPING_RESTITUTION)
-            ct = pp->ct_factor * pp->dcoef * sqrt(mstar * kt);
-        /* spring displacement: accumulate the step's relative displacement,
-         * rotated into the tangent plane by removing its normal part (as
-         * LIGGGHTS does; in 2D it is a scalar along t = (-n_y, n_x), which
-         * turns with the contact by construction). The spring and dashpot
-         * force together is capped at μ|F_n|; on slip the spring is reset to
-         * carry the capped force. Dissipation is the work the contact absorbs
-         * (the force times the velocity at the sample, over the step: the
-         * impulse window in which the integrator applies it) less the change
-         * of spring energy, so that the spring itself books no loss. */
-        const int NS = D == 3 ? 3 : 1;
-        double xi[3], ds[3], ftr[3], vtl[3], e_old = 0.0;
-        if (D == 3) {
-            for (int c = 0; c < 3; c++) {
-                ds[c] = dt_rate[c] * dt_hist;
-                vtl[c] = vt[c];
-            }
-        } else {
-            const double tx = -n[1], ty = n[0];
-            ds[0] = (dt_rate[0] * tx + dt_rate[1] * ty) * dt_hist;
-            vtl[0] = vt[0] * tx + vt[1] * ty;
-        }
-        double xn = 0.0;
-        for (int c = 0; c < NS; c++) {
-            e_old += hin[c] * hin[c];
-            xi[c] = hin[c] + ds[c];
-            if (D == 3)
-                xn += xi[c] * n[c];
-        }
-        double f2 = 0.0;
-        for (int c = 0; c < NS; c++) {
-            if (D == 3)
-                xi[c] -= xn * n[c];
-            ftr[c] = -kt * xi[c] - ct * vtl[c];
-            f2 += ftr[c] * ftr[c];
-        }
-        const int slip = f2 > cap * cap;
-        const double scale = slip ? cap / sqrt(f2) : 1.0, ikt = 1.0 / kt;
-        double work = 0.0, e_new = 0.0;
-        for (int c = 0; c < NS; c++) {
-            ftr[c] *= scale;
-            xi[c] = slip ? -ftr[c] * ikt : xi[c];
-            if (CL == DEMILL_COHESION_CAPILLARY) /* across a gap the spring lets go */
-                xi[c] = solid ? xi[c] : 0.0;
-            work -= ftr[c] * vtl[c] * dt_hist;
-            e_new += xi[c] * xi[c];
-            hout[c] = advance ? xi[c] : hin[c];
-        }
-        /* spring energies before and after the step; Mindlin's previous one
-         * was stored, with the previous k_t */
-        e_new *= 0.5 * kt;
-        e_old = TL == DEMILL_TANGENTIAL_MINDLIN ? hin[NS] : 0.5 * kt * e_old;
-        if (TL == DEMILL_TANGENTIAL_MINDLIN)
-            hout[NS] = advance ? e_new : hin[NS];
-        const double lost = work - (e_new - e_old);
-        o->diss_friction = slip ? lost : 0.0;
-        o->diss_tangential = slip ? 0.0 : lost;
-        if (D == 3) {
-            for (int c = 0; c < 3; c++)
-                o->ft[c] = ftr[c];
-        } else {
-            o->ft[0] = -n[1] * ftr[0];
-            o->ft[1] = n[0] * ftr[0];
-        }
-    }
-
-    /* rolling resistance (§5): constant torque, regularised near ω_rel = 0 */
-    for (int c = 0; c < W; c++)
-        o->mr[c] = 0.0;
-    if (RL == DEMILL_ROLLING_CONSTANT_TORQUE) {
-        double w2 = 0.0;
-        for (int c = 0; c < W; c++)
-            w2 += wrel[c] * wrel[c];
-        const double wm = sqrt(w2);
-        const double mr = pp->roll_reg * rstar * rstar * sqrt(mstar * stiff) * wm;
-        const double mcap = pp->mu_r * rstar * fabs(load);
-        const double mm = mr > mcap ? mcap : mr, scale = w2 > 0.0 ? mm / wm : 0.0;
-        for (int c = 0; c < W; c++)
-            o->mr[c] = -scale * wrel[c];
-        o->diss_rolling = mm * wm * dt_hist;
-    }
-    if (RL == DEMILL_ROLLING_SPRING) {
-        /* the elastic-plastic spring-dashpot (type C of Ai et al. 2011): the
-         * spring's torque on a, M_k, accumulates -k_r Δθ_r, Δθ_r the step's
-         * relative rotation without its twist about n; the torque kept from
-         * the last step is turned into the current tangent plane by removing
-         * its normal part (as the tangential spring is). |M_k| is capped at
-         * μ_r R* |F_n|; below the cap the dashpot adds -c_r ω_r, at the cap
-         * (full mobilisation) it is off (Ai et al.'s f = 0). The spring's
-         * loss, its work less the change of its energy |M_k|²/(2 k_r), is
-         * rolling friction (it is the slip at the cap); the dashpot's is the
-         * rolling viscous term. */
-        const int HR = dm_law_off_rolling(NL, DL, TL, D);
-        const double kr = pp->kr > 0.0 ? pp->kr : 2.25 * stiff * pp->mu_r * pp->mu_r * rstar * rstar;
-        const double cr = pp->eta_r * 2.0 * sqrt(ir * kr), half_ikr = kr > 0.0 ? 0.5 / kr : 0.0;
-        double twist = 0.0, twist_p = 0.0, mn = 0.0, mk[3], wt[3], m2 = 0.0;
-        if (D == 3)
-            for (int c = 0; c < 3; c++) {
-                twist += wd[c] * n[c];
-                twist_p += wrel[c] * n[c];
-                mn += hin[HR + c] * n[c];
-            }
-        for (int c = 0; c < W; c++) {
-            const double nc = D == 3 ? n[c] : 0.0;
-            wt[c] = wrel[c] - twist_p * nc;
-            mk[c] = hin[HR + c] - mn * nc - kr * (wd[c] - twist * nc) * dt_hist;
-            m2 += mk[c] * mk[c];
-        }
-        const double mcap = pp->mu_r * rstar * fabs(fn);
-        const int full = m2 > mcap * mcap;
-        const double scale = full ? mcap / sqrt(m2) : 1.0, c_on = full ? 0.0 : cr;
-        double work_k = 0.0, work_d = 0.0, e_new = 0.0;
-        for (int c = 0; c < W; c++) {
-            mk[c] *= scale;
-            const double md = -c_on * wt[c];
-            o->mr[c] = mk[c] + md;
-            work_k -= mk[c] * wt[c] * dt_hist;
-            work_d -= md * wt[c] * dt_hist;
-            e_new += mk[c] * mk[c];
-            hout[HR + c] = advance ? mk[c] : hin[HR + c];
-        }
-        e_new *= half_ikr;
-        hout[HR + W] = advance ? e_new : hin[HR + W];
-        o->diss_rolling = advance ? work_k - (e_new - hin[HR + W]) : 0.0;
-        o->diss_rolling_viscous = work_d;
-    }
-}
+/* The same law in single precision (law_body.h): float arguments, history
+ * and output, for the fast laws (linear or Hertz, no or constant-torque
+ * rolling resistance, no cohesion) that the single-precision kernels run. */
+#define DM_REAL float
+#define DM_LAW_NAME dm_lawf
+#define DM_LAW_OUT dm_law_outf
+#define DM_SQRT sqrtf
+#define DM_FABS fabsf
+#include "physics/contact/law_body.h"
+#undef DM_REAL
+#undef DM_LAW_NAME
+#undef DM_LAW_OUT
+#undef DM_SQRT
+#undef DM_FABS
 
 /* Elastic energy stored in a contact of laws l with history hist: normal,
  * tangential and rolling springs. */

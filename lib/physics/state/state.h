@@ -631,6 +631,7 @@ struct demill_world {
     double cohesion_reach;   /* how far past touching a cohesive pair may still
                                 interact: the neighbour search reaches that far more */
     bool generic_kernels;    /* tests only: every combination runs the generic kernel */
+    bool single;             /* DEMILL_WORLD_SINGLE_PRECISION: the fast kernels in float */
     bool local_damping;      /* some particle's material has local damping */
 
     /* particles */

@@ -15,12 +15,14 @@
     static void pp_##D(dm_kernel_args *a)                                                         \
     {                                                                                             \
         const dm_laws l = dm_kernel_laws(a->b->kernel);                                           \
-        dm_pp_chunk(D, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, laws_##D, a);    \
+        dm_pp_chunk(D, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, laws_##D, NULL,  \
+                    a);                                                                           \
     }                                                                                             \
     static void pw_##D(dm_kernel_args *a)                                                         \
     {                                                                                             \
         const dm_laws l = dm_kernel_laws(a->b->kernel);                                           \
-        dm_pw_chunk(D, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, laws_##D, a);    \
+        dm_pw_chunk(D, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, laws_##D, NULL,  \
+                    a);                                                                           \
     }
 
 GENERIC_KERNELS(2)
