@@ -7,51 +7,61 @@
 #include "physics/contact/kernels.h"
 
 /* Particle-particle pairs: the separation again (the narrow phase kept only
- * whether they touch), then the kinematics. */
-DM_INLINE void pp_kins(const int D, const int SPIN, const int ROLL, const dm_kernel_args *a,
-                       dm_chunk *restrict ch, uint32_t lanes)
+ * whether they touch), then the kinematics of the chunk's pairs ks, into
+ * the chunk ch or (F: the single-precision kernels') rounded into the float
+ * chunk cf. */
+DM_INLINE void pp_kins(const int D, const int SPIN, const int ROLL, const int F,
+                       const dm_kernel_args *a, const uint32_t *restrict ks,
+                       dm_chunk *restrict ch, dm_chunkf *restrict cf, uint32_t lanes)
 {
     const dm_particles *P = &a->w->p;
     const double *vp = a->vp, *wp = a->wp;
     const uint32_t *restrict bi = a->b->i, *restrict bj = a->b->j;
     const uint32_t n = lanes / DM_LANES * DM_LANES; /* see dm_kin_fn */
     for (uint32_t s = 0; s < n; s++) {
-        const uint32_t k = ch->k[s], i = bi[k], j = bj[k];
+        const uint32_t k = ks[s], i = bi[k], j = bj[k];
         double d[3], r2;
         dm_pp_touch(D, P, i, j, d, &r2);
         dm_kin q;
         dm_pp_kin(D, SPIN, ROLL, P, vp, wp, i, j, d, r2, &q);
-        dm_kin_put(D, ROLL, ch, s, &q);
+        if (F)
+            dm_kin_putf(D, ROLL, cf, s, &q);
+        else
+            dm_kin_put(D, ROLL, ch, s, &q);
     }
 }
 
 /* Particle-wall pairs, from the contact geometry of the bucket's candidates
- * (w->wg, from a->geom_offset on). */
-DM_INLINE void pw_kins(const int D, const int SPIN, const int ROLL, const dm_kernel_args *a,
-                       dm_chunk *restrict ch, uint32_t lanes)
+ * (w->wg, from a->geom_offset on), into ch or (F) cf as pp_kins(). */
+DM_INLINE void pw_kins(const int D, const int SPIN, const int ROLL, const int F,
+                       const dm_kernel_args *a, const uint32_t *restrict ks,
+                       dm_chunk *restrict ch, dm_chunkf *restrict cf, uint32_t lanes)
 {
     const demill_world *w = a->w;
     const double *vp = a->vp, *wp = a->wp;
     const uint32_t *restrict bi = a->b->i, *restrict bj = a->b->j;
     const uint32_t g0 = a->geom_offset, n = lanes / DM_LANES * DM_LANES; /* see dm_kin_fn */
     for (uint32_t s = 0; s < n; s++) {
-        const uint32_t k = ch->k[s];
+        const uint32_t k = ks[s];
         dm_kin q;
         dm_pw_kin(D, SPIN, ROLL, &w->p, vp, wp, &w->wg, g0 + k, bi[k], &w->walls[bj[k]], &q);
-        dm_kin_put(D, ROLL, ch, s, &q);
+        if (F)
+            dm_kin_putf(D, ROLL, cf, s, &q);
+        else
+            dm_kin_put(D, ROLL, ch, s, &q);
     }
 }
 
 #define KINS(D, SPIN, ROLL)                                                                       \
-    DM_VECTOR_CLONES static void pp_kins_##D##_##SPIN##_##ROLL(const dm_kernel_args *a,            \
-                                                               dm_chunk *ch, uint32_t lanes)       \
+    DM_VECTOR_CLONES static void pp_kins_##D##_##SPIN##_##ROLL(const dm_kernel_args *a,           \
+                                                               dm_chunk *ch, uint32_t lanes)      \
     {                                                                                             \
-        pp_kins(D, SPIN, ROLL, a, ch, lanes);                                                     \
+        pp_kins(D, SPIN, ROLL, 0, a, ch->k, ch, NULL, lanes);                                     \
     }                                                                                             \
-    DM_VECTOR_CLONES static void pw_kins_##D##_##SPIN##_##ROLL(const dm_kernel_args *a,            \
-                                                               dm_chunk *ch, uint32_t lanes)       \
+    DM_VECTOR_CLONES static void pw_kins_##D##_##SPIN##_##ROLL(const dm_kernel_args *a,           \
+                                                               dm_chunk *ch, uint32_t lanes)      \
     {                                                                                             \
-        pw_kins(D, SPIN, ROLL, a, ch, lanes);                                                     \
+        pw_kins(D, SPIN, ROLL, 0, a, ch->k, ch, NULL, lanes);                                     \
     }
 #define KINS_D(D) KINS(D, 0, 0) KINS(D, 0, 1) KINS(D, 0, 2) KINS(D, 1, 0) KINS(D, 1, 1) KINS(D, 1, 2)
 KINS_D(2)
@@ -65,48 +75,16 @@ const dm_kin_fn dm_kins[2][2][2][DM_ROLLING_LAWS] = {{ROW(2, pp), ROW(2, pw)},
 
 /* ---- the single-precision kernels' (dm_kinsf): the same kinematics, in
  * double, rounded into the float chunk cf (dm_kin_putf) ---- */
-DM_INLINE void pp_kinsf(const int D, const int SPIN, const int ROLL, const dm_kernel_args *a,
-                        const dm_chunk *restrict ch, dm_chunkf *restrict cf, uint32_t lanes)
-{
-    const dm_particles *P = &a->w->p;
-    const double *vp = a->vp, *wp = a->wp;
-    const uint32_t *restrict bi = a->b->i, *restrict bj = a->b->j;
-    const uint32_t n = lanes / DM_LANES * DM_LANES; /* see dm_kin_fn */
-    for (uint32_t s = 0; s < n; s++) {
-        const uint32_t k = ch->k[s], i = bi[k], j = bj[k];
-        double d[3], r2;
-        dm_pp_touch(D, P, i, j, d, &r2);
-        dm_kin q;
-        dm_pp_kin(D, SPIN, ROLL, P, vp, wp, i, j, d, r2, &q);
-        dm_kin_putf(D, ROLL, cf, s, &q);
-    }
-}
-
-DM_INLINE void pw_kinsf(const int D, const int SPIN, const int ROLL, const dm_kernel_args *a,
-                        const dm_chunk *restrict ch, dm_chunkf *restrict cf, uint32_t lanes)
-{
-    const demill_world *w = a->w;
-    const double *vp = a->vp, *wp = a->wp;
-    const uint32_t *restrict bi = a->b->i, *restrict bj = a->b->j;
-    const uint32_t g0 = a->geom_offset, n = lanes / DM_LANES * DM_LANES; /* see dm_kin_fn */
-    for (uint32_t s = 0; s < n; s++) {
-        const uint32_t k = ch->k[s];
-        dm_kin q;
-        dm_pw_kin(D, SPIN, ROLL, &w->p, vp, wp, &w->wg, g0 + k, bi[k], &w->walls[bj[k]], &q);
-        dm_kin_putf(D, ROLL, cf, s, &q);
-    }
-}
-
 #define KINSF(D, SPIN, ROLL)                                                                      \
     DM_VECTOR_CLONES static void pp_kinsf_##D##_##SPIN##_##ROLL(                                  \
         const dm_kernel_args *a, const dm_chunk *ch, dm_chunkf *cf, uint32_t lanes)               \
     {                                                                                             \
-        pp_kinsf(D, SPIN, ROLL, a, ch, cf, lanes);                                                \
+        pp_kins(D, SPIN, ROLL, 1, a, ch->k, NULL, cf, lanes);                                     \
     }                                                                                             \
     DM_VECTOR_CLONES static void pw_kinsf_##D##_##SPIN##_##ROLL(                                  \
         const dm_kernel_args *a, const dm_chunk *ch, dm_chunkf *cf, uint32_t lanes)               \
     {                                                                                             \
-        pw_kinsf(D, SPIN, ROLL, a, ch, cf, lanes);                                                \
+        pw_kins(D, SPIN, ROLL, 1, a, ch->k, NULL, cf, lanes);                                     \
     }
 #define KINSF_D(D) KINSF(D, 0, 0) KINSF(D, 0, 1) KINSF(D, 1, 0) KINSF(D, 1, 1)
 KINSF_D(2)
