@@ -118,16 +118,7 @@ static demill_world *mill(int single, uint64_t settle, demill_id *drum)
     dm_test_mill_materials(w, &balls, &liner);
     DM_OK(w, demill_pair_set(w, balls, balls, DEMILL_PAIR_ROLLING, DEMILL_ROLLING_CONSTANT_TORQUE));
     DM_OK(w, demill_pair_set(w, balls, balls, DEMILL_PAIR_ROLLING_FRICTION, 0.05));
-    DM_OK(w, demill_drum_create(w, liner, drum));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_DIAMETER, 0.16));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LENGTH, 0.04));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LIFTERS, 8));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LIFTER_HEIGHT, 0.008));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LIFTER_WIDTH, 0.008));
-    const double sizes[4] = {0.005, 0.5, 0.006, 0.5};
-    DM_OK(w, demill_drum_fill(w, *drum, balls, DEMILL_SIZES_CLASSES, sizes, 4,
-                              DEMILL_FILL_FRACTION, 0.3, 7, NULL, 0, NULL));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_SPEED_FRACTION, 0.75));
+    dm_test_mill(w, balls, liner, 0.16, 0.04, 0.008, drum);
     DM_OK(w, demill_world_step(w, settle));
     return w;
 }

@@ -72,16 +72,7 @@ static demill_world *mill(int dim, uint64_t settle, demill_id *drum)
     demill_id balls, liner;
     ck_assert_int_eq(demill_world_create(dim, &w), DEMILL_OK);
     dm_test_mill_materials(w, &balls, &liner);
-    DM_OK(w, demill_drum_create(w, liner, drum));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_DIAMETER, dim == 3 ? 0.2 : 0.7));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LENGTH, 0.06));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LIFTERS, 8));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LIFTER_HEIGHT, 0.01));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LIFTER_WIDTH, 0.01));
-    const double sizes[4] = {0.005, 0.5, 0.006, 0.5};
-    DM_OK(w, demill_drum_fill(w, *drum, balls, DEMILL_SIZES_CLASSES, sizes, 4,
-                              DEMILL_FILL_FRACTION, 0.3, 7, NULL, 0, NULL));
-    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_SPEED_FRACTION, 0.75));
+    dm_test_mill(w, balls, liner, dim == 3 ? 0.2 : 0.7, 0.06, 0.01, drum);
     DM_OK(w, demill_world_step(w, settle));
     return w;
 }

@@ -31,6 +31,21 @@ void dm_test_mill_materials(demill_world *w, demill_id *balls, demill_id *liner)
     }
 }
 
+void dm_test_mill(demill_world *w, demill_id balls, demill_id liner, double diameter,
+                  double length, double lifter, demill_id *drum)
+{
+    DM_OK(w, demill_drum_create(w, liner, drum));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_DIAMETER, diameter));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LENGTH, length));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LIFTERS, 8));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LIFTER_HEIGHT, lifter));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_LIFTER_WIDTH, lifter));
+    const double sizes[4] = {0.005, 0.5, 0.006, 0.5};
+    DM_OK(w, demill_drum_fill(w, *drum, balls, DEMILL_SIZES_CLASSES, sizes, 4,
+                              DEMILL_FILL_FRACTION, 0.3, 7, NULL, 0, NULL));
+    DM_OK(w, demill_drum_set(w, *drum, DEMILL_DRUM_SPEED_FRACTION, 0.75));
+}
+
 int dm_test_run(Suite *s)
 {
     SRunner *sr = srunner_create(s);

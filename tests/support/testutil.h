@@ -72,6 +72,12 @@ demill_world *dm_test_world(int dim, int normal, int damping, demill_id *materia
  * ball-ball and ball-liner (the liner-liner pair has no model). */
 void dm_test_mill_materials(demill_world *w, demill_id *balls, demill_id *liner);
 
+/* A drum of liner of the given diameter and length with 8 lifters of
+ * height and width `lifter`, filled to 30 % with 5 and 6 mm balls (half
+ * the volume each, seed 7), set turning at 75 % of critical. */
+void dm_test_mill(demill_world *w, demill_id balls, demill_id liner, double diameter,
+                  double length, double lifter, demill_id *drum);
+
 /* Runs a Check suite and returns the process exit status. */
 int dm_test_run(Suite *s);
 
