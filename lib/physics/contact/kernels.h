@@ -67,18 +67,6 @@ DM_INLINE void dm_spin_cross_n(const int D, const double *om, const double *n, d
     }
 }
 
-/* n × f: 3 components in 3D, the z component in 2D. */
-DM_INLINE void dm_n_cross(const int D, const double *n, const double *f, double *out)
-{
-    if (D == 3) {
-        out[0] = n[1] * f[2] - n[2] * f[1];
-        out[1] = n[2] * f[0] - n[0] * f[2];
-        out[2] = n[0] * f[1] - n[1] * f[0];
-    } else {
-        out[0] = n[0] * f[1] - n[1] * f[0];
-    }
-}
-
 /* Kinematics of one contact: normal, overlap, lever arms and the relative
  * motion at the contact point. */
 typedef struct dm_kin {
@@ -338,13 +326,13 @@ DM_INLINE void dm_chunk_law(const int D, const int NL, const int DL, const int T
     dm_law_out o;
     dm_law(D, NL, DL, TL, RL, CL, pp, q->n, q->delta, q->vc, q->dc, q->wrel, q->wd, q->ir,
            q->rstar, q->mstar, dt_hist, reach, (int)ch->first[s], hin, hout, &o);
-    double nf[3];
-    dm_n_cross(D, q->n, o.ft, nf);
+    double f[3], ta[3], tb[3];
+    dm_law_loads(D, q->n, q->ai, q->aj, &o, f, ta, tb);
     for (int c = 0; c < D; c++)
-        ch->f[c][s] = o.fn * q->n[c] + o.ft[c];
+        ch->f[c][s] = f[c];
     for (int c = 0; c < W; c++) {
-        ch->ta[c][s] = o.mr[c] - q->ai * nf[c];
-        ch->tb[c][s] = -o.mr[c] - q->aj * nf[c];
+        ch->ta[c][s] = ta[c];
+        ch->tb[c][s] = tb[c];
     }
     ch->diss[0][s] = o.diss_normal;
     ch->diss[1][s] = o.diss_tangential;
@@ -563,20 +551,13 @@ DM_INLINE void dm_chunk_lawsf(const int D, const int NL, const int DL, const int
         dm_lawf(D, NL, DL, TL, RL, DEMILL_COHESION_NONE, &tab[ch->pp[s]], nq, cf->delta[s], vc,
                 dc, wrel, NULL, 0.0f, cf->rstar[s], cf->mstar[s], dt_hist, reach,
                 (int)ch->first[s], hin, hout, &o);
-        /* n × f_t: the torques' lever-arm part (dm_n_cross) */
-        float nf[3];
-        if (D == 3) {
-            nf[0] = nq[1] * o.ft[2] - nq[2] * o.ft[1];
-            nf[1] = nq[2] * o.ft[0] - nq[0] * o.ft[2];
-            nf[2] = nq[0] * o.ft[1] - nq[1] * o.ft[0];
-        } else {
-            nf[0] = nq[0] * o.ft[1] - nq[1] * o.ft[0];
-        }
+        float f[3], ta[3], tb[3];
+        dm_law_loadsf(D, nq, cf->ai[s], cf->aj[s], &o, f, ta, tb);
         for (int c = 0; c < D; c++)
-            cf->f[c][s] = o.fn * nq[c] + o.ft[c];
+            cf->f[c][s] = f[c];
         for (int c = 0; c < W; c++) {
-            cf->ta[c][s] = o.mr[c] - cf->ai[s] * nf[c];
-            cf->tb[c][s] = -o.mr[c] - cf->aj[s] * nf[c];
+            cf->ta[c][s] = ta[c];
+            cf->tb[c][s] = tb[c];
         }
         cf->diss[0][s] = o.diss_normal;
         cf->diss[1][s] = o.diss_tangential;

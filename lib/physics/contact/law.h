@@ -186,12 +186,14 @@ DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar
 #define DM_REAL double
 #define DM_LAW_NAME dm_law
 #define DM_LAW_OUT dm_law_out
+#define DM_LAW_LOADS dm_law_loads
 #define DM_SQRT sqrt
 #define DM_FABS fabs
 #include "physics/contact/law_body.h"
 #undef DM_REAL
 #undef DM_LAW_NAME
 #undef DM_LAW_OUT
+#undef DM_LAW_LOADS
 #undef DM_SQRT
 #undef DM_FABS
 
@@ -201,12 +203,14 @@ DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar
 #define DM_REAL float
 #define DM_LAW_NAME dm_lawf
 #define DM_LAW_OUT dm_law_outf
+#define DM_LAW_LOADS dm_law_loadsf
 #define DM_SQRT sqrtf
 #define DM_FABS fabsf
 #include "physics/contact/law_body.h"
 #undef DM_REAL
 #undef DM_LAW_NAME
 #undef DM_LAW_OUT
+#undef DM_LAW_LOADS
 #undef DM_SQRT
 #undef DM_FABS
 

@@ -3,7 +3,7 @@
  * with DM_REAL float, as dm_lawf(), the law of the single-precision kernels
  * (DEMILL_WORLD_SINGLE_PRECISION; docs/design.md, Contact kernels), so that
  * the physics is written once. The includer defines DM_REAL, DM_LAW_NAME,
- * DM_LAW_OUT, DM_SQRT and DM_FABS; DM_R(x) makes a constant or a pair
+ * DM_LAW_OUT, DM_LAW_LOADS, DM_SQRT and DM_FABS; DM_R(x) makes a constant or a pair
  * parameter a DM_REAL, so that the float law computes in float throughout
  * (in double it changes nothing). The laws beyond the fast kernels'
  * (elasto-plastic, cohesion) take their arguments in double, as they are
@@ -314,3 +314,26 @@ DM_INLINE void DM_LAW_NAME(const int D, const int NL, const int DL, const int TL
 }
 
 #undef DM_R
+
+/* A law's output o as the pair's loads: the force on b, fn n + f_t, and the
+ * torques on a and b (W components), the rolling torque and the lever arms
+ * ai, aj (of a and b) times n × f_t (2D: its z component). */
+DM_INLINE void DM_LAW_LOADS(const int D, const DM_REAL *n, DM_REAL ai, DM_REAL aj,
+                            const DM_LAW_OUT *o, DM_REAL *f, DM_REAL *ta, DM_REAL *tb)
+{
+    const int W = D == 3 ? 3 : 1;
+    DM_REAL nf[3];
+    if (D == 3) {
+        nf[0] = n[1] * o->ft[2] - n[2] * o->ft[1];
+        nf[1] = n[2] * o->ft[0] - n[0] * o->ft[2];
+        nf[2] = n[0] * o->ft[1] - n[1] * o->ft[0];
+    } else {
+        nf[0] = n[0] * o->ft[1] - n[1] * o->ft[0];
+    }
+    for (int c = 0; c < D; c++)
+        f[c] = o->fn * n[c] + o->ft[c];
+    for (int c = 0; c < W; c++) {
+        ta[c] = o->mr[c] - ai * nf[c];
+        tb[c] = -o->mr[c] - aj * nf[c];
+    }
+}
