@@ -96,23 +96,32 @@ void dm_state_free(demill_world *s)
     }
 }
 
-/* Makes dst's state a copy of src's. New buffers are allocated first, so
- * that if memory runs out dst is left as it was. */
+/* Makes dst's state a copy of src's. A buffer of dst of the size of src's
+ * is reused (the watchdog's copy, taken again and again of a world whose
+ * arrays keep their sizes, then costs no allocation and no second copy at
+ * once), but for the walls', which receive the copies of the meshes; the
+ * others are allocated and filled first, and the reused ones only when
+ * everything is there, so that if memory runs out dst is left as it was. */
 demill_status dm_state_copy(demill_world *dst, const demill_world *src)
 {
     demill_world n = *src, old = *dst;
-    buffer nb[MAX_BUFFERS];
+    buffer nb[MAX_BUFFERS], ob[MAX_BUFFERS];
+    const void *from[MAX_BUFFERS];
     const size_t count = buffers_of(&n, nb);
+    buffers_of(&old, ob); /* the same buffers, in the same order */
     size_t k = 0;
     for (; k < count; k++) {
-        const void *from = *nb[k].field;
+        from[k] = *nb[k].field;
         *nb[k].field = NULL;
-        if (!from)
+        if (!from[k])
             continue;
-        void *to = malloc(nb[k].bytes ? nb[k].bytes : 1);
+        const bool reuse = *ob[k].field && ob[k].bytes == nb[k].bytes &&
+                           nb[k].field != (void **)&n.walls;
+        void *to = reuse ? *ob[k].field : malloc(nb[k].bytes ? nb[k].bytes : 1);
         if (!to)
             break;
-        memcpy(to, from, nb[k].bytes);
+        if (!reuse)
+            memcpy(to, from[k], nb[k].bytes);
         *nb[k].field = to;
     }
     uint32_t meshes = 0; /* the walls' meshes and loads, each its own block */
@@ -130,9 +139,15 @@ demill_status dm_state_copy(demill_world *dst, const demill_world *src)
             dm_loads_free(n.walls[q].loads);
         }
         for (size_t q = 0; q < k; q++)
-            free(*nb[q].field);
+            if (*nb[q].field != *ob[q].field)
+                free(*nb[q].field);
         return DEMILL_ERR_OUT_OF_MEMORY;
     }
+    for (k = 0; k < count; k++)
+        if (from[k] && *nb[k].field == *ob[k].field) { /* reused: no longer old's */
+            memcpy(*nb[k].field, from[k], nb[k].bytes);
+            *ob[k].field = NULL;
+        }
     dm_state_free(&old);
     n.base.magic = dst->base.magic;
     n.tag = dst->tag; /* the world's identity: its ids stay its own */
