@@ -83,13 +83,6 @@ static double body_y(demill_world *w, demill_id body, int field)
     return v[1];
 }
 
-static double energy(demill_world *w, int term)
-{
-    double e;
-    DM_OK(w, demill_world_energy(w, term, &e));
-    return e;
-}
-
 START_TEST(free_oscillation)
 {
     const double dt = 5e-6, x0 = 1e-3;
@@ -98,7 +91,7 @@ START_TEST(free_oscillation)
     demill_id mat, body;
     demill_world *w = box_world(dt, -x0, &mat, &body); /* released 1 mm from rest */
     const double e0 = 0.5 * BOX_K * x0 * x0;
-    DM_ASSERT_REL(energy(w, DEMILL_ENERGY_TOTAL), e0, 1e-15);
+    DM_ASSERT_REL(dm_test_energy(w, DEMILL_ENERGY_TOTAL), e0, 1e-15);
     /* sampled every 10 steps (350 samples a period): at a crossing the
      * sine's curvature vanishes, so linear interpolation errs in the third
      * order, about 1e-9 of a period */
@@ -116,7 +109,7 @@ START_TEST(free_oscillation)
             crossings++;
         }
         prev = y;
-        worst = fmax(worst, fabs(energy(w, DEMILL_ENERGY_TOTAL) - e0));
+        worst = fmax(worst, fabs(dm_test_energy(w, DEMILL_ENERGY_TOTAL) - e0));
     }
     ck_assert_int_eq(crossings, 100);
     DM_ASSERT_REL((last - first) / (crossings - 1), period, 1e-4);
@@ -149,14 +142,14 @@ START_TEST(driven_steady_amplitude)
         hi = fmax(hi, y);
     }
     DM_ASSERT_REL(0.5 * (hi - lo), amp, 1e-4);
-    const double work = energy(w, DEMILL_ENERGY_BODY_WORK);
-    const double change = energy(w, DEMILL_ENERGY_BODY_KINETIC) +
-                          energy(w, DEMILL_ENERGY_BODY_ELASTIC) +
-                          energy(w, DEMILL_ENERGY_BODY_DISSIPATED);
+    const double work = dm_test_energy(w, DEMILL_ENERGY_BODY_WORK);
+    const double change = dm_test_energy(w, DEMILL_ENERGY_BODY_KINETIC) +
+                          dm_test_energy(w, DEMILL_ENERGY_BODY_ELASTIC) +
+                          dm_test_energy(w, DEMILL_ENERGY_BODY_DISSIPATED);
     ck_assert(work > 0);
     ck_assert_msg(fabs(work - change) <= 1e-6 * work,
                   "work %.9g, energy gained and dissipated %.9g", work, change);
-    ck_assert(fabs(energy(w, DEMILL_ENERGY_TOTAL)) <= 1e-6 * work);
+    ck_assert(fabs(dm_test_energy(w, DEMILL_ENERGY_TOTAL)) <= 1e-6 * work);
     demill_world_destroy(w);
 }
 END_TEST
@@ -185,18 +178,18 @@ START_TEST(balls_in_box_energy_balance)
                 rad[n] = r;
             }
     DM_OK(w, demill_particles_add(w, mat, 300, x, rad, NULL, DEMILL_ADD_NO_OVERLAP, NULL));
-    const double total0 = energy(w, DEMILL_ENERGY_TOTAL);
+    const double total0 = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
     double through = 0, worst = 0;
     for (int k = 0; k < 60; k++) { /* 0.3 s, 6 periods of the drive */
         DM_OK(w, demill_world_step(w, 500));
-        const double total = energy(w, DEMILL_ENERGY_TOTAL);
+        const double total = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
         worst = fmax(worst, fabs(total - total0));
-        through = fmax(through, fabs(energy(w, DEMILL_ENERGY_BODY_WORK)) +
-                                    energy(w, DEMILL_ENERGY_DISSIPATED));
+        through = fmax(through, fabs(dm_test_energy(w, DEMILL_ENERGY_BODY_WORK)) +
+                                    dm_test_energy(w, DEMILL_ENERGY_DISSIPATED));
     }
     double fp[3];
     DM_OK(w, demill_body_get(w, body, DEMILL_BODY_FORCE_PARTICLES, fp));
-    ck_assert_msg(energy(w, DEMILL_ENERGY_DISSIPATED) > 0.05 * through,
+    ck_assert_msg(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED) > 0.05 * through,
                   "the balls barely touched the box");
     ck_assert_msg(worst <= 1e-3 * through, "the balance moved by %g J, %g of the %g J through it",
                   worst, worst / through, through);

@@ -40,13 +40,6 @@ static const int32_t lost[] = {DEMILL_ENERGY_DISSIPATED_NORMAL,
                                DEMILL_ENERGY_DISSIPATED_LOCAL};
 #define LOST ((int)(sizeof lost / sizeof *lost))
 
-static double energy(demill_world *w, int32_t term)
-{
-    double e;
-    DM_OK(w, demill_world_energy(w, term, &e));
-    return e;
-}
-
 static void laws(demill_world *w, demill_id a, demill_id b, int normal, int damping,
                  int tangential, int rolling, int cohesion)
 {
@@ -122,21 +115,21 @@ static void account(demill_world *w, const char *what, int samples, uint64_t ste
     DM_OK(w, demill_world_suggest_time_step(w, 1.0, 100, &dt, NULL, NULL));
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_ENERGY_TRACKING, 1));
-    const double e0 = energy(w, DEMILL_ENERGY_TOTAL);
-    const double k0 = energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL) +
-                      energy(w, DEMILL_ENERGY_KINETIC_ROTATIONAL);
+    const double e0 = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
+    const double k0 = dm_test_energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL) +
+                      dm_test_energy(w, DEMILL_ENERGY_KINETIC_ROTATIONAL);
     double worst = 0, low[LOST];
     for (int t = 0; t < LOST; t++)
         low[t] = 0.0;
     for (int s = 0; s < samples; s++) {
         DM_OK(w, demill_world_step(w, steps));
-        worst = fmax(worst, fabs(energy(w, DEMILL_ENERGY_TOTAL) - e0));
+        worst = fmax(worst, fabs(dm_test_energy(w, DEMILL_ENERGY_TOTAL) - e0));
         for (int t = 0; t < LOST; t++)
-            low[t] = fmin(low[t], energy(w, lost[t]));
+            low[t] = fmin(low[t], dm_test_energy(w, lost[t]));
     }
-    const double through = energy(w, DEMILL_ENERGY_DISSIPATED) +
-                           fabs(energy(w, DEMILL_ENERGY_COHESION)) + k0 +
-                           fabs(energy(w, DEMILL_ENERGY_WALL_WORK));
+    const double through = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED) +
+                           fabs(dm_test_energy(w, DEMILL_ENERGY_COHESION)) + k0 +
+                           fabs(dm_test_energy(w, DEMILL_ENERGY_WALL_WORK));
     /* non-negative: a running tally may dip below 0 by the account's own
      * error (the spring-slider books its loss as work less the change of its
      * spring's energy, second order in the step), never by more */
@@ -146,7 +139,7 @@ static void account(demill_world *w, const char *what, int samples, uint64_t ste
     ck_assert_msg(worst <= 1e-3 * through, "%s: the balance strayed by %.3g of %.3g J", what,
                   worst / through, through);
     for (int t = 0; t < LOST; t++) {
-        const double e = energy(w, lost[t]);
+        const double e = dm_test_energy(w, lost[t]);
         if (all)
             ck_assert_msg(e > 0.0, "%s: term %d dissipated nothing", what, (int)lost[t]);
         else if (lost[t] == DEMILL_ENERGY_DISSIPATED_PLASTIC ||
@@ -155,8 +148,8 @@ static void account(demill_world *w, const char *what, int samples, uint64_t ste
             ck_assert_msg(e == 0.0, "%s: term %d is %.3g J with its law off", what,
                           (int)lost[t], e);
     }
-    const double cohesion = energy(w, DEMILL_ENERGY_COHESION);
-    const double rolling = energy(w, DEMILL_ENERGY_ELASTIC_ROLLING);
+    const double cohesion = dm_test_energy(w, DEMILL_ENERGY_COHESION);
+    const double rolling = dm_test_energy(w, DEMILL_ENERGY_ELASTIC_ROLLING);
     ck_assert_msg(all ? cohesion != 0.0 : cohesion == 0.0, "%s: work against cohesion %.3g J",
                   what, cohesion);
     ck_assert_msg(all ? rolling >= 0.0 : rolling == 0.0, "%s: rolling springs hold %.3g J", what,

@@ -337,13 +337,6 @@ END_TEST
 
 #define G 9.81
 
-static double energy(demill_world *w, int term)
-{
-    double e;
-    DM_OK(w, demill_world_energy(w, term, &e));
-    return e;
-}
-
 static double drum_value(demill_world *w, demill_id drum, int key)
 {
     double v;
@@ -396,7 +389,8 @@ START_TEST(a_drum_lifted_at_constant_speed)
     double rel0[3], rel1[3];
     relative(w, drum, ball, rel0);
     const double in0 = drum_value(w, drum, DEMILL_DRUM_ENERGY_IN);
-    const double work0 = energy(w, DEMILL_ENERGY_WALL_WORK), e0 = energy(w, DEMILL_ENERGY_TOTAL);
+    const double work0 = dm_test_energy(w, DEMILL_ENERGY_WALL_WORK);
+    const double e0 = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
     DM_OK(w, demill_world_step(w, 10000));
     relative(w, drum, ball, rel1);
     for (int c = 0; c < 3; c++)
@@ -406,10 +400,11 @@ START_TEST(a_drum_lifted_at_constant_speed)
     DM_ASSERT_REL(drum_value(w, drum, DEMILL_DRUM_CURRENT_VELOCITY_Y), v, 1e-15);
     const double lift = m * G * v * t, in = drum_value(w, drum, DEMILL_DRUM_ENERGY_IN) - in0;
     DM_ASSERT_REL(in, lift, 1e-6);
-    DM_ASSERT_REL(energy(w, DEMILL_ENERGY_WALL_WORK) - work0, in, 1e-9);
+    DM_ASSERT_REL(dm_test_energy(w, DEMILL_ENERGY_WALL_WORK) - work0, in, 1e-9);
     DM_ASSERT_REL(drum_value(w, drum, DEMILL_DRUM_POWER), m * G * v, 1e-6);
-    ck_assert_msg(fabs(energy(w, DEMILL_ENERGY_TOTAL) - e0) <= 1e-6 * lift,
-                  "the balance is off by %g J of %g J", energy(w, DEMILL_ENERGY_TOTAL) - e0, lift);
+    ck_assert_msg(fabs(dm_test_energy(w, DEMILL_ENERGY_TOTAL) - e0) <= 1e-6 * lift,
+                  "the balance is off by %g J of %g J", dm_test_energy(w, DEMILL_ENERGY_TOTAL) - e0,
+                  lift);
     demill_world_destroy(w);
 }
 END_TEST
@@ -431,7 +426,8 @@ START_TEST(a_drum_shaken_up_and_down)
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_VIBRATION_PHASE, 0.5 * M_PI));
     DM_OK(w, demill_drum_set(w, drum, DEMILL_DRUM_VIBRATION_FREQUENCY, f));
     const double in0 = drum_value(w, drum, DEMILL_DRUM_ENERGY_IN);
-    const double work0 = energy(w, DEMILL_ENERGY_WALL_WORK), e0 = energy(w, DEMILL_ENERGY_TOTAL);
+    const double work0 = dm_test_energy(w, DEMILL_ENERGY_WALL_WORK);
+    const double e0 = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
     double peak = 0, worst = 0, worst_e = 0, t;
     DM_OK(w, demill_world_get(w, DEMILL_WORLD_TIME, &t));
     const double t0 = t, y0 = drum_value(w, drum, DEMILL_DRUM_CENTER_Y);
@@ -446,10 +442,11 @@ START_TEST(a_drum_shaken_up_and_down)
         const double in = drum_value(w, drum, DEMILL_DRUM_ENERGY_IN) - in0;
         peak = fmax(peak, fabs(rigid));
         worst = fmax(worst, fabs(in - rigid));
-        worst_e = fmax(worst_e, fabs(energy(w, DEMILL_ENERGY_TOTAL) - e0));
-        ck_assert_msg(fabs(energy(w, DEMILL_ENERGY_WALL_WORK) - work0 - in) <= 1e-12 * peak + 1e-18,
+        worst_e = fmax(worst_e, fabs(dm_test_energy(w, DEMILL_ENERGY_TOTAL) - e0));
+        ck_assert_msg(fabs(dm_test_energy(w, DEMILL_ENERGY_WALL_WORK) - work0 - in) <=
+                          1e-12 * peak + 1e-18,
                       "t = %g: the world's account %.17g, the drum's %.17g", t,
-                      energy(w, DEMILL_ENERGY_WALL_WORK) - work0, in);
+                      dm_test_energy(w, DEMILL_ENERGY_WALL_WORK) - work0, in);
     }
     printf("shaken drum: work off the rigid-body work by %.3g of its peak %.3g J, "
            "balance by %.3g\n", worst / peak, peak, worst_e / peak);

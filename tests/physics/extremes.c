@@ -193,13 +193,6 @@ START_TEST(rolling_friction_extremes)
 }
 END_TEST
 
-static double energy(demill_world *w, int term)
-{
-    double e;
-    DM_OK(w, demill_world_energy(w, term, &e));
-    return e;
-}
-
 /* A 2D or 3D mill of steel; big > 0 adds one ball of that radius first. */
 static demill_world *mill(int dim, double big, double ore_r, uint32_t count, double fraction,
                           double youngs, demill_id *drum)
@@ -233,9 +226,11 @@ static demill_world *mill(int dim, double big, double ore_r, uint32_t count, dou
 /* The balance over `seconds`: constant to 1 % of the energy dissipated. */
 static void balance_holds(demill_world *w, double seconds)
 {
-    const double e0 = energy(w, DEMILL_ENERGY_TOTAL), d0 = energy(w, DEMILL_ENERGY_DISSIPATED);
+    const double e0 = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
+    const double d0 = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED);
     run_for(w, seconds);
-    const double e1 = energy(w, DEMILL_ENERGY_TOTAL), d1 = energy(w, DEMILL_ENERGY_DISSIPATED);
+    const double e1 = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
+    const double d1 = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED);
     ck_assert_msg(d1 > d0, "nothing was dissipated");
     ck_assert_msg(fabs(e1 - e0) <= 0.01 * (d1 - d0), "balance %g -> %g J, %g J dissipated", e0, e1,
                   d1 - d0);
@@ -311,22 +306,23 @@ START_TEST(pile_settles)
     double dt; /* 20 steps per contact: enough for a dissipative pile */
     DM_OK(w, demill_world_suggest_time_step(w, 0, 20, &dt, NULL, NULL));
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, dt));
-    const double m0 = energy(w, DEMILL_ENERGY_TOTAL) - energy(w, DEMILL_ENERGY_DISSIPATED);
+    const double m0 =
+        dm_test_energy(w, DEMILL_ENERGY_TOTAL) - dm_test_energy(w, DEMILL_ENERGY_DISSIPATED);
     double k_half = 0;
     for (int s = 1; s <= 20; s++) {
         DM_OK(w, demill_world_step(w, steps / 20));
-        const double d = energy(w, DEMILL_ENERGY_DISSIPATED);
-        const double mech = energy(w, DEMILL_ENERGY_TOTAL) - d;
+        const double d = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED);
+        const double mech = dm_test_energy(w, DEMILL_ENERGY_TOTAL) - d;
         /* up to the balance's second-order error, 1e-3 of what was dissipated,
          * and round-off */
         ck_assert_msg(mech <= m0 + 1e-3 * d + 1e-12 * fabs(m0), "mechanical energy rose from %.9g to %.9g J (%g J "
                       "dissipated)", m0, mech, d);
         if (s == 10)
-            k_half = energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL) +
-                     energy(w, DEMILL_ENERGY_KINETIC_ROTATIONAL);
+            k_half = dm_test_energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL) +
+                     dm_test_energy(w, DEMILL_ENERGY_KINETIC_ROTATIONAL);
     }
-    const double k_end = energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL) +
-                         energy(w, DEMILL_ENERGY_KINETIC_ROTATIONAL);
+    const double k_end = dm_test_energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL) +
+                         dm_test_energy(w, DEMILL_ENERGY_KINETIC_ROTATIONAL);
     ck_assert_msg(k_end <= k_half, "kinetic energy grew from %g to %g J", k_half, k_end);
     demill_world_destroy(w);
 }

@@ -45,13 +45,6 @@
 #define DELTA0 1e-3 /* each plane's preload overlap, m */
 #define STEPS 4000  /* steps per period */
 
-static double energy(demill_world *w, int term)
-{
-    double e;
-    DM_OK(w, demill_world_energy(w, term, &e));
-    return e;
-}
-
 /* A ball between the planes x = ±(R - δ0) in a world of dimension dim
  * without gravity, linear undamped contacts (the default pair stiffness,
  * k = 5e4 N/m), with local damping α; spin: tangential springs without
@@ -105,9 +98,9 @@ static void oscillator(int dim, int integrator, double alpha, int spin)
     const int comp = spin ? 2 : 0;
     double set[3] = {0, 0, 0};
     set[comp] = spin ? 20.0 : 0.5 * DELTA0;
-    const double rest = energy(w, DEMILL_ENERGY_TOTAL); /* the preloaded planes' */
+    const double rest = dm_test_energy(w, DEMILL_ENERGY_TOTAL); /* the preloaded planes' */
     DM_OK(w, demill_particle_set(w, ball, field, set));
-    const double e0 = energy(w, DEMILL_ENERGY_TOTAL), osc = e0 - rest;
+    const double e0 = dm_test_energy(w, DEMILL_ENERGY_TOTAL), osc = e0 - rest;
     const double want = (1 - alpha) / (1 + alpha);
     double peaks[16], s[3] = {0, 0, 0}, worst = 0;
     int npeaks = 0;
@@ -123,7 +116,7 @@ static void oscillator(int dim, int integrator, double alpha, int spin)
             peaks[npeaks++] = fabs(s[1] - 0.5 * d1 * d1 / d2);
         }
         if (k % 40 == 0)
-            worst = fmax(worst, fabs(energy(w, DEMILL_ENERGY_TOTAL) - e0));
+            worst = fmax(worst, fabs(dm_test_energy(w, DEMILL_ENERGY_TOTAL) - e0));
     }
     ck_assert_msg(npeaks >= 5, "%dD alpha %g spin %d: %d peaks only", dim, alpha, spin, npeaks);
     for (int p = 2; p < npeaks; p++)
@@ -133,15 +126,15 @@ static void oscillator(int dim, int integrator, double alpha, int spin)
                       dim, integrator, alpha, spin ? "spin" : "translation",
                       peaks[p] / peaks[p - 2], p, want);
     /* the energy went into local damping, and the account holds */
-    const double lost = energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL);
+    const double lost = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL);
     ck_assert_msg(alpha == 0 || lost > 0.5 * osc, "local damping took %g J of %g J", lost, osc);
-    ck_assert_double_eq(energy(w, DEMILL_ENERGY_DISSIPATED_NORMAL), 0.0);
+    ck_assert_double_eq(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_NORMAL), 0.0);
     double terms = lost;
     for (int t = DEMILL_ENERGY_DISSIPATED_NORMAL; t <= DEMILL_ENERGY_DISSIPATED_ROLLING; t++)
-        terms += energy(w, t);
-    ck_assert_msg(fabs(energy(w, DEMILL_ENERGY_DISSIPATED) - terms) <= 1e-12 * terms,
+        terms += dm_test_energy(w, t);
+    ck_assert_msg(fabs(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED) - terms) <= 1e-12 * terms,
                   "DEMILL_ENERGY_DISSIPATED %g J, its terms %g J",
-                  energy(w, DEMILL_ENERGY_DISSIPATED), terms);
+                  dm_test_energy(w, DEMILL_ENERGY_DISSIPATED), terms);
     /* velocity Verlet's energy error is second order (7e-4 of the spin's
      * energy here, 1/4 of that at twice the steps, with or without local
      * damping); symplectic Euler's first order: it conserves a modified
@@ -192,7 +185,7 @@ START_TEST(off_is_zero)
     DM_OK(w, demill_particle_set(w, ball, DEMILL_PARTICLE_POSITION, x));
     DM_OK(w, demill_world_step(w, 2 * STEPS));
     DM_ASSERT_REL(dm_test_get(w, ball, DEMILL_PARTICLE_POSITION, 0), 0.5 * DELTA0, 1e-4);
-    ck_assert_double_eq(energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL), 0.0);
+    ck_assert_double_eq(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL), 0.0);
     demill_world_destroy(w);
 }
 END_TEST
@@ -234,23 +227,24 @@ static int pile_steps(double alpha)
     DM_OK(w, demill_particles_add(w, mat, N, x, rad, NULL, 0, NULL));
     /* contact time π √(m* / k) = 3.6e-4 s: 100 steps */
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, 3.6e-6));
-    const double b0 = energy(w, DEMILL_ENERGY_TOTAL), p0 = energy(w, DEMILL_ENERGY_POTENTIAL);
+    const double b0 = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
+    const double p0 = dm_test_energy(w, DEMILL_ENERGY_POTENTIAL);
     int steps = 0;
     double drop = 0.0, worst = 0.0;
     for (; steps < 200000; steps += 200) {
         DM_OK(w, demill_world_step(w, 200));
-        drop = p0 - energy(w, DEMILL_ENERGY_POTENTIAL);
-        worst = fmax(worst, fabs(energy(w, DEMILL_ENERGY_TOTAL) - b0));
-        const double ke = energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL) +
-                          energy(w, DEMILL_ENERGY_KINETIC_ROTATIONAL);
+        drop = p0 - dm_test_energy(w, DEMILL_ENERGY_POTENTIAL);
+        worst = fmax(worst, fabs(dm_test_energy(w, DEMILL_ENERGY_TOTAL) - b0));
+        const double ke = dm_test_energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL) +
+                          dm_test_energy(w, DEMILL_ENERGY_KINETIC_ROTATIONAL);
         if (steps > 2000 && ke < 1e-6 * drop)
             break;
     }
     ck_assert_msg(worst <= 1e-3 * drop, "alpha %g: balance off by %.3g of %g J", alpha,
                   worst / drop, drop);
-    ck_assert_msg((alpha > 0) == (energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL) > 0),
+    ck_assert_msg((alpha > 0) == (dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL) > 0),
                   "alpha %g: local damping took %g J", alpha,
-                  energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL));
+                  dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL));
     demill_world_destroy(w);
     return steps;
 }
@@ -268,8 +262,8 @@ END_TEST
 static void same_local_energy(demill_world *w, demill_world *copy, int way, void *ctx)
 {
     (void)ctx;
-    ck_assert_msg(energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL) ==
-                      energy(copy, DEMILL_ENERGY_DISSIPATED_LOCAL),
+    ck_assert_msg(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL) ==
+                      dm_test_energy(copy, DEMILL_ENERGY_DISSIPATED_LOCAL),
                   "%s: local damping's energy differs", way ? "snapshot" : "checkpoint");
 }
 
@@ -282,7 +276,7 @@ START_TEST(checkpoint_and_snapshot)
     DM_OK(w, demill_particle_set(w, ball, DEMILL_PARTICLE_POSITION, x));
     DM_OK(w, demill_particle_set(w, ball, DEMILL_PARTICLE_ANGULAR_VELOCITY, spin));
     DM_OK(w, demill_world_step(w, 1001));
-    ck_assert(energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL) > 0);
+    ck_assert(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_LOCAL) > 0);
     dm_test_copies_run_on(w, 2000, same_local_energy, NULL);
     demill_world_destroy(w);
 }

@@ -426,13 +426,6 @@ static demill_world *plastic_world(int dim, int nl, double sy, int i, demill_id 
     return w;
 }
 
-static double energy(demill_world *w, int term)
-{
-    double e;
-    DM_OK(w, demill_world_energy(w, term, &e));
-    return e;
-}
-
 /* The world's suggested step for impacts at v (50 steps per contact) of
  * two spheres of radius r and material mat (placed far apart for the
  * question, and removed). */
@@ -471,11 +464,12 @@ START_TEST(thornton_in_a_world)
                 demill_world *w = plastic_world(dim, DEMILL_NORMAL_THORNTON, sy_world, _i, &mat);
                 const double v = ratios[k] * vy, dt = suggested(w, mat, r_world, v);
                 for (int p = 0; p < PHASES; p++) {
-                    const double before = energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC);
+                    const double before = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC);
                     const double ph = (p + 0.5) / PHASES;
                     dm_collision o = wall ? dm_test_bounce(w, mat, r_world, v, dt, ph)
                                           : dm_test_collide(w, mat, r_world, v, dt, ph, 0.0);
-                    const double spent = energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC) - before;
+                    const double spent =
+                        dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC) - before;
                     if (ratios[k] < 1) {
                         DM_ASSERT_REL(o.restitution, 1.0, 1e-4);
                         ck_assert(spent == 0.0);
@@ -508,11 +502,12 @@ START_TEST(walton_braun_in_a_world)
                 DM_OK(w, demill_pair_set(w, mat, mat, DEMILL_PAIR_RESTITUTION, es[k]));
                 const double mstar = wall ? m : m / 2, dt = suggested(w, mat, r_world, v);
                 for (int p = 0; p < PHASES; p++) {
-                    const double before = energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC);
+                    const double before = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC);
                     const double ph = (p + 0.5) / PHASES;
                     dm_collision o = wall ? dm_test_bounce(w, mat, r_world, v, dt, ph)
                                           : dm_test_collide(w, mat, r_world, v, dt, ph, 0.0);
-                    const double spent = energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC) - before;
+                    const double spent =
+                        dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC) - before;
                     DM_ASSERT_REL(o.restitution, es[k], 0.005);
                     DM_ASSERT_REL(spent, 0.5 * mstar * v * v * (1 - es[k] * es[k]), 0.005);
                 }
@@ -558,11 +553,11 @@ START_TEST(paths_in_a_world)
             const double load = 0.5 * mstar * v * v;
             const double loop = load - simpson(&cw, onset, top.dres, hi, hi, 2000);
             for (int p = 0; p < PHASES; p++) {
-                const double before = energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC);
+                const double before = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC);
                 const double ph = (p + 0.5) / PHASES;
                 dm_collision o = wall ? dm_test_bounce(w, mat, r, v, dt, ph)
                                       : dm_test_collide(w, mat, r, v, dt, ph, 0.0);
-                const double spent = energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC) - before;
+                const double spent = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC) - before;
                 DM_ASSERT_REL(spent, loop, 0.01);
                 DM_ASSERT_REL(0.5 * mstar * v * v * (1 - o.restitution * o.restitution), loop, 0.01);
             }
@@ -632,22 +627,22 @@ START_TEST(pile_energy_balance)
         for (int k = 0; k < 3; k++) {
             demill_id mat;
             demill_world *w = pile(dim, plastic_laws[k], 1e6, &mat);
-            const double total0 = energy(w, DEMILL_ENERGY_TOTAL);
-            const double kin0 = energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL);
+            const double total0 = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
+            const double kin0 = dm_test_energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL);
             double dt;
             DM_OK(w, demill_world_get(w, DEMILL_WORLD_TIME_STEP, &dt));
             DM_OK(w, demill_world_step(w, (uint64_t)(0.05 / dt)));
-            const double through = kin0 + energy(w, DEMILL_ENERGY_DISSIPATED);
-            const double drift = energy(w, DEMILL_ENERGY_TOTAL) - total0;
+            const double through = kin0 + dm_test_energy(w, DEMILL_ENERGY_DISSIPATED);
+            const double drift = dm_test_energy(w, DEMILL_ENERGY_TOTAL) - total0;
             ck_assert_msg(fabs(drift) <= 1e-3 * through, "dim %d law %d: drift %g of %g", dim,
                           plastic_laws[k], drift, through);
-            const double plastic = energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC);
+            const double plastic = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC);
             ck_assert_msg(plastic > 1e-3 * through, "dim %d law %d: plastic %g of %g", dim,
                           plastic_laws[k], plastic, through);
             for (int t = DEMILL_ENERGY_DISSIPATED_NORMAL; t <= DEMILL_ENERGY_DISSIPATED; t++)
-                ck_assert_msg(energy(w, t) >= 0.0, "dim %d law %d: term %d = %g", dim,
-                              plastic_laws[k], t, energy(w, t));
-            ck_assert(energy(w, DEMILL_ENERGY_ELASTIC_NORMAL) >= 0.0);
+                ck_assert_msg(dm_test_energy(w, t) >= 0.0, "dim %d law %d: term %d = %g", dim,
+                              plastic_laws[k], t, dm_test_energy(w, t));
+            ck_assert(dm_test_energy(w, DEMILL_ENERGY_ELASTIC_NORMAL) >= 0.0);
             demill_world_destroy(w);
         }
 }
@@ -681,7 +676,7 @@ START_TEST(no_yield_is_hertz)
                 for (size_t q = 0; q < 6 * n; q++)
                     ck_assert_msg(got[q] == want[q], "dim %d law %d σ_y %g: value %zu %.17g, "
                                   "Hertz %.17g", dim, nl, sys[j], q, got[q], want[q]);
-                ck_assert(energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC) == 0.0);
+                ck_assert(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC) == 0.0);
                 free(got);
                 demill_world_destroy(w);
             }
@@ -718,7 +713,7 @@ START_TEST(walton_braun_extremes)
         }
         ck_assert(n[0] == n[1]);
         ck_assert(memcmp(states[0], states[1], 6 * n[0] * sizeof *states[0]) == 0);
-        ck_assert(energy(worlds[1], DEMILL_ENERGY_DISSIPATED_PLASTIC) == 0.0);
+        ck_assert(dm_test_energy(worlds[1], DEMILL_ENERGY_DISSIPATED_PLASTIC) == 0.0);
         for (int k = 0; k < 2; k++) {
             free(states[k]);
             demill_world_destroy(worlds[k]);
@@ -738,7 +733,8 @@ START_TEST(walton_braun_extremes)
         const double rel = dm_test_get(w, ids[1], DEMILL_PARTICLE_VELOCITY, 0) -
                            dm_test_get(w, ids[0], DEMILL_PARTICLE_VELOCITY, 0);
         ck_assert_msg(fabs(rel) < 0.05 * v, "dim %d: rebound %g m/s", dim, rel);
-        DM_ASSERT_REL(energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC), 0.5 * (m / 2) * v * v, 0.005);
+        DM_ASSERT_REL(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC), 0.5 * (m / 2) * v * v,
+                      0.005);
         demill_world_destroy(w);
     }
 }
@@ -752,7 +748,7 @@ START_TEST(plastic_checkpoint)
         demill_id mat;
         demill_world *w = pile(3, plastic_laws[k], 1e6, &mat);
         DM_OK(w, demill_world_step(w, 10000));
-        ck_assert(energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC) > 0.0);
+        ck_assert(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_PLASTIC) > 0.0);
         dm_test_copies_run_on(w, 2000, NULL, NULL);
         demill_world_destroy(w);
     }

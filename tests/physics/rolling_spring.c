@@ -60,13 +60,6 @@ static int integrator(int i)
     return i ? DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT : DEMILL_INTEGRATOR_VELOCITY_VERLET;
 }
 
-static double energy(demill_world *w, int term)
-{
-    double e;
-    DM_OK(w, demill_world_energy(w, term, &e));
-    return e;
-}
-
 typedef struct ramp {
     demill_world *w;
     demill_id mat, ball;
@@ -123,7 +116,7 @@ static void rolls(int i, int dim, int disc)
     const double v2 = dm_test_get(s.w, s.ball, DEMILL_PARTICLE_VELOCITY, 0);
     DM_ASSERT_REL((v2 - v1) / 0.1, want, 1e-6);
     /* fully mobilised: the spring slips, the dashpot is off */
-    ck_assert(energy(s.w, DEMILL_ENERGY_DISSIPATED_ROLLING) > 0);
+    ck_assert(dm_test_energy(s.w, DEMILL_ENERGY_DISSIPATED_ROLLING) > 0);
     demill_world_destroy(s.w);
 }
 
@@ -201,7 +194,7 @@ static void rocking(int i, int dim, int disc, double kr_set)
     ck_assert_msg(crossings >= 9, "%d crossings", crossings);
     DM_ASSERT_REL(2 * (last - first) / (crossings - 1), period, 1e-4);
     /* below mobilisation: no slip, so no rolling friction */
-    ck_assert(energy(w, DEMILL_ENERGY_ELASTIC_ROLLING) >= 0);
+    ck_assert(dm_test_energy(w, DEMILL_ENERGY_ELASTIC_ROLLING) >= 0);
     demill_world_destroy(w);
 }
 
@@ -260,16 +253,17 @@ static demill_world *box(int dim, int rolling, double eta)
 static void balance(int dim)
 {
     demill_world *w = box(dim, DEMILL_ROLLING_SPRING, 0.3);
-    const double b0 = energy(w, DEMILL_ENERGY_TOTAL), p0 = energy(w, DEMILL_ENERGY_POTENTIAL);
-    const double in = energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL);
+    const double b0 = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
+    const double p0 = dm_test_energy(w, DEMILL_ENERGY_POTENTIAL);
+    const double in = dm_test_energy(w, DEMILL_ENERGY_KINETIC_TRANSLATIONAL);
     double worst = 0, through = in;
     for (int s = 0; s < 40; s++) {
         DM_OK(w, demill_world_step(w, 2000));
-        worst = fmax(worst, fabs(energy(w, DEMILL_ENERGY_TOTAL) - b0));
-        through = fmax(through, in + p0 - energy(w, DEMILL_ENERGY_POTENTIAL));
+        worst = fmax(worst, fabs(dm_test_energy(w, DEMILL_ENERGY_TOTAL) - b0));
+        through = fmax(through, in + p0 - dm_test_energy(w, DEMILL_ENERGY_POTENTIAL));
     }
-    const double viscous = energy(w, DEMILL_ENERGY_DISSIPATED_ROLLING_VISCOUS);
-    const double slip = energy(w, DEMILL_ENERGY_DISSIPATED_ROLLING);
+    const double viscous = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_ROLLING_VISCOUS);
+    const double slip = dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_ROLLING);
     ck_assert_msg(viscous > 0 && slip > 0, "%dD: rolling dashpot %g J, slip %g J", dim, viscous,
                   slip);
     ck_assert_msg(worst <= 1e-3 * through, "%dD: balance off by %.3g of %g J", dim,
@@ -296,11 +290,11 @@ START_TEST(terms_zero_when_off)
     for (int c = 0; c < 3; c++) {
         demill_world *w = box(3, cases[c].rolling, cases[c].eta);
         DM_OK(w, demill_world_step(w, 20000));
-        ck_assert_double_eq(energy(w, DEMILL_ENERGY_DISSIPATED_ROLLING_VISCOUS), 0.0);
+        ck_assert_double_eq(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_ROLLING_VISCOUS), 0.0);
         if (cases[c].rolling != DEMILL_ROLLING_SPRING)
-            ck_assert_double_eq(energy(w, DEMILL_ENERGY_ELASTIC_ROLLING), 0.0);
+            ck_assert_double_eq(dm_test_energy(w, DEMILL_ENERGY_ELASTIC_ROLLING), 0.0);
         if (cases[c].rolling == DEMILL_ROLLING_NONE)
-            ck_assert_double_eq(energy(w, DEMILL_ENERGY_DISSIPATED_ROLLING), 0.0);
+            ck_assert_double_eq(dm_test_energy(w, DEMILL_ENERGY_DISSIPATED_ROLLING), 0.0);
         demill_world_destroy(w);
     }
 }
@@ -314,7 +308,7 @@ START_TEST(checkpoint_and_snapshot)
     double x[3] = {2 * R, R, 0}, r = R;
     DM_OK(s.w, demill_particles_add(s.w, s.mat, 1, x, &r, NULL, 0, NULL));
     DM_OK(s.w, demill_world_step(s.w, 10000));
-    ck_assert(energy(s.w, DEMILL_ENERGY_ELASTIC_ROLLING) > 0);
+    ck_assert(dm_test_energy(s.w, DEMILL_ENERGY_ELASTIC_ROLLING) > 0);
     dm_test_copies_run_on(s.w, 3000, NULL, NULL);
     demill_world_destroy(s.w);
     demill_world *w = box(3, DEMILL_ROLLING_SPRING, 0.3);

@@ -123,26 +123,20 @@ static demill_world *mill(int single, uint64_t settle, demill_id *drum)
     return w;
 }
 
-static double energy(demill_world *w, int term)
-{
-    double e;
-    DM_OK(w, demill_world_energy(w, term, &e));
-    return e;
-}
-
 /* The balance's largest change over 20,000 steps (0.2 s) of the turning
  * mill, as a fraction of the drum's work over them. */
 static double balance_stray(int single)
 {
     demill_id drum;
     demill_world *w = mill(single, 5000, &drum);
-    const double b0 = energy(w, DEMILL_ENERGY_TOTAL), w0 = energy(w, DEMILL_ENERGY_WALL_WORK);
+    const double b0 = dm_test_energy(w, DEMILL_ENERGY_TOTAL);
+    const double w0 = dm_test_energy(w, DEMILL_ENERGY_WALL_WORK);
     double worst = 0;
     for (int s = 0; s < 40; s++) {
         DM_OK(w, demill_world_step(w, 500));
-        worst = fmax(worst, fabs(energy(w, DEMILL_ENERGY_TOTAL) - b0));
+        worst = fmax(worst, fabs(dm_test_energy(w, DEMILL_ENERGY_TOTAL) - b0));
     }
-    const double work = energy(w, DEMILL_ENERGY_WALL_WORK) - w0;
+    const double work = dm_test_energy(w, DEMILL_ENERGY_WALL_WORK) - w0;
     ck_assert_msg(work > 0, "the drum did no work (%g J)", work);
     demill_world_destroy(w);
     return worst / work;
@@ -180,7 +174,7 @@ static double *run_on(demill_world *w, const demill_snapshot *start, int threads
     for (int f = 0; f < 5; f++)
         DM_OK(w, demill_particles_read(w, fields[f], o + 3 * n * f, n, NULL));
     for (int e = 0; e < 12; e++)
-        o[15 * n + e] = energy(w, e + 1);
+        o[15 * n + e] = dm_test_energy(w, e + 1);
     return o;
 }
 

@@ -62,6 +62,13 @@ double dm_test_get(demill_world *w, demill_id p, int field, int c)
     return v[c];
 }
 
+double dm_test_energy(demill_world *w, int term)
+{
+    double e;
+    DM_OK(w, demill_world_energy(w, term, &e));
+    return e;
+}
+
 /* Steps a collision of sphere ids[0] (radius r) with sphere ids[1] (wall = 0)
  * or with the plane x = 0 (wall = 1), head-on along x at relative speed v0
  * from a gap, and measures it (see dm_collision); the rebound ratio is the

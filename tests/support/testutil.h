@@ -84,6 +84,9 @@ int dm_test_run(Suite *s);
 /* One double field of a particle (component c). */
 double dm_test_get(demill_world *w, demill_id p, int field, int c);
 
+/* One term of the world's energy account (DEMILL_ENERGY_*). */
+double dm_test_energy(demill_world *w, int term);
+
 /* A binary collision: rebound ratio, duration, largest overlap. */
 typedef struct dm_collision {
     double restitution, duration, max_overlap;
