@@ -10,13 +10,14 @@
  * it takes any range no thread has taken yet, so that a worker that has not
  * woken up in time delays nothing. Each range writes its results at its own
  * index, whichever thread ran it, and no sum depends on the ranges, so
- * results never depend on who did what. A thread that waits (a worker for the next loop, the caller for the
- * last range) spins for a short while and then sleeps on a condition
- * variable, so that the library does not take a busy machine's cores from
- * its other work. And as the world steps, the pool keeps measuring whether
- * sharing out pays (dm_adapt): on a machine whose other work leaves it no
- * second core, the loops run on the calling thread alone. docs/design.md,
- * Threads, says why, with the measurements.
+ * results never depend on who did what. A thread that waits (a worker for
+ * the next loop, the caller for the last range) spins for a short while
+ * and then sleeps on a condition variable, so that the library does not
+ * take a busy machine's cores from its other work. And as the world
+ * steps, the pool keeps measuring whether sharing out pays (dm_adapt): on
+ * a machine whose other work leaves it no second core, the loops run on
+ * the calling thread alone. docs/design.md, Threads, says why, with the
+ * measurements.
  *
  * Without threads (DEMILL_HAVE_THREADS undefined: built with
  * -DDEMILL_OPENMP=OFF or without POSIX threads) a world has one thread and

@@ -190,12 +190,6 @@ DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar
 #define DM_SQRT sqrt
 #define DM_FABS fabs
 #include "physics/contact/law_body.h"
-#undef DM_REAL
-#undef DM_LAW_NAME
-#undef DM_LAW_OUT
-#undef DM_LAW_LOADS
-#undef DM_SQRT
-#undef DM_FABS
 
 /* The same law in single precision (law_body.h): float arguments, history
  * and output, for the fast laws (linear or Hertz, no or constant-torque
@@ -207,12 +201,6 @@ DM_INLINE double dm_law_range(int cohesion, const dm_pairparam *pp, double rstar
 #define DM_SQRT sqrtf
 #define DM_FABS fabsf
 #include "physics/contact/law_body.h"
-#undef DM_REAL
-#undef DM_LAW_NAME
-#undef DM_LAW_OUT
-#undef DM_LAW_LOADS
-#undef DM_SQRT
-#undef DM_FABS
 
 /* Elastic energy stored in a contact of laws l with history hist: normal,
  * tangential and rolling springs. */

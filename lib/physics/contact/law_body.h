@@ -3,7 +3,8 @@
  * with DM_REAL float, as dm_lawf(), the law of the single-precision kernels
  * (DEMILL_WORLD_SINGLE_PRECISION; docs/design.md, Contact kernels), so that
  * the physics is written once. The includer defines DM_REAL, DM_LAW_NAME,
- * DM_LAW_OUT, DM_LAW_LOADS, DM_SQRT and DM_FABS; DM_R(x) makes a constant or a pair
+ * DM_LAW_OUT, DM_LAW_LOADS, DM_SQRT and DM_FABS, which the end of this file
+ * undefines again for the next inclusion; DM_R(x) makes a constant or a pair
  * parameter a DM_REAL, so that the float law computes in float throughout
  * (in double it changes nothing). The laws beyond the fast kernels'
  * (elasto-plastic, cohesion) take their arguments in double, as they are
@@ -134,8 +135,9 @@ DM_INLINE void DM_LAW_NAME(const int D, const int NL, const int DL, const int TL
      * apart. Friction and rolling resistance are capped by the solids'
      * load: the contact force, or for JKR its sum with twice the pull-off
      * force (Thornton and Yin 1991), positive while the neck holds. */
-    const DM_REAL load =
-        CL == DEMILL_COHESION_JKR ? fn + fcoh + DM_R(2.0) * dm_jkr_pull_off(rstar, pp->adhesion) : fn;
+    const DM_REAL load = CL == DEMILL_COHESION_JKR
+                             ? fn + fcoh + DM_R(2.0) * dm_jkr_pull_off(rstar, pp->adhesion)
+                             : fn;
     o->fn = CL != DEMILL_COHESION_NONE ? fn + fcoh : fn;
     o->fel = fel;
     o->diss_normal = -(fn - fel) * vnd * dt_hist;
@@ -275,12 +277,14 @@ DM_INLINE void DM_LAW_NAME(const int D, const int NL, const int DL, const int TL
          * rolling friction (it is the slip at the cap); the dashpot's is the
          * rolling viscous term. */
         const int HR = dm_law_off_rolling(NL, DL, TL, D);
-        const DM_REAL kr = DM_R(pp->kr) > DM_R(0.0)
-                               ? DM_R(pp->kr)
-                               : DM_R(2.25) * stiff * DM_R(pp->mu_r) * DM_R(pp->mu_r) * rstar * rstar;
+        const DM_REAL kr =
+            DM_R(pp->kr) > DM_R(0.0)
+                ? DM_R(pp->kr)
+                : DM_R(2.25) * stiff * DM_R(pp->mu_r) * DM_R(pp->mu_r) * rstar * rstar;
         const DM_REAL cr = DM_R(pp->eta_r) * DM_R(2.0) * DM_SQRT(ir * kr);
         const DM_REAL half_ikr = kr > DM_R(0.0) ? DM_R(0.5) / kr : DM_R(0.0);
-        DM_REAL twist = DM_R(0.0), twist_p = DM_R(0.0), mn = DM_R(0.0), mk[3], wt[3], m2 = DM_R(0.0);
+        DM_REAL twist = DM_R(0.0), twist_p = DM_R(0.0), mn = DM_R(0.0), m2 = DM_R(0.0);
+        DM_REAL mk[3], wt[3];
         if (D == 3)
             for (int c = 0; c < 3; c++) {
                 twist += wd[c] * n[c];
@@ -313,7 +317,6 @@ DM_INLINE void DM_LAW_NAME(const int D, const int NL, const int DL, const int TL
     }
 }
 
-#undef DM_R
 
 /* A law's output o as the pair's loads: the force on b, fn n + f_t, and the
  * torques on a and b (W components), the rolling torque and the lever arms
@@ -337,3 +340,11 @@ DM_INLINE void DM_LAW_LOADS(const int D, const DM_REAL *n, DM_REAL ai, DM_REAL a
         tb[c] = -o->mr[c] - aj * nf[c];
     }
 }
+
+#undef DM_R
+#undef DM_REAL
+#undef DM_LAW_NAME
+#undef DM_LAW_OUT
+#undef DM_LAW_LOADS
+#undef DM_SQRT
+#undef DM_FABS
