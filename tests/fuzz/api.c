@@ -2808,17 +2808,29 @@ static void check_untouched(void)
 static void cleanup(void)
 {
     static const char *names[] = {"checkpoint", "checkpoint.part", "particles.vtu", "walls.vtp",
-                                  "garbage", "series.pvd", "series.pvd.tmp"};
+                                  "garbage"};
     char p[128];
     for (size_t k = 0; k < COUNT(names); k++) {
         snprintf(p, sizeof p, "%s/%s", F.dir, names[k]);
         remove(p);
     }
-    for (int k = 0; k < 1000; k++) {
-        snprintf(p, sizeof p, "%s/series_particles_%06d.vtu", F.dir, k);
+    /* the series opened at the paths path() gives: "DIR/series",
+     * "DIR/garbage", and the directory's own path, whose files are the
+     * directory's siblings */
+    static const char *in[] = {"/series", "/garbage", ""};
+    for (size_t s = 0; s < COUNT(in); s++) {
+        char prefix[96];
+        snprintf(prefix, sizeof prefix, "%s%s", F.dir, in[s]);
+        snprintf(p, sizeof p, "%s.pvd", prefix);
         remove(p);
-        snprintf(p, sizeof p, "%s/series_walls_%06d.vtp", F.dir, k);
+        snprintf(p, sizeof p, "%s.pvd.tmp", prefix);
         remove(p);
+        for (int k = 0; k < 1000; k++) {
+            snprintf(p, sizeof p, "%s_particles_%06d.vtu", prefix, k);
+            remove(p);
+            snprintf(p, sizeof p, "%s_walls_%06d.vtp", prefix, k);
+            remove(p);
+        }
     }
     rmdir(F.dir);
 }
