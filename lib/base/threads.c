@@ -4,8 +4,9 @@
  * A world that steps on n > 1 threads starts n - 1 workers the first time a
  * loop is shared out, and keeps them until it is destroyed or its thread
  * count changes. A loop is split into one range of particles per thread,
- * the same ranges for every loop of a step: thread t (the caller is 0)
- * takes range t first, so that the particles a thread drifts are the ones
+ * the same ranges for every loop of a step (split so that the longest loop
+ * of the last steps takes each range the same time: dm_balance): thread t
+ * (the caller is 0) takes range t first, so that the particles a thread drifts are the ones
  * whose contacts and sums it computes next, in its own core's cache; then
  * it takes any range no thread has taken yet, so that a worker that has not
  * woken up in time delays nothing. Each range writes its results at its own
@@ -25,11 +26,18 @@
 #define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
 
 #include <stdlib.h>
+#include <string.h>
 
 #include "base/threads.h"
 
 /* Fewer particles than this per range are not worth sharing out. */
 #define MIN_PER_RANGE 512
+
+/* Where range t of [0, n) in `ranges` equal parts starts. */
+static uint32_t equal_cut(uint32_t n, int t, int ranges)
+{
+    return (uint32_t)((uint64_t)n * (uint64_t)t / (uint64_t)ranges);
+}
 
 #ifdef DEMILL_HAVE_THREADS
 #include <pthread.h>
@@ -76,6 +84,97 @@ typedef struct dm_adapt {
     double spent;       /* ns in the loops in this phase */
     double per_step[2]; /* ns per step in the last probes: shared, one range */
 } dm_adapt;
+
+/* Where the ranges of a loop over [0, n) split (docs/design.md, Threads):
+ * equal parts at first; then after each step that shared its loops out,
+ * each cut moves a STEER-th of the way to where the step's longest loop
+ * (the contacts, in a mill) would have taken every range the same time,
+ * the time of each range taken as spread evenly over its particles. A
+ * range keeps at least MIN_PER_RANGE / 2 particles. The cuts change only
+ * between steps, so that every loop of a step has the same ranges, as
+ * DM_FORCES_DEFER needs; no result depends on them. */
+#define STEER 4
+
+typedef struct dm_balance {
+    uint32_t n;  /* the length of the loops the cuts are for; 0: none yet */
+    int ranges;  /* and their number of ranges */
+    uint32_t cut[DM_MAX_THREADS + 1];
+    double ns[DM_MAX_THREADS]; /* the last loop's time per range */
+    double longest;            /* the step's longest loop so far: its slowest range's time, */
+    uint32_t longest_n;        /* its length and number of ranges, */
+    int longest_ranges;
+    double longest_ns[DM_MAX_THREADS]; /* and its time per range */
+} dm_balance;
+
+/* Range t of `ranges` of a loop over [0, n). */
+static void range_of(const dm_balance *b, uint32_t n, int t, int ranges, uint32_t *begin,
+                     uint32_t *end)
+{
+    if (b->n == n && b->ranges == ranges) {
+        *begin = b->cut[t];
+        *end = b->cut[t + 1];
+    } else {
+        *begin = equal_cut(n, t, ranges);
+        *end = equal_cut(n, t + 1, ranges);
+    }
+}
+
+/* A loop of `ranges` ranges over [0, n) has run, its times in b->ns: kept
+ * if it is the step's longest so far. */
+static void balance_note(dm_balance *b, uint32_t n, int ranges)
+{
+    double slowest = 0.0;
+    for (int t = 0; t < ranges; t++)
+        slowest = b->ns[t] > slowest ? b->ns[t] : slowest;
+    if (slowest <= b->longest)
+        return;
+    b->longest = slowest;
+    b->longest_n = n;
+    b->longest_ranges = ranges;
+    memcpy(b->longest_ns, b->ns, (size_t)ranges * sizeof *b->ns);
+}
+
+/* A new step: the cuts moved after the last step's longest loop. */
+static void balance_step(dm_balance *b)
+{
+    const uint32_t n = b->longest_n;
+    const int R = b->longest_ranges;
+    const double *ns = b->longest_ns;
+    b->longest = 0.0;
+    b->longest_ranges = 0;
+    if (R < 2)
+        return;
+    if (b->n != n || b->ranges != R) {
+        for (int t = 0; t <= R; t++)
+            b->cut[t] = equal_cut(n, t, R);
+        b->n = n;
+        b->ranges = R;
+    }
+    double total = 0.0;
+    for (int t = 0; t < R; t++)
+        total += ns[t];
+    if (!(total > 0.0))
+        return;
+    /* cut k where the time before it would be k / R of the whole */
+    uint32_t cut[DM_MAX_THREADS + 1];
+    double before = 0.0; /* the time of ranges 0 .. t - 1 */
+    int t = 0;
+    for (int k = 1; k < R; k++) {
+        const double want = total * k / R;
+        while (t + 1 < R && before + ns[t] < want)
+            before += ns[t++];
+        const double part = ns[t] > 0.0 ? (want - before) / ns[t] : 0.5;
+        const double at = b->cut[t] + part * (double)(b->cut[t + 1] - b->cut[t]);
+        cut[k] = (uint32_t)((double)b->cut[k] + (at - (double)b->cut[k]) / STEER);
+    }
+    const uint32_t least = MIN_PER_RANGE / 2;
+    cut[0] = 0;
+    for (int k = 1; k < R; k++) { /* each range at least `least` long, from both ends */
+        const uint32_t lo = cut[k - 1] + least, hi = n - (uint32_t)(R - k) * least;
+        cut[k] = cut[k] < lo ? lo : cut[k] > hi ? hi : cut[k];
+    }
+    memcpy(b->cut + 1, cut + 1, (size_t)(R - 1) * sizeof *cut);
+}
 
 /* A new step: counts the one before in the phase, and at the end of the
  * phase starts the next. */
@@ -143,6 +242,7 @@ struct dm_pool {
     void *arg;
     uint32_t n;
     dm_adapt adapt;
+    dm_balance balance;
 };
 
 static double ns_now(void)
@@ -187,9 +287,11 @@ static bool work(dm_pool *p, uint32_t job, int self)
     bool last = false;
     int t, ranges;
     while ((t = take(p, job, self, &ranges)) >= 0) {
-        const uint64_t n = p->n;
-        p->fn(p->w, p->arg, t, (uint32_t)(n * (uint64_t)t / (uint64_t)ranges),
-              (uint32_t)(n * (uint64_t)(t + 1) / (uint64_t)ranges));
+        uint32_t begin, end;
+        range_of(&p->balance, p->n, t, ranges, &begin, &end);
+        const double start = ns_now();
+        p->fn(p->w, p->arg, t, begin, end);
+        p->balance.ns[t] = ns_now() - start;
         last = atomic_fetch_sub(&p->left, 1) == 1; /* seq_cst: see run_job */
     }
     return last;
@@ -379,8 +481,10 @@ int dm_ranges(const demill_world *w, uint32_t n)
 #ifdef DEMILL_HAVE_THREADS
     dm_pool *p = b->pool;
     if (p) {
-        if (p->adapt.step != b->steps)
+        if (p->adapt.step != b->steps) {
             next_step(&p->adapt, b->steps);
+            balance_step(&p->balance);
+        }
         if (p->adapt.solo)
             return 1;
     }
@@ -390,10 +494,11 @@ int dm_ranges(const demill_world *w, uint32_t n)
 }
 
 /* Calls fn(w, arg, t, begin, end) for ranges t = 0 .. ranges - 1 that split
- * [0, n) into equal parts, on the world's threads; returns the number of
- * ranges (at most DM_MAX_THREADS). Loops with results per range write them
- * to arg at index t, to be combined in range order. If no worker can be
- * started, the calling thread runs every range: slower, the same results. */
+ * [0, n) (into equal parts, or where dm_balance moved the cuts), on the
+ * world's threads; returns the number of ranges (at most DM_MAX_THREADS).
+ * Loops with results per range write them to arg at index t, to be
+ * combined in range order. If no worker can be started, the calling thread
+ * runs every range: slower, the same results. */
 int dm_parallel(demill_world *w, uint32_t n, dm_range_fn fn, void *arg)
 {
     const int ranges = dm_ranges(w, n);
@@ -415,6 +520,7 @@ int dm_parallel(demill_world *w, uint32_t n, dm_range_fn fn, void *arg)
                 atomic_store_explicit(&p->taken[r], job - 1, memory_order_relaxed);
             publish(p, (uint64_t)job << 32 | (uint64_t)ranges);
             run_job(p, job);
+            balance_note(&p->balance, n, ranges);
         } else {
             fn(w, arg, 0, 0, n);
         }
@@ -423,7 +529,6 @@ int dm_parallel(demill_world *w, uint32_t n, dm_range_fn fn, void *arg)
     }
 #endif
     for (int t = 0; t < ranges; t++)
-        fn(w, arg, t, (uint32_t)((uint64_t)n * t / ranges),
-           (uint32_t)((uint64_t)n * (t + 1) / ranges));
+        fn(w, arg, t, equal_cut(n, t, ranges), equal_cut(n, t + 1, ranges));
     return ranges;
 }
