@@ -557,54 +557,63 @@ typedef void (*dm_kinf_fn)(const dm_kernel_args *a, const dm_chunk *ch, dm_chunk
                            uint32_t lanes);
 extern const dm_kinf_fn dm_kinsf[2][2][2][2];
 
-/* The float law of the chunk's first `lanes` pairs, from the kinematics and
- * histories in cf and the pair entries and new-contact flags in ch: what
+/* The float law of pair s of the chunk, from the kinematics and history in
+ * cf and the pair entry in ch, as a new contact if first: what
  * dm_chunk_law() stores, in float. */
+DM_INLINE void dm_chunk_lawf(const int D, const int NL, const int DL, const int TL, const int RL,
+                             const dm_chunk *restrict ch, dm_chunkf *restrict cf, uint32_t s,
+                             const dm_pairparam *restrict tab, float dt_hist, float reach,
+                             int first)
+{
+    const int W = D == 3 ? 3 : 1, HSL = dm_law_hist_size(NL, DL, TL, RL, D);
+    float nq[3] = {0.0f, 0.0f, 0.0f}, vc[3] = {0.0f, 0.0f, 0.0f}, dc[3] = {0.0f, 0.0f, 0.0f};
+    float wrel[3] = {0.0f, 0.0f, 0.0f}, hin[DM_MAX_HIST], hout[DM_MAX_HIST];
+    for (int c = 0; c < D; c++) {
+        nq[c] = cf->n[c][s];
+        vc[c] = cf->vc[c][s];
+        dc[c] = cf->dc[c][s];
+    }
+    for (int c = 0; c < (RL ? W : 0); c++)
+        wrel[c] = cf->wrel[c][s];
+    for (int c = 0; c < HSL; c++)
+        hin[c] = cf->h[c][s];
+    dm_law_outf o;
+    dm_lawf(D, NL, DL, TL, RL, DEMILL_COHESION_NONE, &tab[ch->pp[s]], nq, cf->delta[s], vc, dc,
+            wrel, NULL, 0.0f, cf->rstar[s], cf->mstar[s], dt_hist, reach, first, hin, hout, &o);
+    float f[3], ta[3], tb[3];
+    dm_law_loadsf(D, nq, cf->ai[s], cf->aj[s], &o, f, ta, tb);
+    for (int c = 0; c < D; c++)
+        cf->f[c][s] = f[c];
+    for (int c = 0; c < W; c++) {
+        cf->ta[c][s] = ta[c];
+        cf->tb[c][s] = tb[c];
+    }
+    cf->diss[0][s] = o.diss_normal;
+    cf->diss[1][s] = o.diss_tangential;
+    cf->diss[2][s] = o.diss_friction;
+    cf->diss[3][s] = o.diss_rolling;
+    for (int c = 0; c < HSL; c++)
+        cf->h[c][s] = hout[c];
+}
+
+/* The float law of the chunk's first `lanes` pairs, every one as a
+ * continuing contact (dm_chunk_single() computes those sampled first again:
+ * see dm_chunk_laws). */
 DM_INLINE void dm_chunk_lawsf(const int D, const int NL, const int DL, const int TL,
                               const int RL, const dm_chunk *restrict ch, dm_chunkf *restrict cf,
                               uint32_t lanes, const dm_pairparam *restrict tab, float dt_hist,
                               float reach)
 {
-    const int W = D == 3 ? 3 : 1, HSL = dm_law_hist_size(NL, DL, TL, RL, D);
     const uint32_t n = lanes / DM_LANES * DM_LANES; /* = lanes (see dm_kin_fn) */
-    for (uint32_t s = 0; s < n; s++) {
-        float nq[3] = {0.0f, 0.0f, 0.0f}, vc[3] = {0.0f, 0.0f, 0.0f}, dc[3] = {0.0f, 0.0f, 0.0f};
-        float wrel[3] = {0.0f, 0.0f, 0.0f}, hin[DM_MAX_HIST], hout[DM_MAX_HIST];
-        for (int c = 0; c < D; c++) {
-            nq[c] = cf->n[c][s];
-            vc[c] = cf->vc[c][s];
-            dc[c] = cf->dc[c][s];
-        }
-        for (int c = 0; c < (RL ? W : 0); c++)
-            wrel[c] = cf->wrel[c][s];
-        for (int c = 0; c < HSL; c++)
-            hin[c] = cf->h[c][s];
-        dm_law_outf o;
-        dm_lawf(D, NL, DL, TL, RL, DEMILL_COHESION_NONE, &tab[ch->pp[s]], nq, cf->delta[s], vc,
-                dc, wrel, NULL, 0.0f, cf->rstar[s], cf->mstar[s], dt_hist, reach,
-                (int)ch->first[s], hin, hout, &o);
-        float f[3], ta[3], tb[3];
-        dm_law_loadsf(D, nq, cf->ai[s], cf->aj[s], &o, f, ta, tb);
-        for (int c = 0; c < D; c++)
-            cf->f[c][s] = f[c];
-        for (int c = 0; c < W; c++) {
-            cf->ta[c][s] = ta[c];
-            cf->tb[c][s] = tb[c];
-        }
-        cf->diss[0][s] = o.diss_normal;
-        cf->diss[1][s] = o.diss_tangential;
-        cf->diss[2][s] = o.diss_friction;
-        cf->diss[3][s] = o.diss_rolling;
-        for (int c = 0; c < HSL; c++)
-            cf->h[c][s] = hout[c];
-    }
+    for (uint32_t s = 0; s < n; s++)
+        dm_chunk_lawf(D, NL, DL, TL, RL, ch, cf, s, tab, dt_hist, reach, 0);
 }
 
 /* The kinematics and law passes of a chunk in float, for a fast kernel's
  * laws: the histories dm_chunk_load() put into ch rounded into a float
- * chunk, the float kinematics and law, and the results of the m touching
- * pairs widened back into ch for the commit pass. walls: particle-wall
- * pairs. */
+ * chunk, the float kinematics and law (the pairs sampled first again with
+ * the entry correction), and the results of the m touching pairs widened
+ * back into ch for the commit pass. walls: particle-wall pairs. */
 DM_INLINE void dm_chunk_single(const int D, const int NL, const int DL, const int TL,
                                const int RL, const dm_kernel_args *a, dm_chunk *restrict ch,
                                uint32_t lanes, uint32_t m, int walls)
@@ -617,6 +626,14 @@ DM_INLINE void dm_chunk_single(const int D, const int NL, const int DL, const in
     dm_kinsf[D == 3][walls][TL != DEMILL_TANGENTIAL_NONE][RL](a, ch, &cf, lanes);
     dm_chunk_lawsf(D, NL, DL, TL, RL, ch, &cf, lanes, a->w->ptab, (float)a->dt_hist,
                    (float)a->reach);
+    for (uint32_t s = 0; s < m && dm_law_entry(DL); s++) { /* the pairs sampled first */
+        if (!ch->first[s])
+            continue;
+        for (int c = 0; c < HSL; c++) /* their histories, which the pass overwrote in cf */
+            cf.h[c][s] = (float)ch->h[c][s];
+        dm_chunk_lawf(D, NL, DL, TL, RL, ch, &cf, s, a->w->ptab, (float)a->dt_hist,
+                      (float)a->reach, 1);
+    }
     for (uint32_t s = 0; s < m; s++) {
         for (int c = 0; c < D; c++)
             ch->f[c][s] = cf.f[c][s];
