@@ -3,21 +3,21 @@
  *
  * A world that steps on n > 1 threads starts n - 1 workers the first time a
  * loop is shared out, and keeps them until it is destroyed or its thread
- * count changes. A loop is split into one range of particles per thread,
- * the same ranges for every loop of a step (split so that the longest loop
- * of the last steps takes each range the same time: dm_balance): thread t
- * (the caller is 0) takes range t first, so that the particles a thread drifts are the ones
- * whose contacts and sums it computes next, in its own core's cache; then
- * it takes any range no thread has taken yet, so that a worker that has not
- * woken up in time delays nothing. Each range writes its results at its own
- * index, whichever thread ran it, and no sum depends on the ranges, so
- * results never depend on who did what. A thread that waits (a worker for
- * the next loop, the caller for the last range) spins for a short while
- * and then sleeps on a condition variable, so that the library does not
- * take a busy machine's cores from its other work. And as the world
- * steps, the pool keeps measuring whether sharing out pays (dm_adapt): on
- * a machine whose other work leaves it no second core, the loops run on
- * the calling thread alone. docs/design.md, Threads, says why, with the
+ * count changes. A loop is split into one range of particles per thread, the
+ * same ranges for every loop of a step (split so that the longest loop of
+ * the last steps takes each range the same time: dm_balance): thread t (the
+ * caller is 0) takes range t first, so that the particles a thread drifts
+ * are the ones whose contacts and sums it computes next, in its own core's
+ * cache; then it takes any range no thread has taken yet, so that a worker
+ * that has not woken up in time delays nothing. Each range writes its
+ * results at its own index, whichever thread ran it, and no sum depends on
+ * the ranges, so results never depend on who did what. A thread that waits
+ * (a worker for the next loop, the caller for the last range) spins for a
+ * short while and then sleeps on a condition variable, so that the library
+ * does not take a busy machine's cores from its other work. And as the world
+ * steps, the pool keeps measuring whether sharing out pays (dm_adapt): on a
+ * machine whose other work leaves it no second core, the loops run on the
+ * calling thread alone. docs/design.md, Threads, says why, with the
  * measurements.
  *
  * Without threads (DEMILL_HAVE_THREADS undefined: built with
