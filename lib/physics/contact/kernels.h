@@ -461,48 +461,44 @@ typedef void (*dm_kin_fn)(const dm_kernel_args *a, dm_chunk *ch, uint32_t lanes)
 extern const dm_kin_fn dm_kins[2][2][2][DM_ROLLING_LAWS];
 
 /* The laws of a chunk's first `lanes` pairs, from the kinematics gathered
- * into it (the loop that dm_law_fn's kernels run). ENTRY: with the entry
- * correction of the pairs sampled first (ch->first; dm_law); without it,
- * every pair as a continuing contact, and dm_chunk_entries() computes those
- * pairs again with it. The fast kernels take it out of this loop, where
- * every lane would pay for its three square roots and two divisions, for
- * the pair in tens of steps that needs it. */
+ * into it (the loop that dm_law_fn's kernels run), every pair as a
+ * continuing contact: dm_chunk_entries() computes those sampled first
+ * (ch->first) again with the entry correction (dm_law), which is kept out
+ * of this loop, where every lane would pay for its square roots and
+ * divisions, for the pair in tens of steps that needs it. */
 DM_INLINE void dm_chunk_laws(const int D, const int NL, const int DL, const int TL,
-                             const int RL, const int CL, const int ENTRY, dm_chunk *restrict ch,
-                             uint32_t lanes, const dm_pairparam *restrict tab, double dt_hist,
-                             double reach)
+                             const int RL, const int CL, dm_chunk *restrict ch, uint32_t lanes,
+                             const dm_pairparam *restrict tab, double dt_hist, double reach)
 {
     const int HSL = dm_law_hist_size(NL, DL, TL, RL, D);
     const uint32_t n = lanes / DM_LANES * DM_LANES; /* = lanes (see dm_kin_fn) */
     for (uint32_t s = 0; s < n; s++) {
         dm_kin q;
         dm_kin_get(D, RL, ch, s, &q);
-        dm_chunk_law(D, NL, DL, TL, RL, CL, HSL, ch, s, &tab[ch->pp[s]], &q, dt_hist, reach,
-                     ENTRY ? (int)ch->first[s] : 0);
+        dm_chunk_law(D, NL, DL, TL, RL, CL, HSL, ch, s, &tab[ch->pp[s]], &q, dt_hist, reach, 0);
     }
 }
 
-/* After dm_chunk_laws() without ENTRY: the law again, with the entry
- * correction, for the chunk's pairs (of its m) sampled first, from their
+/* After dm_chunk_laws(), for laws with an entry correction: the law again,
+ * with it, for the chunk's pairs (of its m) sampled first, from their
  * histories as the bucket still holds them (hist, hs doubles a pair; the
- * law pass has overwritten the chunk's copies). The same operations as the
- * vectorised loop's lanes, compiled without contraction: the results are
- * those of dm_chunk_laws() with ENTRY, bit for bit. */
+ * law pass has overwritten the chunk's copies). The same operations as a
+ * lane of the vectorised loop, compiled without contraction: the results
+ * are those of a loop that applied it itself, bit for bit. */
 DM_INLINE void dm_chunk_entries(const int D, const int NL, const int DL, const int TL,
-                                const int RL, dm_chunk *restrict ch, uint32_t m,
+                                const int RL, const int CL, dm_chunk *restrict ch, uint32_t m,
                                 const double *restrict hist, int hs,
                                 const dm_pairparam *restrict tab, double dt_hist, double reach)
 {
     const int HSL = dm_law_hist_size(NL, DL, TL, RL, D);
-    for (uint32_t s = 0; s < m; s++) {
+    for (uint32_t s = 0; s < m && dm_law_entry(DL); s++) {
         if (!ch->first[s])
             continue;
         for (int c = 0; c < HSL; c++)
             ch->h[c][s] = hist[(size_t)hs * ch->k[s] + c];
         dm_kin q;
         dm_kin_get(D, RL, ch, s, &q);
-        dm_chunk_law(D, NL, DL, TL, RL, DEMILL_COHESION_NONE, HSL, ch, s, &tab[ch->pp[s]], &q,
-                     dt_hist, reach, 1);
+        dm_chunk_law(D, NL, DL, TL, RL, CL, HSL, ch, s, &tab[ch->pp[s]], &q, dt_hist, reach, 1);
     }
 }
 
@@ -653,11 +649,9 @@ DM_INLINE void dm_chunk_single(const int D, const int NL, const int DL, const in
 typedef void (*dm_single_fn)(const dm_kernel_args *a, dm_chunk *ch, uint32_t lanes, uint32_t m,
                              int walls);
 
-/* Particle-particle chunk. APART: laws runs without the entry correction,
- * and dm_chunk_entries() after it (see dm_chunk_laws). */
+/* Particle-particle chunk. */
 DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
-                           const int CL, const int APART, dm_law_fn laws, dm_single_fn single,
-                           dm_kernel_args *a)
+                           const int CL, dm_law_fn laws, dm_single_fn single, dm_kernel_args *a)
 {
     const int S = D + 2 * (D == 3 ? 3 : 1);
     const int HSL = dm_law_hist_size(NL, DL, TL, RL, D), HSP = dm_law_tangential_size(TL, D);
@@ -738,8 +732,7 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
         const dm_laws l = {NL, DL, TL, RL, CL};
         dm_kins[D == 3][0][SPIN][RL](a, &ch, lanes);
         laws(&ch, lanes, tab, dt_hist, reach, l);
-        if (APART)
-            dm_chunk_entries(D, NL, DL, TL, RL, &ch, m, hist, HS, tab, dt_hist, reach);
+        dm_chunk_entries(D, NL, DL, TL, RL, CL, &ch, m, hist, HS, tab, dt_hist, reach);
     }
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
@@ -760,12 +753,10 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
 }
 
 /* Particle-wall chunk: the contact geometry of its candidates (into w->wg),
- * then the law (APART: as dm_pp_chunk's). The walls' forces, torques and
- * energies are summed afterwards (forces.c), from out and the geometry's
- * lost. */
+ * then the law. The walls' forces, torques and energies are summed
+ * afterwards (forces.c), from out and the geometry's lost. */
 DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
-                           const int CL, const int APART, dm_law_fn laws, dm_single_fn single,
-                           dm_kernel_args *a)
+                           const int CL, dm_law_fn laws, dm_single_fn single, dm_kernel_args *a)
 {
     const int S = D + 2 * (D == 3 ? 3 : 1);
     const int HSL = dm_law_hist_size(NL, DL, TL, RL, D), HSP = dm_law_tangential_size(TL, D);
@@ -837,8 +828,7 @@ DM_INLINE void dm_pw_chunk(const int D, const int NL, const int DL, const int TL
         const dm_laws l = {NL, DL, TL, RL, CL};
         dm_kins[D == 3][1][SPIN][RL](a, &ch, lanes);
         laws(&ch, lanes, tab, dt_hist, reach, l);
-        if (APART)
-            dm_chunk_entries(D, NL, DL, TL, RL, &ch, m, hist, HS, tab, dt_hist, reach);
+        dm_chunk_entries(D, NL, DL, TL, RL, CL, &ch, m, hist, HS, tab, dt_hist, reach);
     }
     for (uint32_t s = 0; s < m; s++) {
         const uint32_t k = ch.k[s];
@@ -867,17 +857,15 @@ typedef struct dm_kernel_slice {
                                                 double reach, dm_laws l)                          \
     {                                                                                             \
         (void)l;                                                                                  \
-        dm_chunk_laws(D, NL, DL, TL, RL, 0, 0, ch, lanes, tab, dt_hist, reach);                   \
+        dm_chunk_laws(D, NL, DL, TL, RL, 0, ch, lanes, tab, dt_hist, reach);                      \
     }                                                                                             \
     DM_VECTOR_CLONES static void dm_pp_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
-        dm_pp_chunk(D, NL, DL, TL, RL, 0, dm_law_entry(DL),                                     \
-                    dm_laws_##D##_##NL##_##DL##_##TL##_##RL, NULL, a);                            \
+        dm_pp_chunk(D, NL, DL, TL, RL, 0, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, NULL, a);      \
     }                                                                                             \
     DM_VECTOR_CLONES static void dm_pw_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)         \
     {                                                                                             \
-        dm_pw_chunk(D, NL, DL, TL, RL, 0, dm_law_entry(DL),                                     \
-                    dm_laws_##D##_##NL##_##DL##_##TL##_##RL, NULL, a);                            \
+        dm_pw_chunk(D, NL, DL, TL, RL, 0, dm_laws_##D##_##NL##_##DL##_##TL##_##RL, NULL, a);      \
     }
 #define DM_PP_ENTRY(D, NL, DL, TL, RL) dm_pp_##D##_##NL##_##DL##_##TL##_##RL,
 #define DM_PW_ENTRY(D, NL, DL, TL, RL) dm_pw_##D##_##NL##_##DL##_##TL##_##RL,
@@ -908,11 +896,11 @@ typedef struct dm_kernel_slice {
     }                                                                                             \
     DM_VECTOR_CLONES static void dm_ppf_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)        \
     {                                                                                             \
-        dm_pp_chunk(D, NL, DL, TL, RL, 0, 0, NULL, dm_single_##D##_##NL##_##DL##_##TL##_##RL, a); \
+        dm_pp_chunk(D, NL, DL, TL, RL, 0, NULL, dm_single_##D##_##NL##_##DL##_##TL##_##RL, a);    \
     }                                                                                             \
     DM_VECTOR_CLONES static void dm_pwf_##D##_##NL##_##DL##_##TL##_##RL(dm_kernel_args *a)        \
     {                                                                                             \
-        dm_pw_chunk(D, NL, DL, TL, RL, 0, 0, NULL, dm_single_##D##_##NL##_##DL##_##TL##_##RL, a); \
+        dm_pw_chunk(D, NL, DL, TL, RL, 0, NULL, dm_single_##D##_##NL##_##DL##_##TL##_##RL, a);    \
     }
 #define DM_PPF_ENTRY(D, NL, DL, TL, RL) dm_ppf_##D##_##NL##_##DL##_##TL##_##RL,
 #define DM_PWF_ENTRY(D, NL, DL, TL, RL) dm_pwf_##D##_##NL##_##DL##_##TL##_##RL,

@@ -317,7 +317,6 @@ DM_INLINE void DM_LAW_NAME(const int D, const int NL, const int DL, const int TL
     }
 }
 
-
 /* A law's output o as the pair's loads: the force on b, fn n + f_t, and the
  * torques on a and b (W components), the rolling torque and the lever arms
  * ai, aj (of a and b) times n × f_t (2D: its z component). */

@@ -9,20 +9,20 @@
     static void laws_##D(dm_chunk *ch, uint32_t lanes, const dm_pairparam *tab, double dt_hist,  \
                          double reach, dm_laws l)                                                 \
     {                                                                                             \
-        dm_chunk_laws(D, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, 1, ch, lanes,  \
+        dm_chunk_laws(D, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, ch, lanes,     \
                       tab, dt_hist, reach);                                                       \
     }                                                                                             \
     static void pp_##D(dm_kernel_args *a)                                                         \
     {                                                                                             \
         const dm_laws l = dm_kernel_laws(a->b->kernel);                                           \
-        dm_pp_chunk(D, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, 0, laws_##D,     \
-                    NULL, a);                                                                     \
+        dm_pp_chunk(D, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, laws_##D, NULL,  \
+                    a);                                                                           \
     }                                                                                             \
     static void pw_##D(dm_kernel_args *a)                                                         \
     {                                                                                             \
         const dm_laws l = dm_kernel_laws(a->b->kernel);                                           \
-        dm_pw_chunk(D, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, 0, laws_##D,     \
-                    NULL, a);                                                                     \
+        dm_pw_chunk(D, l.normal, l.damping, l.tangential, l.rolling, l.cohesion, laws_##D, NULL,  \
+                    a);                                                                           \
     }
 
 GENERIC_KERNELS(2)
