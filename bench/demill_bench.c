@@ -13,7 +13,9 @@
  * 1; the lattice of the spheres does not hold them), the rate counted per
  * member sphere (particles = members).
  *
- * Energy tracking is off, as the peers do not tally energy. --dump-packing
+ * Energy tracking is off, as the peers do not tally energy, and so is
+ * orientation tracking, as the peers do not turn the orientations of
+ * spheres (--set world.orientation_tracking=1 turns it on). --dump-packing
  * writes the initial positions (x y z r per line) for the peers' inputs.
  * --set NAME=VALUE changes a parameter of the registry (demill_param_name())
  * of the world, the steel material or the steel-steel pair, to measure what
@@ -249,6 +251,7 @@ int main(int argc, char **argv)
         fail(w, demill_wall_load_stl(w, steel, mesh, 1.0, NULL, &wall), "mesh");
         fail(w, demill_drum_attach_wall(w, drum, wall, DEMILL_DRUM_PART_SHELL), "mesh");
     }
+    fail(w, demill_world_set(w, DEMILL_WORLD_ORIENTATION_TRACKING, 0), "orientation tracking");
     for (int k = 0; k < nsets; k++)
         set_param(w, steel, sets[k]);
     fail(w, demill_world_set(w, DEMILL_WORLD_THREADS, (double)threads), "threads");

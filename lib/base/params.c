@@ -34,6 +34,7 @@ static const param_info params[] = {
     {DEMILL_WORLD_WATCHDOG_OVERLAP, "world.watchdog_overlap", "1", 0, 1, 0.25, OPEN_LO},
     {DEMILL_WORLD_WATCHDOG_INTERVAL, "world.watchdog_interval", "1", 1, 1e6, 500, WHOLE},
     {DEMILL_WORLD_SINGLE_PRECISION, "world.single_precision", "bool", 0, 1, 0, WHOLE},
+    {DEMILL_WORLD_ORIENTATION_TRACKING, "world.orientation_tracking", "bool", 0, 1, 1, WHOLE},
     {DEMILL_WORLD_DIMENSION, "world.dimension", "1", 2, 3, 3, WHOLE | READ_ONLY},
     {DEMILL_WORLD_STEP_COUNT, "world.step_count", "1", 0, 1.8e19, 0, WHOLE | READ_ONLY},
     {DEMILL_WORLD_PARTICLE_COUNT, "world.particle_count", "1", 0, 4.3e9, 0, WHOLE | READ_ONLY},

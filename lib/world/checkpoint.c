@@ -90,7 +90,7 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
 /* ---- the bytes of a state --------------------------------------------------- */
 
 #define CK_MAGIC "DEMILLCK"
-#define CK_FORMAT 6u          /* the format this library writes and the newest it reads;
+#define CK_FORMAT 7u          /* the format this library writes and the newest it reads;
                                  2 adds the impacts on an ore to the drum's spectrum,
                                  3 a material per part of the drum, the walls'
                                  meshes (section MESH), the feeds and outlets (FLOW),
@@ -103,7 +103,8 @@ DEMILL_API void demill_snapshot_free(demill_snapshot *snap)
                                  (MATS) and the number of contact lists (CONT);
                                  5 the 3D particles' orientations (ORNT), the
                                  clump templates and the clumps (CLMP); 6 the
-                                 kernels' precision (WRLD) */
+                                 kernels' precision (WRLD); 7 whether the
+                                 orientations are tracked (WRLD) */
 #define CK_BYTE_ORDER 0x01020304u
 #define CK_HEADER 32u
 
@@ -759,6 +760,10 @@ static void transfer(io *s, demill_world *w)
     io_u32(s, &w->watch_interval, 1);
     if (s->format >= 6)
         io_bool(s, &w->single);
+    if (s->format >= 7)
+        io_bool(s, &w->orient);
+    else /* earlier libraries always tracked them */
+        w->orient = true;
     io_bool(s, &w->nlist_valid);
     io_bool(s, &w->forces_valid);
     io_bool(s, &w->events);

@@ -42,6 +42,7 @@ DEMILL_API demill_status demill_world_create(int32_t dimension, demill_world **o
     w->watch_overlap = param_default(DEMILL_WORLD_WATCHDOG_OVERLAP);
     w->watch_interval = (uint32_t)param_default(DEMILL_WORLD_WATCHDOG_INTERVAL);
     w->single = param_default(DEMILL_WORLD_SINGLE_PRECISION) != 0.0;
+    w->orient = param_default(DEMILL_WORLD_ORIENTATION_TRACKING) != 0.0;
     w->ptab_dirty = true;
     dm_clist_clear(w);
     *out = w;
@@ -129,6 +130,7 @@ DEMILL_API demill_status demill_world_set(demill_world *w, int32_t key, double v
     }
     case DEMILL_WORLD_ENERGY_TRACKING: w->energy_tracking = (int)value; break;
     case DEMILL_WORLD_SINGLE_PRECISION: w->single = value != 0.0; break;
+    case DEMILL_WORLD_ORIENTATION_TRACKING: w->orient = value != 0.0; break;
     case DEMILL_WORLD_THREADS: /* changes no result */
         if ((s = set_threads(w, (int)value)))
             return s;
@@ -189,6 +191,7 @@ DEMILL_API demill_status demill_world_get(const demill_world *cw, int32_t key, d
     case DEMILL_WORLD_WATCHDOG_OVERLAP: *value = w->watch_overlap; break;
     case DEMILL_WORLD_WATCHDOG_INTERVAL: *value = w->watch_interval; break;
     case DEMILL_WORLD_SINGLE_PRECISION: *value = w->single; break;
+    case DEMILL_WORLD_ORIENTATION_TRACKING: *value = w->orient; break;
     case DEMILL_WORLD_DIMENSION: *value = w->dim; break;
     case DEMILL_WORLD_STEP_COUNT: *value = (double)w->base.steps; break;
     case DEMILL_WORLD_PARTICLE_COUNT: *value = w->p.n; break;

@@ -83,6 +83,7 @@ class World(Closable, Keyed):
     watchdog_overlap = Param(WorldKey.WATCHDOG_OVERLAP)
     watchdog_interval = Param(WorldKey.WATCHDOG_INTERVAL, int)
     single_precision = Param(WorldKey.SINGLE_PRECISION, _flag)
+    orientation_tracking = Param(WorldKey.ORIENTATION_TRACKING, _flag)
     dimension = Param(WorldKey.DIMENSION, int)
     step_count = Param(WorldKey.STEP_COUNT, int)
     particle_count = Param(WorldKey.PARTICLE_COUNT, int)

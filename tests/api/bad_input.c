@@ -687,6 +687,7 @@ static void bad_world_set(scene *sc)
         {DEMILL_WORLD_WATCHDOG_INTERVAL, 0},   {DEMILL_WORLD_WATCHDOG_INTERVAL, 1.5},
         {DEMILL_WORLD_WATCHDOG_INTERVAL, 2e6},
         {DEMILL_WORLD_SINGLE_PRECISION, 2},    {DEMILL_WORLD_SINGLE_PRECISION, 0.5},
+        {DEMILL_WORLD_ORIENTATION_TRACKING, 2}, {DEMILL_WORLD_ORIENTATION_TRACKING, -1},
     };
     for (size_t k = 0; k < sizeof invalid / sizeof invalid[0]; k++) {
         ctx(sc, "world_set key %d = %g", (int)invalid[k].key, invalid[k].v);
@@ -723,7 +724,7 @@ static void bad_world_set(scene *sc)
         BAD(sc, DEMILL_ERR_UNKNOWN_KEY,
             demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrators[k]), "world.integrator");
     }
-    static const int32_t unknown[] = {0,   1,   99,  116, 120,  149, 159, 199,
+    static const int32_t unknown[] = {0,   1,   99,  117, 120,  149, 159, 199,
                                       200, 250, 300, 399, -1, 2147483647, -2147483647 - 1};
     for (size_t k = 0; k < sizeof unknown / sizeof unknown[0]; k++) {
         char num[16];

@@ -467,7 +467,7 @@ END_TEST
 
 START_TEST(checkpoint_continues_bitwise)
 {
-    /* the drum of clumps after 300 steps, saved to a checkpoint (format 6)
+    /* the drum of clumps after 300 steps, saved to a checkpoint (format 7)
      * that loads into a world whose own checkpoint is the same bytes; the
      * checkpoint and a snapshot each loaded into a new world and stepped
      * 500 steps: every position, velocity and clump field bitwise the
@@ -477,7 +477,7 @@ START_TEST(checkpoint_continues_bitwise)
     DM_OK(w, demill_world_step(w, 300));
     uint32_t format;
     demill_world *v = dm_test_reloaded(w, &format);
-    ck_assert_uint_eq(format, 6);
+    ck_assert_uint_eq(format, 7);
     size_t na, nb;
     unsigned char *a = dm_test_save(w, &na), *b = dm_test_save(v, &nb);
     ck_assert_uint_eq(na, nb);

@@ -227,6 +227,114 @@ START_TEST(orientation_carried_by_checkpoint_and_snapshot)
 }
 END_TEST
 
+/* World.orientation_tracking (DEMILL_WORLD_ORIENTATION_TRACKING) off: a
+ * sphere's orientation enters no force, so three balls thrown spinning onto
+ * a rough floor, with a clump of the racket's three spheres beside them,
+ * move bitwise as they do with it on; the balls keep the orientation they
+ * were given, where with it on friction turns them; the clump turns either
+ * way, the same to the bit; and a checkpoint and a snapshot keep the
+ * setting. Each integrator (the iterative refinement without the clump,
+ * which it does not integrate). */
+static const double racket_c[9] = {0, 0, 0, 0.03, 0, 0, 0, 0.022, 0};
+static const double racket_r[3] = {0.01, 0.01, 0.008};
+
+static demill_world *rough_floor(int i, int tracking, demill_id *clump)
+{
+    demill_id mat, floor, ids[3], tmpl;
+    demill_world *w = dm_test_world(3, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, &mat);
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_GRAVITY_Y, -9.81));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, 1e-5));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrators[i]));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_ORIENTATION_TRACKING, tracking));
+    DM_OK(w, demill_pair_set(w, mat, mat, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN));
+    DM_OK(w, demill_pair_set(w, mat, mat, DEMILL_PAIR_FRICTION, 0.5));
+    const double p[3] = {0, 0, 0}, nrm[3] = {0, 1, 0};
+    DM_OK(w, demill_wall_add_plane(w, mat, p, nrm, &floor));
+    const double x[9] = {0, 0.0101, 0, 0.05, 0.012, 0, -0.05, 0.0105, 0.02};
+    const double r[3] = {0.01, 0.01, 0.01}, v[9] = {0.3, 0, 0, -0.2, 0, 0.1, 0, -0.1, 0.2};
+    DM_OK(w, demill_particles_add(w, mat, 3, x, r, v, 0, ids));
+    const double om[9] = {0, 0, 40, 20, 0, -30, 0, 0, 0};
+    DM_OK(w, demill_particles_write(w, DEMILL_PARTICLE_ANGULAR_VELOCITY, om, 3));
+    const double q0[12] = {0.5, 0.5, -0.5, 0.5, 0.6, 0, 0.8, 0, 0, 0, 0, 1};
+    DM_OK(w, demill_particles_write(w, DEMILL_PARTICLE_ORIENTATION, q0, 3));
+    if (integrators[i] == DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT)
+        return w; /* which integrates no clumps */
+    DM_OK(w, demill_clump_template_add(w, mat, 3, racket_c, racket_r, &tmpl));
+    const double at[3] = {0.1, 0.05, 0}, spin[3] = {3, -5, 8};
+    DM_OK(w, demill_clump_add(w, tmpl, at, NULL, clump));
+    DM_OK(w, demill_clump_set(w, *clump, DEMILL_CLUMP_ANGULAR_VELOCITY, spin));
+    return w;
+}
+
+/* The checkpoint and snapshot copies of a world with tracking off keep it. */
+static void copy_keeps_tracking_off(demill_world *w, demill_world *copy, int way, void *ctx)
+{
+    double tracking = -1.0;
+    DM_OK(copy, demill_world_get(copy, DEMILL_WORLD_ORIENTATION_TRACKING, &tracking));
+    ck_assert_msg(tracking == 0.0, "%s: world.orientation_tracking = %g",
+                  way ? "snapshot" : "checkpoint", tracking);
+    (void)w, (void)ctx;
+}
+
+START_TEST(tracking_off_changes_no_motion)
+{
+    demill_id c_on, c_off;
+    demill_world *on = rough_floor(_i, 1, &c_on), *off = rough_floor(_i, 0, &c_off);
+    double q0[24], q_on[24], q_off[24], om_on[18], om_off[18], cq_on[4], cq_off[4];
+    size_t n;
+    DM_OK(off, demill_particles_read(off, DEMILL_PARTICLE_ORIENTATION, q0, 6, &n));
+    const int clumps = integrators[_i] != DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT;
+    ck_assert_uint_eq(n, clumps ? 6 : 3); /* 3 balls, the clump's 3 members */
+    DM_OK(on, demill_world_step(on, 3000));
+    DM_OK(off, demill_world_step(off, 3000));
+    double *s_on = dm_test_state(on, &n), *s_off = dm_test_state(off, &n);
+    ck_assert_msg(!memcmp(s_on, s_off, 6 * n * sizeof *s_on), "positions or velocities differ");
+    DM_OK(on, demill_particles_read(on, DEMILL_PARTICLE_ANGULAR_VELOCITY, om_on, 6, NULL));
+    DM_OK(off, demill_particles_read(off, DEMILL_PARTICLE_ANGULAR_VELOCITY, om_off, 6, NULL));
+    ck_assert_msg(!memcmp(om_on, om_off, 3 * n * sizeof *om_on), "angular velocities differ");
+    DM_OK(on, demill_particles_read(on, DEMILL_PARTICLE_ORIENTATION, q_on, 6, NULL));
+    DM_OK(off, demill_particles_read(off, DEMILL_PARTICLE_ORIENTATION, q_off, 6, NULL));
+    for (int b = 0; b < 3; b++) {
+        double dot = 0.0;
+        for (int c = 0; c < 4; c++)
+            dot += q_on[4 * b + c] * q0[4 * b + c];
+        ck_assert_msg(fabs(dot) < 0.99, "ball %d did not turn with tracking on (q·q0 = %g)", b,
+                      dot);
+    }
+    ck_assert_msg(!memcmp(q_off, q0, 12 * sizeof *q0), "a ball turned with tracking off");
+    /* the clump, and its members, turned the same either way */
+    if (clumps) {
+        ck_assert_msg(!memcmp(q_on + 12, q_off + 12, 12 * sizeof *q_on), "the members differ");
+        DM_OK(on, demill_clump_get(on, c_on, DEMILL_CLUMP_ORIENTATION, cq_on));
+        DM_OK(off, demill_clump_get(off, c_off, DEMILL_CLUMP_ORIENTATION, cq_off));
+        ck_assert_msg(!memcmp(cq_on, cq_off, sizeof cq_on), "the clump's orientation differs");
+        ck_assert_msg(fabs(cq_off[0]) < 0.99, "the clump did not turn: q = (%g, %g, %g, %g)",
+                      cq_off[0], cq_off[1], cq_off[2], cq_off[3]);
+    }
+    dm_test_copies_run_on(off, 500, copy_keeps_tracking_off, NULL);
+    free(s_on);
+    free(s_off);
+    demill_world_destroy(on);
+    demill_world_destroy(off);
+}
+END_TEST
+
+/* 2D: a disc's angle stays as set with tracking off, spinning or not. */
+START_TEST(tracking_off_keeps_disc_angle)
+{
+    demill_id ball;
+    demill_world *w = one_ball(_i, 2, 1e-4, &ball);
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_ORIENTATION_TRACKING, 0));
+    const double om[3] = {0, 0, 30}, theta = 0.25;
+    DM_OK(w, demill_particle_set(w, ball, DEMILL_PARTICLE_ANGULAR_VELOCITY, om));
+    DM_OK(w, demill_particle_set(w, ball, DEMILL_PARTICLE_ANGLE, &theta));
+    DM_OK(w, demill_world_step(w, 1000));
+    ck_assert_double_eq(dm_test_get(w, ball, DEMILL_PARTICLE_ANGLE, 0), theta);
+    ck_assert_double_eq(dm_test_get(w, ball, DEMILL_PARTICLE_ANGULAR_VELOCITY, 2), 30.0);
+    demill_world_destroy(w);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("orientation");
@@ -237,6 +345,8 @@ int main(void)
     tcase_add_test(tc, orientation_set_get_round_trip);
     tcase_add_test(tc, orientation_bad_values_refused);
     tcase_add_loop_test(tc, orientation_carried_by_checkpoint_and_snapshot, 0, 3);
+    tcase_add_loop_test(tc, tracking_off_changes_no_motion, 0, 3);
+    tcase_add_loop_test(tc, tracking_off_keeps_disc_angle, 0, 3);
     suite_add_tcase(s, tc);
     return dm_test_run(s);
 }

@@ -57,7 +57,7 @@ DM_INLINE double from_bits(uint64_t u)
  * used them, the start of the next force evaluation's sums
  * (DM_FORCES_PRESET), while the block is in cache. */
 typedef struct step_args {
-    double dt, h, hth, g[3];
+    double dt, h, hth, g[3]; /* hth: the time the orientations turn by (0: they do not) */
     int kick, rotation, finish, gravity; /* rotation: the loops also spin */
     uint64_t worst[DM_MAX_THREADS];
 } step_args;
@@ -272,9 +272,9 @@ DM_INLINE uint64_t block(const int D, const int kind, dm_particles *P, const ste
         (kind != VERLET ? spin_flat00
          : a->kick      ? spin_flat11
                         : spin_flat01)(P->w + w0, P->wp + w0, P->t + w0, ii, a->h, W * n);
-        if (D == 2)
+        if (a->hth != 0.0 && D == 2)
             angle_flat(P->theta + i0, P->w + i0, a->hth, n);
-        else if (a->hth != 0.0)
+        if (a->hth != 0.0 && D == 3)
             turn(P->q[0], P->q[1], P->q[2], P->q[3], P->w, a->hth, i0, i1);
     }
     if (a->gravity)
@@ -412,7 +412,8 @@ static demill_status finish_step(demill_world *w, double max_disp2, const double
  * forces after it (dm_clumps_drift). */
 static step_args step_args_of(const demill_world *w, double h)
 {
-    return (step_args){.dt = w->dt, .h = h, .hth = w->dt, .g = {w->g[0], w->g[1], w->g[2]},
+    return (step_args){.dt = w->dt, .h = h, .hth = w->orient ? w->dt : 0.0,
+                       .g = {w->g[0], w->g[1], w->g[2]},
                        .rotation = w->rotation, .gravity = !w->live_clumps};
 }
 

@@ -115,8 +115,9 @@ void dm_refine_free(demill_world *w)
 }
 
 /* Trades the start-of-step arrays with the world's: afterwards the refinement
- * holds x_n, v_n, F_n (and ω_n, T_n, θ_n or q_n) and the world's arrays are free for
- * the iterates. Calling it again trades them back. */
+ * holds x_n, v_n, F_n (and ω_n, T_n, θ_n or q_n when the orientations are
+ * tracked) and the world's arrays are free for the iterates. Calling it again
+ * trades them back. */
 static void trade(demill_world *w)
 {
     dm_particles *P = &w->p;
@@ -127,9 +128,9 @@ static void trade(demill_world *w)
     if (w->rotation) {
         swap(&P->w, &R->wn);
         swap(&P->t, &R->tn);
-        if (w->dim == 2)
+        if (w->orient && w->dim == 2)
             swap(&P->theta, &R->thn);
-        else
+        if (w->orient && w->dim == 3)
             for (int c = 0; c < 4; c++)
                 swap(&P->q[c], &R->qn[c]);
     }
@@ -265,19 +266,20 @@ DM_INLINE void predict(const int D, demill_world *w, refine_args *a, int t, uint
     double *restrict om = P->w, *restrict wp = P->wp, *restrict theta = P->theta;
     const double *restrict wn = R->wn, *restrict tn = R->tn, *restrict tq = P->t;
     const double *restrict thn = R->thn, *restrict ii = P->iinv;
+    const int orient = w->orient; /* else θ or q stay as they are (trade()) */
     for (uint32_t i = i0; i < i1; i++) {
         double phi[3]; /* 3D: the rotation vector of the step, Δt times the mean ω */
         for (int c = 0; c < W; c++) {
             const size_t q = (size_t)W * i + c;
             const double an = tn[q] * ii[i], db = jerk ? (tq[q] - tn[q]) * ii[i] : 0.0;
             double th;
-            taylor(dt, D == 2 ? thn[i] : 0.0, wn[q], an, db, &th, &om[q], &wp[q]);
-            if (D == 2)
+            taylor(dt, orient && D == 2 ? thn[i] : 0.0, wn[q], an, db, &th, &om[q], &wp[q]);
+            if (orient && D == 2)
                 theta[i] = th;
             else
                 phi[c] = th;
         }
-        if (D == 3) {
+        if (orient && D == 3) {
             double q[4];
             dm_quat_get(R->qn, i, q);
             dm_quat_turn(q, phi, 1.0);

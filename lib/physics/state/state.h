@@ -632,6 +632,8 @@ struct demill_world {
                                 interact: the neighbour search reaches that far more */
     bool generic_kernels;    /* tests only: every combination runs the generic kernel */
     bool single;             /* DEMILL_WORLD_SINGLE_PRECISION: the fast kernels in float */
+    bool orient;             /* DEMILL_WORLD_ORIENTATION_TRACKING: the steps turn the
+                                free particles' orientations */
     bool local_damping;      /* some particle's material has local damping */
 
     /* particles */
