@@ -84,11 +84,13 @@ int dm_grid_reserve(dm_grid *g, uint32_t n)
 static int carry_collect(demill_world *w)
 {
     dm_grid *g = &w->grid;
+    size_t off = 0; /* where the next history goes in g->ch */
     g->nc = 0;
     for (int side = 0; side < 2; side++) {
         const dm_clist *l = side ? &w->pw : &w->pp;
         for (int k = 0; k < w->nkern; k++) {
             const dm_bucket *b = &l->b[k];
+            g->chs[k + side * DM_KERNELS] = (uint8_t)b->hs;
             for (uint32_t p = 0; p < b->n; p++) {
                 if (!b->on[p])
                     continue;
@@ -107,12 +109,12 @@ static int carry_collect(demill_world *w)
                 g->cj[g->nc] = b->j[p];
                 g->ct[g->nc] = side ? b->t[p] : 0;
                 g->ck[g->nc] = (uint16_t)(k + side * DM_KERNELS);
-                /* a longer new layout gets zeros; a loop of fixed length
-                 * rather than memset and memcpy, whose calls (rep stos)
-                 * cost more than the 128 bytes they move */
-                double *ch = g->ch + DM_MAX_HIST * (size_t)g->nc;
-                for (int c = 0; c < DM_MAX_HIST; c++)
-                    ch[c] = c < b->hs ? h[c] : 0.0;
+                /* packed, so that the restore reads as few cache lines as
+                 * the lists hold; a loop rather than memcpy, whose call
+                 * costs more than the few doubles it moves */
+                for (int c = 0; c < b->hs; c++)
+                    g->ch[off + c] = h[c];
+                off += (size_t)b->hs;
                 g->nc++;
             }
         }
@@ -120,9 +122,10 @@ static int carry_collect(demill_world *w)
     return 0;
 }
 
-/* Puts carried histories back into the new lists. Pairs are listed in
- * increasing i, so a row index finds (i, j) among i's few pairs; a
- * particle-wall contact matches on the mesh element too. */
+/* Puts carried histories back into the new lists (a longer new layout
+ * keeps the zeros of its new slots). Pairs are listed in increasing i, so a
+ * row index finds (i, j) among i's few pairs; a particle-wall contact
+ * matches on the mesh element too. */
 static void carry_restore(demill_world *w)
 {
     dm_grid *g = &w->grid;
@@ -142,13 +145,15 @@ static void carry_restore(demill_world *w)
             double flip[DM_MAX_HIST]; /* on each slot when the pair's order flips */
             for (int d = 0; d < b->hs; d++)
                 flip[d] = dm_kernel_flip(k, w->dim, d);
+            const int hs = b->hs < g->chs[key] ? b->hs : g->chs[key];
+            size_t off = 0;
             uint32_t p = 0;
             for (uint32_t i = 0; i <= n; i++) {
                 g->row[i] = p;
                 while (p < b->n && b->i[p] == i)
                     p++;
             }
-            for (uint32_t c = 0; c < g->nc; c++) {
+            for (uint32_t c = 0; c < g->nc; off += g->chs[g->ck[c]], c++) {
                 if (g->ck[c] != key)
                     continue;
                 uint32_t i = g->inv[g->ci[c]], j = side ? g->cj[c] : g->inv[g->cj[c]];
@@ -161,9 +166,9 @@ static void carry_restore(demill_world *w)
                 for (uint32_t q = g->row[i]; q < g->row[i + 1]; q++)
                     if (b->j[q] == j && (!side || b->t[q] == g->ct[c])) {
                         b->on[q] = 1;
-                        for (int d = 0; d < b->hs; d++)
-                            b->hist[(size_t)b->hs * q + d] =
-                                (swap ? flip[d] : 1.0) * g->ch[DM_MAX_HIST * (size_t)c + d];
+                        double *h = b->hist + (size_t)b->hs * q;
+                        for (int d = 0; d < hs; d++)
+                            h[d] = (swap ? flip[d] : 1.0) * g->ch[off + d];
                         break;
                     }
             }

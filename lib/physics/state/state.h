@@ -337,7 +337,9 @@ typedef struct dm_grid {
     /* contacts whose history is carried over a build */
     uint32_t *ci, *cj, *ct;   /* ct: mesh element (particle-wall), else 0 */
     uint16_t *ck;             /* kernel (pp) or kernel + DM_KERNELS (pw) */
-    double *ch;               /* DM_MAX_HIST doubles each */
+    double *ch;               /* their histories one after the other, room for DM_MAX_HIST
+                                 doubles each */
+    uint8_t chs[2 * DM_KERNELS]; /* the history size of each kernel's contacts in ch */
     uint32_t nc, ccap;
     double lo[3], hi[3];      /* particle bounding box at the last build */
     struct dm_pairbuf *pb;    /* pairs found by each range of the search */
