@@ -204,23 +204,31 @@ static void same_orientations(demill_world *w, demill_world *copy, int way, void
     (void)ctx;
 }
 
-START_TEST(orientation_carried_by_checkpoint_and_snapshot)
+/* Three balls of material *mat thrown spinning onto a rough floor, with
+ * gravity, stepped by integrator index i. */
+static demill_world *balls_on_floor(int i, demill_id *mat)
 {
-    /* balls thrown spinning on a rough floor, with gravity */
-    demill_id mat, floor, ids[3];
-    demill_world *w = dm_test_world(3, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, &mat);
+    demill_id floor, ids[3];
+    demill_world *w = dm_test_world(3, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, mat);
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_GRAVITY_Y, -9.81));
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, 1e-5));
-    DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrators[_i]));
-    DM_OK(w, demill_pair_set(w, mat, mat, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN));
-    DM_OK(w, demill_pair_set(w, mat, mat, DEMILL_PAIR_FRICTION, 0.5));
+    DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrators[i]));
+    DM_OK(w, demill_pair_set(w, *mat, *mat, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN));
+    DM_OK(w, demill_pair_set(w, *mat, *mat, DEMILL_PAIR_FRICTION, 0.5));
     const double p[3] = {0, 0, 0}, nrm[3] = {0, 1, 0};
-    DM_OK(w, demill_wall_add_plane(w, mat, p, nrm, &floor));
+    DM_OK(w, demill_wall_add_plane(w, *mat, p, nrm, &floor));
     const double x[9] = {0, 0.0101, 0, 0.05, 0.012, 0, -0.05, 0.0105, 0.02};
     const double r[3] = {0.01, 0.01, 0.01}, v[9] = {0.3, 0, 0, -0.2, 0, 0.1, 0, -0.1, 0.2};
-    DM_OK(w, demill_particles_add(w, mat, 3, x, r, v, 0, ids));
+    DM_OK(w, demill_particles_add(w, *mat, 3, x, r, v, 0, ids));
     const double om[9] = {0, 0, 40, 20, 0, -30, 0, 0, 0};
     DM_OK(w, demill_particles_write(w, DEMILL_PARTICLE_ANGULAR_VELOCITY, om, 3));
+    return w;
+}
+
+START_TEST(orientation_carried_by_checkpoint_and_snapshot)
+{
+    demill_id mat;
+    demill_world *w = balls_on_floor(_i, &mat);
     DM_OK(w, demill_world_step(w, 2000));
     dm_test_copies_run_on(w, 2000, same_orientations, NULL);
     demill_world_destroy(w);
@@ -240,21 +248,9 @@ static const double racket_r[3] = {0.01, 0.01, 0.008};
 
 static demill_world *rough_floor(int i, int tracking, demill_id *clump)
 {
-    demill_id mat, floor, ids[3], tmpl;
-    demill_world *w = dm_test_world(3, DEMILL_NORMAL_HERTZ, DEMILL_DAMPING_RESTITUTION, &mat);
-    DM_OK(w, demill_world_set(w, DEMILL_WORLD_GRAVITY_Y, -9.81));
-    DM_OK(w, demill_world_set(w, DEMILL_WORLD_TIME_STEP, 1e-5));
-    DM_OK(w, demill_world_set(w, DEMILL_WORLD_INTEGRATOR, integrators[i]));
+    demill_id mat, tmpl;
+    demill_world *w = balls_on_floor(i, &mat);
     DM_OK(w, demill_world_set(w, DEMILL_WORLD_ORIENTATION_TRACKING, tracking));
-    DM_OK(w, demill_pair_set(w, mat, mat, DEMILL_PAIR_TANGENTIAL, DEMILL_TANGENTIAL_MINDLIN));
-    DM_OK(w, demill_pair_set(w, mat, mat, DEMILL_PAIR_FRICTION, 0.5));
-    const double p[3] = {0, 0, 0}, nrm[3] = {0, 1, 0};
-    DM_OK(w, demill_wall_add_plane(w, mat, p, nrm, &floor));
-    const double x[9] = {0, 0.0101, 0, 0.05, 0.012, 0, -0.05, 0.0105, 0.02};
-    const double r[3] = {0.01, 0.01, 0.01}, v[9] = {0.3, 0, 0, -0.2, 0, 0.1, 0, -0.1, 0.2};
-    DM_OK(w, demill_particles_add(w, mat, 3, x, r, v, 0, ids));
-    const double om[9] = {0, 0, 40, 20, 0, -30, 0, 0, 0};
-    DM_OK(w, demill_particles_write(w, DEMILL_PARTICLE_ANGULAR_VELOCITY, om, 3));
     const double q0[12] = {0.5, 0.5, -0.5, 0.5, 0.6, 0, 0.8, 0, 0, 0, 0, 1};
     DM_OK(w, demill_particles_write(w, DEMILL_PARTICLE_ORIENTATION, q0, 3));
     if (integrators[i] == DEMILL_INTEGRATOR_ITERATIVE_REFINEMENT)
