@@ -147,8 +147,8 @@ enum {
      *  are. A sphere's or disc's orientation enters no force: contacts depend
      *  on its angular velocity, which is integrated either way, so positions,
      *  velocities and spins are bitwise the same with either setting, and 0
-     *  saves the work of turning them (about 5 % of a step of a 3D drum)
-     *  when nothing reads them. Clumps' orientations, which place their
+     *  saves the work of turning them (about 10 % of a step of the drum3d
+     *  benchmark, docs/shapes.md) when nothing reads them. Clumps' orientations, which place their
      *  members, are always integrated. Snapshots and checkpoints keep the
      *  setting. */
     DEMILL_WORLD_ORIENTATION_TRACKING = 116,
