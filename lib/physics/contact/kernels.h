@@ -90,6 +90,13 @@ DM_INLINE void dm_contact_velocity(const int D, const int SPIN, const double *va
     }
 }
 
+/* Whether two particles whose radii sum to sum and whose centres are
+ * √r2 apart touch: see dm_pp_touch(). */
+DM_INLINE int dm_touches(double sum, double r2)
+{
+    return sum - sqrt(r2) > 0.0;
+}
+
 /* Whether particles i and j touch: whether their overlap, as dm_pp_kin()
  * computes it, r_i + r_j - √|d|², is > 0, as the law requires (law.h) and
  * as a wall's is (dm_pw_chunk). The test on the squares, |d|² < (r_i + r_j)²,
@@ -105,9 +112,8 @@ DM_INLINE int dm_pp_touch(const int D, const dm_particles *P, uint32_t i, uint32
         d[c] = x[D * j + c] - x[D * i + c];
         s += d[c] * d[c];
     }
-    const double sum = P->r[i] + P->r[j];
     *r2 = s;
-    return sum - sqrt(s) > 0.0;
+    return dm_touches(P->r[i] + P->r[j], s);
 }
 
 /* Particle-particle kinematics of a touching pair, from d = x_j - x_i and
@@ -649,6 +655,17 @@ DM_INLINE void dm_chunk_single(const int D, const int NL, const int DL, const in
 typedef void (*dm_single_fn)(const dm_kernel_args *a, dm_chunk *ch, uint32_t lanes, uint32_t m,
                              int walls);
 
+/* The separations x_j - x_i of the candidates k0 .. k1 - 1 of a bucket with
+ * particles bi, bj (k1 - k0 <= DM_CHUNK), component c of candidate k into
+ * d[c][k - k0], and the sums of their radii into sum[k - k0]: the gathers
+ * of the narrow phase, which then tests them (dm_touches()) in a vectorised
+ * loop. This loop is compiled scalar (kinematics.c): emulated vector
+ * gathers of four doubles a particle (the AVX-512 clones extract each
+ * index from a vector and insert each double into one) took more time than
+ * the plain loads and stores (docs/benchmarks.md, Fifth round). */
+void dm_pp_separations(int D, const dm_particles *P, const uint32_t *bi, const uint32_t *bj,
+                       uint32_t k0, uint32_t k1, double (*d)[DM_CHUNK], double *sum);
+
 /* Particle-particle chunk. */
 DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL, const int RL,
                            const int CL, dm_law_fn laws, dm_single_fn single, dm_kernel_args *a)
@@ -675,16 +692,22 @@ DM_INLINE void dm_pp_chunk(const int D, const int NL, const int DL, const int TL
     dm_tally t = {0};
     dm_chunk ch;
 
-    for (uint32_t k = k0; k < k1; k++) {
-        double d[3], r2;
-        uint32_t touch = (uint32_t)dm_pp_touch(D, P, bi[k], bj[k], d, &r2);
+    /* the narrow phase: the separations and sums of radii into the slots of
+     * the kinematics (n, delta), which hold nothing yet, then the test */
+    dm_pp_separations(D, P, bi, bj, k0, k1, ch.n, ch.delta);
+    for (uint32_t s = 0; s < k1 - k0; s++) {
+        double r2 = 0.0;
+        for (int c = 0; c < D; c++)
+            r2 += ch.n[c][s] * ch.n[c][s];
+        uint32_t touch = (uint32_t)dm_touches(ch.delta[s], r2);
         if (CL != DEMILL_COHESION_NONE) { /* a contact that exists reaches further */
-            const double ri = P->r[bi[k]], rj = P->r[bj[k]], sum = ri + rj;
-            const double far = sum + dm_law_range(CL, &tab[mat[bi[k]] * nm + mat[bj[k]]],
-                                                  ri * rj / sum);
+            const uint32_t k = k0 + s;
+            const double ri = P->r[bi[k]], rj = P->r[bj[k]];
+            const double far = ch.delta[s] + dm_law_range(CL, &tab[mat[bi[k]] * nm + mat[bj[k]]],
+                                                          ri * rj / ch.delta[s]);
             touch |= on[k] & (r2 < far * far);
         }
-        ch.touch[k - k0] = touch;
+        ch.touch[s] = touch;
     }
     uint32_t m = 0, listed = 0;
     uint32_t *restrict list = w->res.list + b->base + k0;

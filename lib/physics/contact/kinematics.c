@@ -6,6 +6,35 @@
  * kinematics into a float chunk. */
 #include "physics/contact/kernels.h"
 
+/* dm_pp_separations() for dimension D. */
+DM_INLINE void pp_separations(const int D, const dm_particles *P, const uint32_t *restrict bi,
+                              const uint32_t *restrict bj, uint32_t k0, uint32_t k1,
+                              double (*restrict d)[DM_CHUNK], double *restrict sum)
+{
+    const double *restrict x = P->x, *restrict r = P->r;
+    for (uint32_t k = k0; k < k1; k++) {
+        const uint32_t i = bi[k], j = bj[k];
+        for (int c = 0; c < D; c++)
+            d[c][k - k0] = x[D * j + c] - x[D * i + c];
+        sum[k - k0] = r[i] + r[j];
+    }
+}
+
+/* Scalar (kernels.h says why): GCC's vectoriser is off in this function;
+ * clang, which ignores the attribute, may vectorise it, with the same
+ * results. */
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((optimize("no-tree-vectorize")))
+#endif
+void dm_pp_separations(int D, const dm_particles *P, const uint32_t *bi, const uint32_t *bj,
+                       uint32_t k0, uint32_t k1, double (*d)[DM_CHUNK], double *sum)
+{
+    if (D == 3)
+        pp_separations(3, P, bi, bj, k0, k1, d, sum);
+    else
+        pp_separations(2, P, bi, bj, k0, k1, d, sum);
+}
+
 /* Particle-particle pairs: the separation again (the narrow phase kept only
  * whether they touch), then the kinematics of the chunk's pairs ks, into
  * the chunk ch or (F: the single-precision kernels') rounded into the float
