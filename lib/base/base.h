@@ -24,6 +24,18 @@
 #define DM_VECTOR_CLONES
 #endif
 
+/* A function whose loops GCC must not vectorise: loops that read a few
+ * doubles of each of many particles, through an index array or with a
+ * stride, whose vectorised form (no gather instruction under GCC's generic
+ * tuning: each index extracted from a vector, each double inserted into
+ * one) measured slower than plain loads (docs/benchmarks.md, Fifth round).
+ * Empty under clang, which may vectorise them, with the same results. */
+#if defined(__GNUC__) && !defined(__clang__)
+#define DM_SCALAR_LOOPS __attribute__((optimize("no-tree-vectorize")))
+#else
+#define DM_SCALAR_LOOPS
+#endif
+
 #define DM_WORLD_MAGIC 0x64656d696c6cu /* "demill" */
 
 /* What the base layer keeps for a world, at its start (struct demill_world

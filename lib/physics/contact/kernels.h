@@ -659,10 +659,9 @@ typedef void (*dm_single_fn)(const dm_kernel_args *a, dm_chunk *ch, uint32_t lan
  * particles bi, bj (k1 - k0 <= DM_CHUNK), component c of candidate k into
  * d[c][k - k0], and the sums of their radii into sum[k - k0]: the gathers
  * of the narrow phase, which then tests them (dm_touches()) in a vectorised
- * loop. This loop is compiled scalar (kinematics.c): emulated vector
- * gathers of four doubles a particle (the AVX-512 clones extract each
- * index from a vector and insert each double into one) took more time than
- * the plain loads and stores (docs/benchmarks.md, Fifth round). */
+ * loop. This loop is compiled scalar (DM_SCALAR_LOOPS): the vectorised
+ * one's emulated gathers of four doubles a particle took more time than
+ * the plain loads and stores. */
 void dm_pp_separations(int D, const dm_particles *P, const uint32_t *bi, const uint32_t *bj,
                        uint32_t k0, uint32_t k1, double (*d)[DM_CHUNK], double *sum);
 

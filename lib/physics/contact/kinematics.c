@@ -20,14 +20,9 @@ DM_INLINE void pp_separations(const int D, const dm_particles *P, const uint32_t
     }
 }
 
-/* Scalar (kernels.h says why): GCC's vectoriser is off in this function;
- * clang, which ignores the attribute, may vectorise it, with the same
- * results. */
-#if defined(__GNUC__) && !defined(__clang__)
-__attribute__((optimize("no-tree-vectorize")))
-#endif
-void dm_pp_separations(int D, const dm_particles *P, const uint32_t *bi, const uint32_t *bj,
-                       uint32_t k0, uint32_t k1, double (*d)[DM_CHUNK], double *sum)
+DM_SCALAR_LOOPS void dm_pp_separations(int D, const dm_particles *P, const uint32_t *bi,
+                                       const uint32_t *bj, uint32_t k0, uint32_t k1,
+                                       double (*d)[DM_CHUNK], double *sum)
 {
     if (D == 3)
         pp_separations(3, P, bi, bj, k0, k1, d, sum);
