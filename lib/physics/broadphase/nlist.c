@@ -332,8 +332,8 @@ static uint64_t first_cell(const uint32_t *start, uint64_t ncells, uint32_t p)
  * [begin, end), every pair of their particles with a particle of the same or
  * a forward neighbour cell (i < j), then their particles' wall candidates.
  * Pairs come out in increasing i, so the ranges joined in order list them as
- * one range would. Scalar (DM_SCALAR_LOOPS): the row scan's loads of x and r
- * by index were faster so (docs/benchmarks.md, Fifth round). */
+ * one range would. Compiled scalar (DM_SCALAR_LOOPS): the row scan, which
+ * reads the positions with a stride of D doubles, is faster so. */
 DM_SCALAR_LOOPS static void search_range(demill_world *w, void *arg, int t, uint32_t begin,
                                          uint32_t end)
 {

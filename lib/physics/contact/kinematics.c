@@ -3,7 +3,8 @@
  * loops that the kernels share, compiled once rather than in every kernel
  * (those of the rolling spring serve the generic kernel only); and the 16
  * loops of the single-precision kernels (dm_kinsf), which round the same
- * kinematics into a float chunk. */
+ * kinematics into a float chunk; and the particle-particle narrow phase's
+ * gathers (dm_pp_separations), which every kernel shares too. */
 #include "physics/contact/kernels.h"
 
 /* dm_pp_separations() for dimension D. */
